@@ -1,0 +1,35 @@
+#pragma once
+// The case file: a deal.II ParameterHandler `.prm` with one subsection per concern. Each
+// subsection fills a plain struct owned by its module (meshes/ has no deal.II dependency).
+#include "meshes/geometry_parameters.h"
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace wear::coupling {
+
+struct OutputParameters {
+  std::string directory = "output"; ///< results folder, relative to the working directory
+};
+
+struct CaseParameters {
+  meshes::GeometryParameters geometry;
+  OutputParameters output;
+  std::string case_file; ///< path the parameters were read from ("" for defaults)
+};
+
+/// Declares every subsection and parameter with its default and documentation.
+void declare_parameters(dealii::ParameterHandler& prm);
+
+/// Reads a case file. Unknown or misspelled parameters, malformed values and physically
+/// impossible values are errors naming the parameter and the file.
+CaseParameters read_case(const std::string& path);
+
+/// Writes the fully resolved parameters of a case (every value, defaults included) as .prm.
+void write_resolved_parameters(const CaseParameters& p, const std::string& path);
+
+/// Prints every parameter with its default and documentation (for --print-parameters).
+void print_parameters(std::ostream& out);
+
+} // namespace wear::coupling

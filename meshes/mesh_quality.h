@@ -1,0 +1,36 @@
+#pragma once
+// Quality of a triangle surface: angles, aspect ratios, degenerate and inverted faces, and
+// self-intersections found through a uniform grid (not all pairs).
+#include "meshes/surface_mesh.h"
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace wear::meshes {
+
+struct SurfaceQuality {
+  double min_angle_deg = 180;           ///< smallest interior angle of any face [deg]
+  double max_aspect_ratio = 0;          ///< longest edge / (2 sqrt(3) inradius); 1 = equilateral
+  std::size_t n_degenerate = 0;         ///< faces with area below degenerate_area
+  std::size_t n_inverted = 0;           ///< faces whose normal turned more than 90 deg
+  std::size_t n_self_intersections = 0; ///< intersecting face pairs found
+  long first_bad_face = -1;             ///< a degenerate, inverted or intersecting face, or -1
+  bool valid() const { return n_degenerate == 0 && n_inverted == 0 && n_self_intersections == 0; }
+};
+
+/// `reference_normals` (one per face, e.g. the unworn normals) enables the inverted-face
+/// test; a face is degenerate when its area is below `relative_area_tolerance` times the
+/// squared mean edge length.
+SurfaceQuality surface_quality(const SurfaceMesh& m,
+                               const std::vector<Vec3>* reference_normals = nullptr,
+                               double relative_area_tolerance = 1e-10);
+
+/// Pairs of faces (i < j) that cross each other. Faces sharing an edge are never tested;
+/// faces sharing one vertex are tested with the edges that avoid the shared vertex.
+/// Coplanar overlaps are not reported (a worn surface folds, it does not slide in-plane).
+/// Stops after max_pairs pairs.
+std::vector<std::pair<std::uint32_t, std::uint32_t>>
+find_self_intersections(const SurfaceMesh& m, std::size_t max_pairs = 100);
+
+} // namespace wear::meshes

@@ -1,0 +1,48 @@
+#pragma once
+// Parametric wear samples (plain and convex pattern) built with gmsh's OpenCASCADE kernel.
+#include "meshes/geometry_parameters.h"
+#include "meshes/surface_mesh.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace wear::meshes {
+
+/// Centre of one convex element on the base top face, in the sample frame.
+struct ElementSite {
+  int column = 0, element = 0;   ///< 1-based; label id 10*column + element
+  double x = 0, y = 0;           ///< [m]
+  double semi_x = 0, semi_y = 0; ///< [m] footprint semi-axes along x (radial) and y (flow)
+};
+
+/// The element layout of wear-tester.md (columns along the flow, k from the inner radius).
+std::vector<ElementSite> element_sites(const SampleGeometry& s);
+
+struct GeneratedSample {
+  SurfaceMesh surface;              ///< closed, outward, labelled boundary
+  std::size_t n_tetrahedra = 0;     ///< 0 without a volume mesh
+  double tetrahedral_volume = 0;    ///< [m^3] sum of tetrahedron volumes
+  std::map<int, double> exact_area; ///< [m^2] per label from the OpenCASCADE model
+  double exact_volume = 0;          ///< [m^3] of the OpenCASCADE solid
+  double seconds = 0;               ///< wall time of the generation
+};
+
+/// Builds the sample; when msh_path is not empty, writes the mesh (gmsh 4.1 format) there
+/// atomically, with physical groups: volume 1 "sample", surfaces by label id and name.
+GeneratedSample generate_sample(const SampleGeometry& s, const std::string& msh_path = "");
+
+/// Reads a gmsh .msh file's labelled boundary triangles (2D physical groups) into a
+/// SurfaceMesh oriented outward. Throws naming the file if it is missing or has no
+/// surface physical groups.
+SurfaceMesh read_msh_surface(const std::string& path, std::size_t* n_tetrahedra = nullptr,
+                             double* tetrahedral_volume = nullptr);
+
+/// Maps a point from the sample frame into the tester frame (cylindrical sector about z):
+/// incline about the radial axis through the wear-face centre, then placement.
+Vec3 sample_to_tester(const Vec3& p, const SampleGeometry& s, const SamplePlacement& pl);
+/// The sample surface moved into the tester frame (a proper rotation: orientation kept).
+SurfaceMesh place_in_tester(const SurfaceMesh& m, const SampleGeometry& s,
+                            const SamplePlacement& pl);
+
+} // namespace wear::meshes

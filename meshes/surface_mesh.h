@@ -1,0 +1,119 @@
+#pragma once
+// The shared triangle surface mesh: vertices, outward-oriented triangles, a region label per
+// face and a revision that every derived quantity is checked against.
+#include "meshes/vec3.h"
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace wear::meshes {
+
+using Triangle = std::array<std::uint32_t, 3>;
+
+/// Region labels. Numeric values double as gmsh physical tags and deal.II boundary ids:
+/// convex element k of column j has id 10*j + k (C11 = 11 ... C99 = 99).
+namespace label {
+constexpr int unlabelled = 0;
+constexpr int bottom = 1; ///< clamped face of the sample
+constexpr int side = 2;   ///< non-wearing sides
+constexpr int base = 3;   ///< top face of the base plate (wearing)
+constexpr int wall = 4;   ///< a DEM wall without further structure
+inline int convex_element(int column, int element) {
+  return 10 * column + element;
+}
+inline bool is_convex_element(int id) {
+  return id >= 11 && id <= 99 && id % 10 != 0;
+}
+inline int column_of(int id) {
+  return id / 10;
+}
+inline int element_of(int id) {
+  return id % 10;
+}
+/// "bottom", "side", "base", "wall", "C<j><k>" or "L<id>".
+std::string name(int id);
+/// Inverse of name(); throws std::invalid_argument for an unknown name.
+int from_name(const std::string& name);
+} // namespace label
+
+struct BoundingBox {
+  Vec3 min, max;
+  Vec3 extent() const { return max - min; }
+};
+
+class SurfaceMesh {
+public:
+  std::vector<Vec3> vertices;      ///< [m]
+  std::vector<Triangle> triangles; ///< vertex indices, counter-clockwise seen from outside
+  std::vector<int> face_labels;    ///< one label id per triangle (see namespace label)
+
+  std::size_t n_vertices() const { return vertices.size(); }
+  std::size_t n_faces() const { return triangles.size(); }
+
+  /// Increments whenever vertices or triangles change; FaceFields remember the revision
+  /// they were computed on.
+  std::uint64_t revision() const { return revision_; }
+  void bump_revision() { ++revision_; }
+  void set_revision(std::uint64_t r) { revision_ = r; }
+
+  /// Throws std::runtime_error naming `what` when indices are out of range, labels are
+  /// missing or a coordinate is not finite.
+  void validate(const std::string& what) const;
+
+  /// Sorted list of distinct labels present.
+  std::vector<int> labels() const;
+
+private:
+  std::uint64_t revision_ = 1;
+};
+
+// --- geometry ------------------------------------------------------------------------------
+Vec3 face_normal_unnormalized(const SurfaceMesh& m, std::size_t f); ///< 2 * area * n [m^2]
+std::vector<double> face_areas(const SurfaceMesh& m);               ///< [m^2]
+std::vector<Vec3> face_normals(const SurfaceMesh& m);               ///< unit outward normals
+std::vector<Vec3> face_centroids(const SurfaceMesh& m);             ///< [m]
+/// Area-weighted average of the normals of the faces around each vertex, normalised.
+std::vector<Vec3> vertex_normals(const SurfaceMesh& m);
+BoundingBox bounding_box(const SurfaceMesh& m);
+double total_area(const SurfaceMesh& m);                    ///< [m^2]
+std::map<int, double> area_per_label(const SurfaceMesh& m); ///< [m^2]
+
+/// Volume enclosed by a closed, outward-oriented surface (divergence theorem) [m^3].
+double enclosed_volume(const SurfaceMesh& m);
+/// Volume between the faces of one label and the horizontal plane z = z0:
+/// integral of (z - z0) n_z dA over those faces [m^3]. For a convex element standing on
+/// the plane z0 this is the element's own volume (its footprint contributes nothing).
+double volume_above_plane(const SurfaceMesh& m, int label_id, double z0);
+
+// --- topology ------------------------------------------------------------------------------
+/// Undirected edge (smaller vertex index first) -> faces that share it.
+std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>>
+edge_faces(const SurfaceMesh& m);
+/// Vertex -> faces around it (CSR: offsets has n_vertices + 1 entries).
+struct VertexFaces {
+  std::vector<std::uint32_t> offsets, faces;
+};
+VertexFaces vertex_faces(const SurfaceMesh& m);
+
+struct ClosednessReport {
+  std::size_t n_boundary_edges = 0;    ///< edges with one face (holes)
+  std::size_t n_nonmanifold_edges = 0; ///< edges with more than two faces
+  std::size_t n_misoriented_edges = 0; ///< edges traversed in the same direction twice
+  bool closed() const { return n_boundary_edges == 0 && n_nonmanifold_edges == 0; }
+  bool consistently_oriented() const { return n_misoriented_edges == 0; }
+};
+ClosednessReport check_closed(const SurfaceMesh& m);
+
+/// Flip faces so that orientation is consistent across every manifold edge and, for a
+/// closed surface, the enclosed volume is positive (normals point outward). Works per
+/// connected component. Returns the number of faces flipped.
+std::size_t orient_outward(SurfaceMesh& m);
+
+/// Merge vertices with bit-identical coordinates (STL soups) and drop unused ones.
+void merge_identical_vertices(SurfaceMesh& m);
+
+} // namespace wear::meshes

@@ -1,0 +1,28 @@
+# Runs `wearsim mesh` on a case (output folder overridden) and checks what it printed and
+# wrote: 23 element lines, every output file present and non-empty.
+file(REMOVE_RECURSE "${OUT}")
+file(READ "${CASE}" content)
+string(REGEX REPLACE "set Directory = [^\n]*" "set Directory = ${OUT}" content "${content}")
+string(REPLACE "set Mesh size = 1e-3" "set Mesh size = 2e-3" content "${content}")
+file(WRITE "${OUT}.prm" "${content}")
+execute_process(COMMAND ${WEARSIM} mesh "${OUT}.prm" RESULT_VARIABLE rc OUTPUT_VARIABLE out
+                ERROR_VARIABLE err)
+message(STATUS "${out}")
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "wearsim mesh failed (${rc}): ${err}")
+endif()
+string(REGEX MATCHALL "\nC[1-5][1-5] +faces" elements "\n${out}")
+list(LENGTH elements n)
+if(NOT n EQUAL 23)
+  message(FATAL_ERROR "expected 23 element lines, got ${n}")
+endif()
+foreach(f sample.msh sample.stl sample.vtu sample_in_tester.stl floor.stl inner_wall.stl
+          outer_wall.stl consolidator.stl parameters.prm)
+  if(NOT EXISTS "${OUT}/${f}")
+    message(FATAL_ERROR "missing output ${OUT}/${f}")
+  endif()
+  file(SIZE "${OUT}/${f}" size)
+  if(size EQUAL 0)
+    message(FATAL_ERROR "empty output ${OUT}/${f}")
+  endif()
+endforeach()
