@@ -1,0 +1,225 @@
+// Triangle-mesh walls.
+//
+// One contact per physical touch: a sphere centre c has, on each triangle, a closest point p
+// on a face interior, an edge or a vertex. An edge point is kept only if, for every face
+// sharing the edge, d = c - p has no component along that face's in-plane inward edge
+// normal (otherwise moving into that face brings the surface closer, and that face reports
+// the true contact); a vertex point is kept only if d has no component along any edge
+// leaving the vertex. Of the faces that then report the same edge or vertex, only the first
+// (lowest index) keeps it. On a flat patch this leaves exactly the face (or shared edge or
+// vertex) under the centre, with the normal of a flat wall; on a convex ridge the shared
+// edge; in a concave corner one contact per face, as physics asks.
+#include "dem/mesh_wall.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+namespace wear::dem {
+
+using meshes::cross;
+using meshes::dot;
+using meshes::norm;
+using meshes::normalized;
+
+MeshWall::MeshWall(const meshes::SurfaceMesh& mesh, int material_id, const WallMotion& motion,
+                   bool wearing, std::string name)
+    : mesh_(mesh), material_(material_id), motion_(motion), wearing_(wearing),
+      name_(std::move(name)) {
+  mesh_.validate("wall '" + name_ + "'");
+  if (mesh_.n_faces() == 0)
+    throw std::invalid_argument("wall '" + name_ + "' has no triangles");
+  omega_ = normalized(motion_.axis) * motion_.angular_velocity;
+  const std::size_t nf = mesh_.n_faces();
+  corners_.resize(nf);
+  normal_.resize(nf);
+  for (std::size_t f = 0; f < nf; ++f) {
+    for (int k = 0; k < 3; ++k)
+      corners_[f][k] = mesh_.vertices[mesh_.triangles[f][k]];
+    const Vec3 n = meshes::face_normal_unnormalized(mesh_, f);
+    if (norm(n) == 0)
+      throw std::invalid_argument("wall '" + name_ + "': triangle " + std::to_string(f) +
+                                  " is degenerate (zero area)");
+    normal_[f] = normalized(n);
+  }
+  // Edges.
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> edge_id;
+  face_edge_.resize(nf);
+  inward_.resize(nf);
+  for (std::uint32_t f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) {
+      const auto a = mesh_.triangles[f][k], b = mesh_.triangles[f][(k + 1) % 3];
+      const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+      auto [it, inserted] = edge_id.emplace(key, static_cast<std::uint32_t>(edge_face_.size()));
+      if (inserted)
+        edge_face_.push_back({f, ~0u});
+      else if (edge_face_[it->second][1] == ~0u)
+        edge_face_[it->second][1] = f;
+      face_edge_[f][k] = it->second;
+      // In-plane normal of edge k pointing into the triangle.
+      const Vec3 e = corners_[f][(k + 1) % 3] - corners_[f][k];
+      inward_[f][k] = normalized(cross(normal_[f], e));
+    }
+  // Vertices: first face, faces around, directions of edges leaving.
+  const std::size_t nv = mesh_.n_vertices();
+  vertex_first_face_.assign(nv, ~0u);
+  std::vector<std::vector<std::uint32_t>> vf(nv);
+  std::vector<std::vector<Vec3>> dirs(nv);
+  for (std::uint32_t f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) {
+      const auto v = mesh_.triangles[f][k];
+      vertex_first_face_[v] = std::min(vertex_first_face_[v], f);
+      vf[v].push_back(f);
+    }
+  for (const auto& [key, e] : edge_id) {
+    const Vec3 d = normalized(mesh_.vertices[key.second] - mesh_.vertices[key.first]);
+    dirs[key.first].push_back(d);
+    dirs[key.second].push_back(d * -1.0);
+  }
+  vertex_edge_offset_.assign(nv + 1, 0);
+  vertex_face_offset_.assign(nv + 1, 0);
+  for (std::size_t v = 0; v < nv; ++v) {
+    vertex_edge_offset_[v + 1] = vertex_edge_offset_[v] + dirs[v].size();
+    vertex_face_offset_[v + 1] = vertex_face_offset_[v] + vf[v].size();
+    vertex_edge_dir_.insert(vertex_edge_dir_.end(), dirs[v].begin(), dirs[v].end());
+    vertex_face_.insert(vertex_face_.end(), vf[v].begin(), vf[v].end());
+  }
+}
+
+ClosestFeature MeshWall::closest(std::uint32_t f, const Vec3& p) const {
+  const Vec3 &a = corners_[f][0], &b = corners_[f][1], &c = corners_[f][2];
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+  if (d1 <= 0 && d2 <= 0)
+    return {a, Feature::vertex, 0};
+  const Vec3 bp = p - b;
+  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+  if (d3 >= 0 && d4 <= d3)
+    return {b, Feature::vertex, 1};
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+    const double v = d1 / (d1 - d3);
+    return {a + ab * v, Feature::edge, 0};
+  }
+  const Vec3 cp = p - c;
+  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+  if (d6 >= 0 && d5 <= d6)
+    return {c, Feature::vertex, 2};
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+    const double w = d2 / (d2 - d6);
+    return {a + ac * w, Feature::edge, 2};
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
+    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return {b + (c - b) * w, Feature::edge, 1};
+  }
+  const double denom = 1 / (va + vb + vc);
+  const double v = vb * denom, w = vc * denom;
+  return {a + ab * v + ac * w, Feature::face, 0};
+}
+
+bool MeshWall::owns_contact(std::uint32_t f, const ClosestFeature& cf, const Vec3& c) const {
+  if (cf.feature == Feature::face)
+    return true;
+  const Vec3 d = c - cf.point;
+  const double tol = 1e-9 * norm(d);
+  if (cf.feature == Feature::edge) {
+    const auto e = face_edge_[f][cf.local];
+    for (auto g : edge_face_[e]) {
+      if (g == ~0u)
+        continue;
+      const int k = face_edge_[g][0] == e ? 0 : (face_edge_[g][1] == e ? 1 : 2);
+      if (dot(d, inward_[g][k]) > tol)
+        return false;
+    }
+    return f == edge_face_[e][0];
+  }
+  const auto v = mesh_.triangles[f][cf.local];
+  for (auto i = vertex_edge_offset_[v]; i < vertex_edge_offset_[v + 1]; ++i)
+    if (dot(d, vertex_edge_dir_[i]) > tol)
+      return false;
+  return f == vertex_first_face_[v];
+}
+
+int MeshWall::faces_sharing(std::uint32_t f, const ClosestFeature& cf, std::uint32_t* out,
+                            int max_out) const {
+  if (cf.feature == Feature::face) {
+    out[0] = f;
+    return 1;
+  }
+  int n = 0;
+  if (cf.feature == Feature::edge) {
+    for (auto g : edge_face_[face_edge_[f][cf.local]])
+      if (g != ~0u && n < max_out)
+        out[n++] = g;
+    return n;
+  }
+  const auto v = mesh_.triangles[f][cf.local];
+  for (auto i = vertex_face_offset_[v]; i < vertex_face_offset_[v + 1] && n < max_out; ++i)
+    out[n++] = vertex_face_[i];
+  return n;
+}
+
+void MeshWall::build_grid(double reach) {
+  const auto bb = meshes::bounding_box(mesh_);
+  const Vec3 lo = bb.min - Vec3{reach, reach, reach}, hi = bb.max + Vec3{reach, reach, reach};
+  const Vec3 ext = hi - lo;
+  // Cells about the contact reach, at most ~2M cells.
+  cell_ = std::max(reach, 1e-6);
+  while ((ext.x / cell_ + 1) * (ext.y / cell_ + 1) * (ext.z / cell_ + 1) > 2e6)
+    cell_ *= 1.25;
+  grid_min_ = lo;
+  nx_ = int(ext.x / cell_) + 1;
+  ny_ = int(ext.y / cell_) + 1;
+  nz_ = int(ext.z / cell_) + 1;
+  const auto range = [&](std::uint32_t f, int lo_i[3], int hi_i[3]) {
+    for (int d = 0; d < 3; ++d) {
+      double mn = corners_[f][0][d], mx = mn;
+      for (int k = 1; k < 3; ++k) {
+        mn = std::min(mn, corners_[f][k][d]);
+        mx = std::max(mx, corners_[f][k][d]);
+      }
+      const int n = d == 0 ? nx_ : (d == 1 ? ny_ : nz_);
+      lo_i[d] = std::clamp(int((mn - reach - grid_min_[d]) / cell_), 0, n - 1);
+      hi_i[d] = std::clamp(int((mx + reach - grid_min_[d]) / cell_), 0, n - 1);
+    }
+  };
+  cell_offset_.assign(std::size_t(nx_) * ny_ * nz_ + 1, 0);
+  int lo_i[3], hi_i[3];
+  for (int pass = 0; pass < 2; ++pass) {
+    std::vector<std::uint32_t> fill;
+    if (pass == 1) {
+      for (std::size_t c = 1; c < cell_offset_.size(); ++c)
+        cell_offset_[c] += cell_offset_[c - 1];
+      cell_face_.assign(cell_offset_.back(), 0);
+      fill.assign(cell_offset_.begin(), cell_offset_.end() - 1);
+    }
+    for (std::uint32_t f = 0; f < n_faces(); ++f) {
+      range(f, lo_i, hi_i);
+      for (int k = lo_i[2]; k <= hi_i[2]; ++k)
+        for (int j = lo_i[1]; j <= hi_i[1]; ++j)
+          for (int i = lo_i[0]; i <= hi_i[0]; ++i) {
+            const std::size_t c = (std::size_t(k) * ny_ + j) * nx_ + i;
+            if (pass == 0)
+              ++cell_offset_[c + 1];
+            else
+              cell_face_[fill[c]++] = f;
+          }
+    }
+  }
+}
+
+std::pair<const std::uint32_t*, const std::uint32_t*> MeshWall::candidates(const Vec3& c) const {
+  const double fx = (c.x - grid_min_.x) / cell_, fy = (c.y - grid_min_.y) / cell_,
+               fz = (c.z - grid_min_.z) / cell_;
+  if (!(fx >= 0 && fy >= 0 && fz >= 0) || fx >= nx_ || fy >= ny_ || fz >= nz_)
+    return {nullptr, nullptr};
+  const std::size_t cell = (std::size_t(fz) * ny_ + std::size_t(fy)) * nx_ + std::size_t(fx);
+  const std::uint32_t* base = cell_face_.data();
+  return {base + cell_offset_[cell], base + cell_offset_[cell + 1]};
+}
+
+} // namespace wear::dem

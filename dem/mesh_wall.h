@@ -1,0 +1,97 @@
+#pragma once
+// A triangle-mesh wall: geometry, the topology needed to count each physical contact once,
+// a rigid rotation, a candidate-search grid, and optional per-face wear accumulation.
+#include "meshes/surface_mesh.h"
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace wear::dem {
+
+using meshes::Vec3;
+
+/// Rigid rotation about an axis. The wall is treated as a surface of revolution about that
+/// axis (floor and cylinders of the tester): its geometry is invariant, only the surface
+/// velocity omega x (p - axis_point) enters the contacts.
+struct WallMotion {
+  Vec3 axis_point;             ///< [m]
+  Vec3 axis{0, 0, 1};          ///< unit vector
+  double angular_velocity = 0; ///< [rad/s], right-handed about axis
+  /// Uniform translation velocity of the surface (conveyor), added to the rotation. [m/s]
+  Vec3 surface_velocity;
+};
+
+enum class Feature : std::uint8_t { face = 0, edge = 1, vertex = 2 };
+
+/// Closest point of a sphere centre on one triangle, with the feature that holds it.
+struct ClosestFeature {
+  Vec3 point;
+  Feature feature = Feature::face;
+  int local = 0; ///< edge k (vertices k, k+1) or vertex k of the triangle
+};
+
+class MeshWall {
+public:
+  MeshWall(const meshes::SurfaceMesh& mesh, int material_id, const WallMotion& motion, bool wearing,
+           std::string name);
+
+  const std::string& name() const { return name_; }
+  int material() const { return material_; }
+  bool wearing() const { return wearing_; }
+  const WallMotion& motion() const { return motion_; }
+  const meshes::SurfaceMesh& mesh() const { return mesh_; }
+  std::size_t n_faces() const { return mesh_.n_faces(); }
+
+  Vec3 velocity_at(const Vec3& p) const {
+    return meshes::cross(omega_, p - motion_.axis_point) + motion_.surface_velocity;
+  }
+  const Vec3& angular_velocity_vector() const { return omega_; }
+
+  /// Closest point of triangle f to c (Ericson, Real-Time Collision Detection 5.1.5); the
+  /// face region needs strictly positive barycentric coordinates, so points on a shared edge
+  /// are edge points for both triangles.
+  ClosestFeature closest(std::uint32_t f, const Vec3& c) const;
+
+  /// True when the closest feature found on triangle f is the mesh's own closest feature near
+  /// that point (a local distance minimum over all faces sharing it) and f is the one
+  /// triangle that reports it. Face contacts always qualify; an edge or vertex contact is
+  /// dropped when moving into a neighbouring face brings the point closer to c.
+  bool owns_contact(std::uint32_t f, const ClosestFeature& cf, const Vec3& c) const;
+
+  /// Faces that share the contact's feature (for splitting extensive wear quantities).
+  /// Writes up to max_out face ids, returns the count.
+  int faces_sharing(std::uint32_t f, const ClosestFeature& cf, std::uint32_t* out,
+                    int max_out) const;
+
+  /// Builds the candidate grid: every face is registered in each cell its bounding box,
+  /// inflated by `reach`, overlaps.
+  void build_grid(double reach);
+  /// Faces that may lie within `reach` of point c (empty outside the grid).
+  std::pair<const std::uint32_t*, const std::uint32_t*> candidates(const Vec3& c) const;
+
+private:
+  meshes::SurfaceMesh mesh_;
+  int material_;
+  WallMotion motion_;
+  Vec3 omega_;
+  bool wearing_;
+  std::string name_;
+  std::vector<std::array<Vec3, 3>> corners_;
+  std::vector<Vec3> normal_;
+  std::vector<std::array<std::uint32_t, 3>> face_edge_; // edge k of face f: global id
+  std::vector<std::array<std::uint32_t, 2>> edge_face_; // adjacent faces (second = ~0u: none)
+  std::vector<std::array<Vec3, 3>> inward_;             // in-plane unit normal of edge k, into f
+  std::vector<std::uint32_t> vertex_first_face_;
+  std::vector<std::uint32_t> vertex_edge_offset_; // CSR: unit directions away from v
+  std::vector<Vec3> vertex_edge_dir_;
+  std::vector<std::uint32_t> vertex_face_offset_, vertex_face_;
+  // candidate grid
+  Vec3 grid_min_;
+  double cell_ = 0;
+  int nx_ = 0, ny_ = 0, nz_ = 0;
+  std::vector<std::uint32_t> cell_offset_, cell_face_;
+};
+
+} // namespace wear::dem

@@ -1,0 +1,24 @@
+#pragma once
+// Verlet neighbour list built from a cell list: every pair (i, j) whose surfaces are closer
+// than the skin, once: i real and j > i real, or j a ghost. Lists of each i are sorted by j,
+// so the result does not depend on the thread count.
+#include "dem/particles.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace wear::dem {
+
+class NeighborList {
+public:
+  std::vector<std::uint32_t> pair_i, pair_j;
+
+  /// Rebuilds from the current positions (real and ghost slots). Reuses its buffers.
+  void build(const Particles& p, double skin);
+  std::size_t n_pairs() const { return pair_i.size(); }
+
+private:
+  std::vector<std::uint32_t> cell_of_, cell_start_, cell_items_, count_, offset_;
+};
+
+} // namespace wear::dem

@@ -1,0 +1,321 @@
+// DEM time loop: velocity Verlet (kick-drift, forces, kick) for translation and rotation,
+// with the contact forces of contact_law.h.
+//
+//   v(t+dt/2) = v(t) + dt/2 F(t)/m,  x(t+dt) = x(t) + dt v(t+dt/2),
+//   F(t+dt) from x(t+dt) and v(t+dt/2),  v(t+dt) = v(t+dt/2) + dt/2 F(t+dt)/m,
+// and likewise for the spin with I = 2/5 m r^2 (spheres). Second order for conservative
+// forces; the velocity-dependent damping and friction use the half-step velocity (as in
+// LIGGGHTS). Time step: Rayleigh time T_R = pi R sqrt(rho/G) / (0.1631 nu + 0.8766) of the
+// smallest particle; above 40 % of T_R the run is refused unless forced.
+// Every particle is checked each step (finite, below the speed limit) and at each list
+// rebuild (inside the domain); failures name the particle and suggest a cause.
+#include "dem/system.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace wear::dem {
+
+namespace {
+constexpr double pi = 3.14159265358979323846;
+enum ErrorKind { no_error = 0, not_finite = 1, too_fast = 2, outside = 3, too_many_walls = 4 };
+} // namespace
+
+int System::add_wall(const MeshWall& wall) {
+  if (set_up_)
+    throw std::logic_error("walls must be added before setup()");
+  if (wall.material() < 0 || wall.material() >= materials.n_materials())
+    throw std::invalid_argument("wall '" + wall.name() + "' refers to an unknown material");
+  walls_.push_back(wall);
+  return n_walls() - 1;
+}
+
+double System::rayleigh_time() const {
+  double t = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < particles.n_real; ++i) {
+    const Material& m = materials.material(particles.material[i]);
+    t = std::min(t, pi * particles.radius[i] * std::sqrt(m.density / m.shear_modulus()) /
+                        (0.1631 * m.poisson_ratio + 0.8766));
+  }
+  return t;
+}
+
+void System::setup() {
+  auto& p = particles;
+  if (p.n_real == 0)
+    throw std::invalid_argument("DEM: no particles");
+  for (std::size_t i = 0; i < p.n_real; ++i) {
+    if (!(p.radius[i] > 0) || !std::isfinite(p.radius[i]))
+      throw std::invalid_argument("DEM: particle " + std::to_string(p.id[i]) +
+                                  " has a non-positive radius " + std::to_string(p.radius[i]));
+    if (p.material[i] < 0 || p.material[i] >= materials.n_materials())
+      throw std::invalid_argument("DEM: particle " + std::to_string(p.id[i]) +
+                                  " refers to an unknown material");
+  }
+  contact_ = materials.contact_table();
+  n_mat_ = materials.n_materials();
+  const double t_r = rayleigh_time();
+  dt_ = settings.time_step > 0 ? settings.time_step : settings.time_step_fraction * t_r;
+  if (!(dt_ > 0) || !std::isfinite(dt_))
+    throw std::invalid_argument("DEM/Time step: must be positive");
+  if (dt_ > 0.4 * t_r && !settings.force_time_step) {
+    std::ostringstream s;
+    s << "DEM/Time step: " << dt_ << " s is " << 100 * dt_ / t_r << " % of the Rayleigh time "
+      << t_r
+      << " s of the smallest particle; the limit is 40 % (set 'Force time step' to override)";
+    throw std::invalid_argument(s.str());
+  }
+  r_max_ = *std::max_element(p.radius.begin(), p.radius.begin() + p.n_real);
+  double r_min = *std::min_element(p.radius.begin(), p.radius.begin() + p.n_real);
+  skin_ = settings.skin > 0 ? settings.skin : 0.5 * r_min;
+  if (settings.periodic.enabled) {
+    const double a = settings.periodic.angle;
+    if (!(a > 0 && a < 2 * pi))
+      throw std::invalid_argument("DEM/Periodic sector angle must lie in (0, 360) degrees");
+    cos_t_ = std::cos(a);
+    sin_t_ = std::sin(a);
+  }
+  for (auto& w : walls_)
+    w.build_grid(r_max_ + skin_);
+  n_threads_ = omp_get_max_threads();
+  wear_acc_.assign(n_threads_, {});
+  for (auto& t : wear_acc_) {
+    t.resize(walls_.size());
+    for (std::size_t w = 0; w < walls_.size(); ++w)
+      if (walls_[w].wearing())
+        t[w].assign(8 * walls_[w].n_faces() + 8, 0.0);
+  }
+  slot_wall_.assign(wall_slots * p.n_real, -1);
+  slot_normal_.assign(wall_slots * p.n_real, {});
+  slot_delta_.assign(wall_slots * p.n_real, {});
+  error_particle_.assign(n_threads_, -1);
+  error_kind_.assign(n_threads_, no_error);
+  set_up_ = true;
+  check_particles_or_throw("at setup");
+  rebuild();
+  compute_forces();
+}
+
+void System::check_particles_or_throw(const char* stage) {
+  const auto& p = particles;
+  const auto& d = settings.domain;
+  long worst = -1;
+  int kind = no_error;
+  for (int t = 0; t < n_threads_; ++t)
+    if (error_kind_[t] != no_error && (worst < 0 || error_particle_[t] < worst)) {
+      worst = error_particle_[t];
+      kind = error_kind_[t];
+    }
+  if (worst < 0)
+    for (std::size_t i = 0; i < p.n_real; ++i) {
+      const Vec3& x = p.position[i];
+      if (!std::isfinite(x.x) || !std::isfinite(x.y) || !std::isfinite(x.z)) {
+        worst = long(i);
+        kind = not_finite;
+        break;
+      }
+      if (x.x < d.min.x || x.y < d.min.y || x.z < d.min.z || x.x > d.max.x || x.y > d.max.y ||
+          x.z > d.max.z) {
+        worst = long(i);
+        kind = outside;
+        break;
+      }
+    }
+  if (worst < 0)
+    return;
+  const std::size_t i = std::size_t(worst);
+  std::ostringstream s;
+  s.precision(6);
+  s << "DEM " << stage << ", step " << n_steps_ << " (t = " << time_ << " s): particle " << p.id[i]
+    << " at (" << p.position[i].x << ", " << p.position[i].y << ", " << p.position[i].z
+    << ") m with velocity (" << p.velocity[i].x << ", " << p.velocity[i].y << ", "
+    << p.velocity[i].z << ") m/s ";
+  switch (kind) {
+  case not_finite:
+    s << "has a non-finite state. Likely causes: a time step too large for the stiffness "
+         "(reduce 'Time step fraction'), or overlapping particles at insertion.";
+    break;
+  case too_fast:
+    s << "exceeds the speed limit of " << settings.max_speed
+      << " m/s. Likely causes: large initial overlaps, a too large time step, or a wall "
+         "moving into particles.";
+    break;
+  case outside:
+    s << "left the domain [" << d.min.x << ", " << d.max.x << "] x [" << d.min.y << ", " << d.max.y
+      << "] x [" << d.min.z << ", " << d.max.z
+      << "] m. A wall may have a gap, or the particle escaped through an open top.";
+    break;
+  default:
+    s << "touches more than " << wall_slots << " wall features at once.";
+  }
+  throw std::runtime_error(s.str());
+}
+
+void System::step() {
+  if (!set_up_)
+    throw std::logic_error("System::step() before setup()");
+  auto& p = particles;
+  const double h = 0.5 * dt_, vmax2 = settings.max_speed * settings.max_speed;
+  const double trigger = 0.25 * skin_ * skin_; // half the skin, squared
+  int need_rebuild = 0;
+#pragma omp parallel for schedule(static) reduction(max : need_rebuild)
+  for (std::size_t i = 0; i < p.n_real; ++i) {
+    const double im = 1.0 / p.mass[i], ii = 1.0 / p.inertia[i];
+    p.velocity[i] += p.force[i] * (h * im);
+    p.angular_velocity[i] += p.torque[i] * (h * ii);
+    p.position[i] += p.velocity[i] * dt_;
+    const double v2 = meshes::norm2(p.velocity[i]);
+    if (!(v2 <= vmax2)) { // also catches NaN
+      const int t = omp_get_thread_num();
+      if (error_particle_[t] < 0 || long(i) < error_particle_[t]) {
+        error_particle_[t] = long(i);
+        error_kind_[t] = std::isfinite(v2) ? too_fast : not_finite;
+      }
+    }
+    if (meshes::norm2(p.position[i] - reference_position_[i]) > trigger)
+      need_rebuild = 1;
+  }
+  for (int t = 0; t < n_threads_; ++t)
+    if (error_kind_[t] != no_error)
+      check_particles_or_throw("in the drift");
+  if (need_rebuild)
+    rebuild();
+  else
+    refresh_ghosts();
+  compute_forces();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < p.n_real; ++i) {
+    p.velocity[i] += p.force[i] * (h / p.mass[i]);
+    p.angular_velocity[i] += p.torque[i] * (h / p.inertia[i]);
+  }
+  for (int t = 0; t < n_threads_; ++t)
+    if (error_kind_[t] != no_error)
+      check_particles_or_throw("in the force computation");
+  time_ += dt_;
+  ++n_steps_;
+}
+
+void System::run(std::uint64_t n) {
+  for (std::uint64_t s = 0; s < n; ++s)
+    step();
+}
+
+void System::compute_forces() {
+  auto& p = particles;
+  pair_forces();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < p.n_real; ++i) {
+    Vec3 f = settings.gravity * p.mass[i], t{};
+    for (auto k = incidence_offset_[i]; k < incidence_offset_[i + 1]; ++k) {
+      const std::uint32_t e = incidence_[k], pair = e >> 1;
+      if ((e & 1) == 0) {
+        f += pair_force_[pair];
+        t += pair_torque_i_[pair];
+      } else if (neighbors_.pair_j[pair] < p.n_real) {
+        f -= pair_force_[pair];
+        t += pair_torque_j_[pair];
+      } else { // ghost image of i: rotate back by +angle
+        const Vec3 &a = pair_force_[pair], &b = pair_torque_j_[pair];
+        f -= Vec3{cos_t_ * a.x - sin_t_ * a.y, sin_t_ * a.x + cos_t_ * a.y, a.z};
+        t += Vec3{cos_t_ * b.x - sin_t_ * b.y, sin_t_ * b.x + cos_t_ * b.y, b.z};
+      }
+    }
+    p.force[i] = f;
+    p.torque[i] = t;
+  }
+  wall_forces();
+}
+
+std::size_t System::n_pair_contacts() const {
+  std::size_t n = 0;
+  for (const auto& f : pair_force_)
+    n += meshes::norm2(f) > 0;
+  return n;
+}
+
+Energy System::energy() const {
+  const auto& p = particles;
+  Energy e;
+  for (std::size_t i = 0; i < p.n_real; ++i) {
+    e.kinetic += 0.5 * p.mass[i] * meshes::norm2(p.velocity[i]);
+    e.rotational += 0.5 * p.inertia[i] * meshes::norm2(p.angular_velocity[i]);
+    e.potential -= p.mass[i] * meshes::dot(settings.gravity, p.position[i]);
+  }
+  // Hertz elastic energy 8/15 E* sqrt(R*) delta^(5/2), plus the tangential springs.
+  for (std::size_t k = 0; k < neighbors_.n_pairs(); ++k) {
+    const auto i = neighbors_.pair_i[k], j = neighbors_.pair_j[k];
+    const double d = p.radius[i] + p.radius[j] - meshes::norm(p.position[i] - p.position[j]);
+    if (d <= 0)
+      continue;
+    const auto& c = contact_[p.material[i] * n_mat_ + p.material[j]];
+    const double r = p.radius[i] * p.radius[j] / (p.radius[i] + p.radius[j]);
+    e.elastic += 8.0 / 15.0 * c.e_star * std::sqrt(r) * std::pow(d, 2.5) +
+                 4 * c.g_star * std::sqrt(r * d) * meshes::norm2(pair_history_[k]);
+  }
+  for (std::size_t i = 0; i < p.n_real; ++i)
+    for (auto k = wall_candidate_offset_[i]; k < wall_candidate_offset_[i + 1]; ++k) {
+      const auto& w = walls_[wall_candidate_[k] >> 24];
+      const std::uint32_t f = wall_candidate_[k] & 0xFFFFFFu;
+      const auto cf = w.closest(f, p.position[i]);
+      const double d = p.radius[i] - meshes::norm(p.position[i] - cf.point);
+      if (d <= 0 || !w.owns_contact(f, cf, p.position[i]))
+        continue;
+      const auto& c = contact_[p.material[i] * n_mat_ + w.material()];
+      e.elastic += 8.0 / 15.0 * c.e_star * std::sqrt(p.radius[i]) * std::pow(d, 2.5);
+    }
+  return e;
+}
+
+double System::bytes_per_particle() const {
+  const auto& p = particles;
+  const double n = double(std::max<std::size_t>(1, p.n_real));
+  const double per_slot = 5 * sizeof(Vec3) + 3 * sizeof(double) + sizeof(int) + 8;
+  double bytes =
+      per_slot * p.position.size() + sizeof(Vec3) * reference_position_.size() +
+      sizeof(std::uint32_t) * (incidence_offset_.size() + wall_candidate_offset_.size()) +
+      wall_slots * (2 * sizeof(Vec3) + sizeof(std::int16_t)) * p.n_real;
+  return bytes / n;
+}
+
+WearIntegrals System::wear_integrals(int w) const {
+  const auto& wall = walls_.at(w);
+  if (!wall.wearing())
+    throw std::invalid_argument("wall '" + wall.name() + "' is not a wearing wall");
+  const std::size_t nf = wall.n_faces();
+  WearIntegrals r;
+  r.impulse.assign(nf, {});
+  r.normal_impulse.assign(nf, 0);
+  r.archard.assign(nf, 0);
+  r.sliding_work.assign(nf, 0);
+  r.contact_steps.assign(nf, 0);
+  for (int t = 0; t < n_threads_; ++t) {
+    const auto& a = wear_acc_[t][w];
+    for (std::size_t f = 0; f < nf; ++f) {
+      const double* v = &a[8 * f];
+      r.impulse[f] += Vec3{v[0], v[1], v[2]};
+      r.normal_impulse[f] += v[3];
+      r.archard[f] += v[4];
+      r.sliding_work[f] += v[5];
+      r.contact_steps[f] += v[6];
+    }
+    const double* tot = &a[8 * nf];
+    r.total_impulse += Vec3{tot[0], tot[1], tot[2]};
+    r.total_normal_impulse += tot[3];
+    r.total_archard += tot[4];
+    r.total_sliding_work += tot[5];
+  }
+  return r;
+}
+
+void System::reset_wear_integrals() {
+  for (auto& t : wear_acc_)
+    for (auto& w : t)
+      std::fill(w.begin(), w.end(), 0.0);
+}
+
+} // namespace wear::dem

@@ -1,0 +1,122 @@
+#pragma once
+// The DEM system: particles, walls, materials and the time loop (velocity Verlet).
+#include "dem/material.h"
+#include "dem/mesh_wall.h"
+#include "dem/neighbor_list.h"
+#include "dem/particles.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace wear::dem {
+
+/// Cylindrical periodic boundary: the sector 0 <= theta < angle about the z axis through the
+/// origin. A particle leaving through one cut plane re-enters through the other, position,
+/// velocity and spin rotated by the sector angle; pairs across the cut see ghost images.
+struct PeriodicSector {
+  bool enabled = false;
+  double angle = 0; ///< [rad]
+};
+
+struct DemSettings {
+  Vec3 gravity{0, 0, -9.81};       ///< [m/s^2]
+  double time_step = 0;            ///< [s]; 0: time_step_fraction x Rayleigh time
+  double time_step_fraction = 0.2; ///< [-] of the Rayleigh time of the smallest particle
+  bool force_time_step = false;    ///< allow a step above 40 % of the Rayleigh time
+  double skin = 0;                 ///< [m] neighbour-list skin; 0: 0.25 x smallest diameter
+  double max_speed = 50;           ///< [m/s] a faster particle stops the run
+  meshes::BoundingBox domain{{-1e3, -1e3, -1e3}, {1e3, 1e3, 1e3}}; ///< [m] leaving it is an error
+  PeriodicSector periodic;
+};
+
+/// Extensive per-face integrals on a wearing wall over the current window (model.md s. 4).
+struct WearIntegrals {
+  std::vector<Vec3> impulse;          ///< [N s] integral of the force on the face
+  std::vector<double> normal_impulse; ///< [N s] integral of F_n
+  std::vector<double> archard;        ///< [N m] integral of F_n |v_t|
+  std::vector<double> sliding_work;   ///< [J] integral of |F_t . v_t|
+  std::vector<double> contact_steps;  ///< [-] contact-steps (split contacts count fractionally)
+  /// Per-contact totals of the same window, summed before any splitting over faces.
+  double total_archard = 0, total_normal_impulse = 0, total_sliding_work = 0;
+  Vec3 total_impulse;
+};
+
+struct Energy {
+  double kinetic = 0, rotational = 0, potential = 0, elastic = 0; ///< [J]
+  double total() const { return kinetic + rotational + potential + elastic; }
+};
+
+class System {
+public:
+  MaterialTable materials;
+  Particles particles;
+  DemSettings settings;
+
+  /// Adds a wall; returns its index. Before setup() only.
+  int add_wall(const MeshWall& wall);
+  const MeshWall& wall(int w) const { return walls_.at(w); }
+  int n_walls() const { return static_cast<int>(walls_.size()); }
+
+  /// Checks the input, fixes the time step, builds lists and initial forces. Throws with a
+  /// message naming what is wrong (time step, material, overlap, particle outside domain).
+  void setup();
+  void step();
+  void run(std::uint64_t n_steps);
+
+  double time() const { return time_; } ///< [s]
+  std::uint64_t n_steps() const { return n_steps_; }
+  double time_step() const { return dt_; } ///< [s]
+  double rayleigh_time() const;            ///< [s] of the smallest particle
+  std::uint64_t n_rebuilds() const { return n_rebuilds_; }
+  std::size_t n_pair_contacts() const; ///< pairs in contact now
+  std::size_t n_neighbor_pairs() const { return neighbors_.n_pairs(); }
+  std::size_t n_ghosts() const { return ghost_owner_.size(); }
+  Energy energy() const;
+  /// Bytes held per particle by the engine's arrays, excluding contact history.
+  double bytes_per_particle() const;
+
+  /// Window integrals of a wearing wall (summed over threads in a fixed order).
+  WearIntegrals wear_integrals(int wall) const;
+  void reset_wear_integrals();
+
+private:
+  void rebuild();
+  void refresh_ghosts();
+  void compute_forces();
+  void pair_forces();
+  void wall_forces();
+  void check_particles_or_throw(const char* stage);
+
+  std::vector<MeshWall> walls_;
+  std::vector<ContactParameters> contact_;
+  int n_mat_ = 0;
+  NeighborList neighbors_;
+  double dt_ = 0, time_ = 0, skin_ = 0, r_max_ = 0;
+  std::uint64_t n_steps_ = 0, n_rebuilds_ = 0;
+  bool set_up_ = false;
+  int n_threads_ = 1;
+
+  // Periodic sector.
+  double cos_t_ = 1, sin_t_ = 0;
+  std::vector<std::uint32_t> ghost_owner_;
+
+  // Pairs: history and per-pair results (gathered per particle without races).
+  std::vector<Vec3> pair_history_, pair_force_, pair_torque_i_, pair_torque_j_;
+  std::vector<std::uint32_t> incidence_offset_, incidence_;
+  std::vector<Vec3> reference_position_;
+
+  // Wall contacts: candidates per particle (wall << 24 | face) and history slots.
+  static constexpr int wall_slots = 6;
+  std::vector<std::uint32_t> wall_candidate_offset_, wall_candidate_;
+  std::vector<std::int16_t> slot_wall_;
+  std::vector<Vec3> slot_normal_, slot_delta_;
+  // Per thread, per wearing wall: 8 doubles per face + totals.
+  std::vector<std::vector<std::vector<double>>> wear_acc_;
+
+  // First problem seen inside a parallel loop (smallest particle index wins).
+  std::vector<long> error_particle_;
+  std::vector<int> error_kind_;
+};
+
+} // namespace wear::dem
