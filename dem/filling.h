@@ -1,0 +1,49 @@
+#pragma once
+// Particle size distributions and filling a region with non-overlapping particles.
+#include "dem/particles.h"
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace wear::dem {
+
+/// Diameter bins with mass fractions; the scaling factor s multiplies every diameter.
+struct SizeDistribution {
+  std::vector<double> diameters;      ///< [m] at s = 1
+  std::vector<double> mass_fractions; ///< [-] sum to 1
+  double scaling_factor = 1;          ///< [-]
+  /// Throws naming the bin when a value is non-physical or fractions do not sum to 1.
+  void validate() const;
+  /// Number fractions n_k ~ f_k / d_k^3 (equal density).
+  std::vector<double> number_fractions() const;
+  double min_diameter() const; ///< [m] scaled
+  double max_diameter() const; ///< [m] scaled
+};
+
+/// A region to fill: inside(x) for a centre x, plus its bounding box.
+struct FillRegion {
+  Vec3 lo, hi;                             ///< [m] bounding box of centres
+  std::function<bool(const Vec3&)> inside; ///< centre admissible
+};
+
+/// Box [lo, hi] shrunk by `margin` (so spheres of radius margin stay inside).
+FillRegion box_region(const Vec3& lo, const Vec3& hi, double margin);
+/// Annular sector r_in..r_out, theta 0..angle, z_lo..z_hi, shrunk by margin.
+FillRegion annular_sector_region(double r_in, double r_out, double angle, double z_lo, double z_hi,
+                                 double margin);
+
+/// Inserts up to n particles at random, without overlap, drawing diameters from the
+/// distribution (deterministic for a seed). Returns the number inserted; stops after
+/// max_attempts consecutive failures.
+std::size_t insert_random(Particles& p, const FillRegion& region, const SizeDistribution& psd,
+                          std::size_t n, double density, int material, std::uint64_t seed,
+                          std::size_t max_attempts = 200000);
+
+/// Simple cubic lattice of spacing a (cell centres at (i + 1/2) a) clipped to the region,
+/// with a random displacement of amplitude `jitter` (LIGGGHTS' create_atoms + displace_atoms).
+std::size_t insert_lattice(Particles& p, const FillRegion& region, double a, double diameter,
+                           double density, int material, double jitter, std::uint64_t seed,
+                           std::size_t max_n = ~std::size_t(0));
+
+} // namespace wear::dem
