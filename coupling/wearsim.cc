@@ -1,5 +1,6 @@
 // wearsim: the command-line entry point. Dispatches to one command per concern; every
 // error reaches the user as one message naming the file or parameter, with exit code 1.
+#include "coupling/bench_command.h"
 #include "coupling/case_parameters.h"
 #include "coupling/mesh_command.h"
 
@@ -14,6 +15,9 @@ void usage(std::ostream& out) {
   out << "usage: wearsim <command> [arguments]\n\n"
          "commands:\n"
          "  mesh <case.prm>          generate the sample (.msh/.stl/.vtu) and the tester walls\n"
+         "  bench dem [--workload annulus|sector5k|sector20k|sector45k|sample45k]\n"
+         "            [--threads N] [--settle N] [--warm N] [--steps N] [--repeats N]\n"
+         "                           DEM benchmark; last line: particle_steps_per_second <value>\n"
          "  --print-parameters       list every case-file parameter with default and meaning\n"
          "  --help                   this text\n";
 }
@@ -44,6 +48,8 @@ int main(int argc, char** argv) {
       run_mesh_command(read_case(argv[2]), std::cout);
       return 0;
     }
+    if (cmd == "bench")
+      return run_bench_command({argv + 2, argv + argc}, std::cout);
     std::cerr << "wearsim: unknown command '" << cmd << "'\n";
     usage(std::cerr);
     return 2;

@@ -37,50 +37,53 @@ struct ContactResult {
 };
 
 /// Updates the tangential history `delta_t` [m] and returns forces and torques.
-inline ContactResult hertz_mindlin(const ContactParameters& p, const ContactGeometry& g, double dt,
-                                   Vec3& delta_t) {
+/// Square roots: sqrt(R* delta), sqrt(S_n m*) (the tangential damping follows from the
+/// normal one: c_t / c_n = sqrt(S_t / S_n) = sqrt(4 G* / E*), a constant per pair type), one
+/// for the history rotation, one for the spin direction, and one more only while sliding.
+__attribute__((always_inline)) inline ContactResult
+hertz_mindlin(const ContactParameters& p, const ContactGeometry& g, double dt, Vec3& delta_t) {
   using meshes::cross;
   using meshes::dot;
-  using meshes::norm;
   ContactResult r;
   const Vec3& n = g.normal;
   const double sqrt_rd = std::sqrt(g.r_eff * g.overlap);
   const double s_n = 2 * p.e_star * sqrt_rd;
   const double s_t = 8 * p.g_star * sqrt_rd;
   constexpr double two_sqrt_5_6 = 1.8257418583505538; // 2 sqrt(5/6)
-  const double v_n = dot(g.v_contact, n);             // < 0 while approaching
-  const double f_el = 4.0 / 3.0 * p.e_star * sqrt_rd * g.overlap;
-  const double f_damp = two_sqrt_5_6 * p.beta * std::sqrt(s_n * g.m_eff) * v_n;
-  const double f_n = std::max(0.0, f_el + f_damp);
+  const double c_n = -two_sqrt_5_6 * p.beta * std::sqrt(s_n * g.m_eff); // >= 0
+  const double c_t = c_n * p.tangential_damping_ratio;
+  const double v_n = dot(g.v_contact, n); // < 0 while approaching
+  const double f_el = (2.0 / 3.0) * s_n * g.overlap; // 4/3 E* sqrt(R*) delta^(3/2)
+  const double f_n = std::max(0.0, f_el - c_n * v_n);
 
   const Vec3 v_t = g.v_contact - n * v_n;
   // History into the current tangent plane, keeping its length (rigid rotation).
   const double d_len2 = dot(delta_t, delta_t);
   if (d_len2 > 0) {
-    Vec3 d = delta_t - n * dot(delta_t, n);
-    const double l2 = dot(d, d);
-    delta_t = l2 > 0 ? d * std::sqrt(d_len2 / l2) : Vec3{};
+    const double dn = dot(delta_t, n);
+    const double l2 = d_len2 - dn * dn;
+    delta_t = l2 > 0 ? (delta_t - n * dn) * std::sqrt(d_len2 / l2) : Vec3{};
   }
   delta_t += v_t * dt;
-  const double c_t = -two_sqrt_5_6 * p.beta * std::sqrt(s_t * g.m_eff);
   Vec3 f_t = delta_t * (-s_t) - v_t * c_t;
-  const double f_t_len = norm(f_t), f_max = p.friction * f_n;
-  if (f_t_len > f_max) {
-    f_t = f_t_len > 0 ? f_t * (f_max / f_t_len) : Vec3{};
+  const double f_t2 = dot(f_t, f_t), f_max = p.friction * f_n;
+  if (f_t2 > f_max * f_max) {
+    f_t = f_t2 > 0 ? f_t * (f_max / std::sqrt(f_t2)) : Vec3{};
     delta_t = s_t > 0 ? f_t * (-1.0 / s_t) : Vec3{}; // spring alone carries the limit
   }
   r.normal_force = f_n;
   r.tangential_force = f_t;
   r.v_tangential = v_t;
   r.force = n * f_n + f_t;
-  r.torque_i = cross(n * (-g.lever_i), f_t);
-  r.torque_j = cross(n * g.lever_j, f_t * -1.0);
+  const Vec3 nxf = cross(n, f_t);
+  r.torque_i = nxf * (-g.lever_i);
+  r.torque_j = nxf * (-g.lever_j);
   if (p.rolling_friction > 0) {
-    const double w = norm(g.w_relative);
-    if (w > 0) {
-      const Vec3 w_hat = g.w_relative / w;
-      r.torque_i -= w_hat * (p.rolling_friction * f_n * g.arm_i);
-      r.torque_j += w_hat * (p.rolling_friction * f_n * g.arm_j);
+    const double w2 = dot(g.w_relative, g.w_relative);
+    if (w2 > 0) {
+      const Vec3 w_hat = g.w_relative * (p.rolling_friction * f_n / std::sqrt(w2));
+      r.torque_i -= w_hat * g.arm_i;
+      r.torque_j += w_hat * g.arm_j;
     }
   }
   return r;

@@ -84,6 +84,7 @@ std::vector<ContactParameters> MaterialTable::contact_table() const {
                                                      : classical_damping_ratio(p.restitution);
       c.friction = p.friction;
       c.rolling_friction = p.rolling_friction;
+      c.tangential_damping_ratio = std::sqrt(4 * c.g_star / c.e_star);
     }
   return t;
 }

@@ -37,6 +37,7 @@ struct ContactParameters {
   double g_star = 0; ///< [Pa] effective shear modulus
   double beta = 0;   ///< [-] damping ratio (<= 0)
   double friction = 0, rolling_friction = 0;
+  double tangential_damping_ratio = 0; ///< [-] sqrt(4 G* / E*) = c_t / c_n
 };
 
 class MaterialTable {

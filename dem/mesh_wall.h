@@ -4,6 +4,7 @@
 #include "meshes/surface_mesh.h"
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -48,6 +49,12 @@ public:
     return meshes::cross(omega_, p - motion_.axis_point) + motion_.surface_velocity;
   }
   const Vec3& angular_velocity_vector() const { return omega_; }
+
+  /// Distance of c from the plane of triangle f [m]: a lower bound of the distance to the
+  /// triangle, used to reject most candidates before the closest-point search.
+  double plane_distance(std::uint32_t f, const Vec3& c) const {
+    return std::abs(meshes::dot(c - corners_[f][0], normal_[f]));
+  }
 
   /// Closest point of triangle f to c (Ericson, Real-Time Collision Detection 5.1.5); the
   /// face region needs strictly positive barycentric coordinates, so points on a shared edge

@@ -2,10 +2,12 @@
 //
 // Cells are cubes of edge >= 2 r_max + skin, so every partner of a particle lies in its own
 // or the 26 surrounding cells. Particles are binned by a counting sort (cell_start_ is a CSR
-// index). Two passes over the real particles, each parallel and independent per particle,
-// count then fill the pairs; each particle's partners are sorted so the list is identical for
-// any thread count.
+// index). One parallel pass: each thread scans a contiguous range of particles into its own
+// buffers, which are concatenated in thread order; each particle's partners are sorted, so the
+// list is identical for any thread count.
 #include "dem/neighbor_list.h"
+
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -47,16 +49,14 @@ void NeighborList::build(const Particles& p, double skin) {
   for (std::size_t c = 0; c < n_cells; ++c)
     cell_start_[c + 1] += cell_start_[c];
   cell_items_.resize(n_all);
-  {
-    std::vector<std::uint32_t>& fill = offset_; // reused as a cursor
-    fill.assign(cell_start_.begin(), cell_start_.end() - 1);
-    for (std::size_t i = 0; i < n_all; ++i)
-      cell_items_[fill[cell_of_[i]]++] = static_cast<std::uint32_t>(i);
-  }
-  count_.assign(n_real + 1, 0);
-  const auto visit = [&](std::size_t i, auto&& emit) {
+  offset_.assign(cell_start_.begin(), cell_start_.end() - 1); // fill cursor
+  for (std::size_t i = 0; i < n_all; ++i)
+    cell_items_[offset_[cell_of_[i]]++] = static_cast<std::uint32_t>(i);
+  const auto visit = [&](std::size_t i, std::vector<std::uint32_t>& out) {
     const Vec3& xi = p.position[i];
+    const double ri = p.radius[i] + skin;
     const int ci = coord(xi, 0, nx), cj = coord(xi, 1, ny), ck = coord(xi, 2, nz);
+    const std::size_t first = out.size();
     for (int k = std::max(0, ck - 1); k <= std::min(nz - 1, ck + 1); ++k)
       for (int j = std::max(0, cj - 1); j <= std::min(ny - 1, cj + 1); ++j)
         for (int l = std::max(0, ci - 1); l <= std::min(nx - 1, ci + 1); ++l) {
@@ -65,30 +65,46 @@ void NeighborList::build(const Particles& p, double skin) {
             const std::uint32_t o = cell_items_[s];
             if (o <= i && o < n_real)
               continue;
-            const double cut = p.radius[i] + p.radius[o] + skin;
+            const double cut = ri + p.radius[o];
             if (meshes::norm2(p.position[o] - xi) < cut * cut)
-              emit(o);
+              out.push_back(o);
           }
         }
+    std::sort(out.begin() + first, out.end());
+    return out.size() - first;
   };
-#pragma omp parallel for schedule(dynamic, 256)
-  for (std::size_t i = 0; i < n_real; ++i) {
-    std::uint32_t n = 0;
-    visit(i, [&](std::uint32_t) { ++n; });
-    count_[i + 1] = n;
+  // One pass: each thread takes a contiguous range of particles and appends to its own
+  // buffers; concatenating them in thread order gives the serial order.
+  int n_threads = 1;
+#pragma omp parallel
+  {
+#pragma omp single
+    {
+      n_threads = omp_get_num_threads();
+      chunk_i_.resize(n_threads);
+      chunk_j_.resize(n_threads);
+    }
+    const int t = omp_get_thread_num();
+    auto& ci = chunk_i_[t];
+    auto& cj = chunk_j_[t];
+    ci.clear();
+    cj.clear();
+#pragma omp for schedule(static)
+    for (std::size_t i = 0; i < n_real; ++i) {
+      const std::size_t m = visit(i, cj);
+      ci.insert(ci.end(), m, static_cast<std::uint32_t>(i));
+    }
   }
-  for (std::size_t i = 0; i < n_real; ++i)
-    count_[i + 1] += count_[i];
-  pair_i.resize(count_[n_real]);
-  pair_j.resize(count_[n_real]);
-#pragma omp parallel for schedule(dynamic, 256)
-  for (std::size_t i = 0; i < n_real; ++i) {
-    std::uint32_t at = count_[i];
-    visit(i, [&](std::uint32_t o) {
-      pair_i[at] = static_cast<std::uint32_t>(i);
-      pair_j[at++] = o;
-    });
-    std::sort(pair_j.begin() + count_[i], pair_j.begin() + count_[i + 1]);
+  std::size_t total = 0;
+  offset_.assign(n_threads + 1, 0);
+  for (int t = 0; t < n_threads; ++t)
+    offset_[t + 1] = static_cast<std::uint32_t>(total += chunk_j_[t].size());
+  pair_i.resize(total);
+  pair_j.resize(total);
+#pragma omp parallel for schedule(static, 1)
+  for (int t = 0; t < n_threads; ++t) {
+    std::copy(chunk_i_[t].begin(), chunk_i_[t].end(), pair_i.begin() + offset_[t]);
+    std::copy(chunk_j_[t].begin(), chunk_j_[t].end(), pair_j.begin() + offset_[t]);
   }
 }
 

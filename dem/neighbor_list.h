@@ -18,7 +18,8 @@ public:
   std::size_t n_pairs() const { return pair_i.size(); }
 
 private:
-  std::vector<std::uint32_t> cell_of_, cell_start_, cell_items_, count_, offset_;
+  std::vector<std::uint32_t> cell_of_, cell_start_, cell_items_, offset_;
+  std::vector<std::vector<std::uint32_t>> chunk_i_, chunk_j_; // per thread, reused
 };
 
 } // namespace wear::dem

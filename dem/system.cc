@@ -90,9 +90,15 @@ void System::setup() {
       if (walls_[w].wearing())
         t[w].assign(8 * walls_[w].n_faces() + 8, 0.0);
   }
-  slot_wall_.assign(wall_slots * p.n_real, -1);
-  slot_normal_.assign(wall_slots * p.n_real, {});
-  slot_delta_.assign(wall_slots * p.n_real, {});
+  for (std::size_t i = 0; i < p.n_real; ++i)
+    if (p.id[i] < 0 || std::size_t(p.id[i]) >= p.n_real)
+      throw std::invalid_argument("DEM: particle ids must be 0 .. n - 1");
+  force_buffer_.assign(n_threads_, {});
+  torque_buffer_.assign(n_threads_, {});
+  for (int t = 1; t < n_threads_; ++t) {
+    force_buffer_[t].assign(p.n_real, {});
+    torque_buffer_[t].assign(p.n_real, {});
+  }
   error_particle_.assign(n_threads_, -1);
   error_kind_.assign(n_threads_, no_error);
   set_up_ = true;
@@ -163,7 +169,7 @@ void System::step() {
   const double h = 0.5 * dt_, vmax2 = settings.max_speed * settings.max_speed;
   const double trigger = 0.25 * skin_ * skin_; // half the skin, squared
   int need_rebuild = 0;
-#pragma omp parallel for schedule(static) reduction(max : need_rebuild)
+#pragma omp parallel for schedule(static) reduction(max : need_rebuild) num_threads(n_threads_)
   for (std::size_t i = 0; i < p.n_real; ++i) {
     const double im = 1.0 / p.mass[i], ii = 1.0 / p.inertia[i];
     p.velocity[i] += p.force[i] * (h * im);
@@ -188,7 +194,7 @@ void System::step() {
   else
     refresh_ghosts();
   compute_forces();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(n_threads_)
   for (std::size_t i = 0; i < p.n_real; ++i) {
     p.velocity[i] += p.force[i] * (h / p.mass[i]);
     p.angular_velocity[i] += p.torque[i] * (h / p.inertia[i]);
@@ -206,36 +212,8 @@ void System::run(std::uint64_t n) {
 }
 
 void System::compute_forces() {
-  auto& p = particles;
   pair_forces();
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < p.n_real; ++i) {
-    Vec3 f = settings.gravity * p.mass[i], t{};
-    for (auto k = incidence_offset_[i]; k < incidence_offset_[i + 1]; ++k) {
-      const std::uint32_t e = incidence_[k], pair = e >> 1;
-      if ((e & 1) == 0) {
-        f += pair_force_[pair];
-        t += pair_torque_i_[pair];
-      } else if (neighbors_.pair_j[pair] < p.n_real) {
-        f -= pair_force_[pair];
-        t += pair_torque_j_[pair];
-      } else { // ghost image of i: rotate back by +angle
-        const Vec3 &a = pair_force_[pair], &b = pair_torque_j_[pair];
-        f -= Vec3{cos_t_ * a.x - sin_t_ * a.y, sin_t_ * a.x + cos_t_ * a.y, a.z};
-        t += Vec3{cos_t_ * b.x - sin_t_ * b.y, sin_t_ * b.x + cos_t_ * b.y, b.z};
-      }
-    }
-    p.force[i] = f;
-    p.torque[i] = t;
-  }
   wall_forces();
-}
-
-std::size_t System::n_pair_contacts() const {
-  std::size_t n = 0;
-  for (const auto& f : pair_force_)
-    n += meshes::norm2(f) > 0;
-  return n;
 }
 
 Energy System::energy() const {
@@ -277,8 +255,9 @@ double System::bytes_per_particle() const {
   const double per_slot = 5 * sizeof(Vec3) + 3 * sizeof(double) + sizeof(int) + 8;
   double bytes =
       per_slot * p.position.size() + sizeof(Vec3) * reference_position_.size() +
-      sizeof(std::uint32_t) * (incidence_offset_.size() + wall_candidate_offset_.size()) +
-      wall_slots * (2 * sizeof(Vec3) + sizeof(std::int16_t)) * p.n_real;
+      sizeof(std::uint32_t) * wall_candidate_offset_.size() +
+      (n_threads_ - 1) * 2 * sizeof(Vec3) * p.n_real +
+      sizeof(WallSlot) * slots_.size();
   return bytes / n;
 }
 

@@ -69,9 +69,11 @@ public:
   double time_step() const { return dt_; } ///< [s]
   double rayleigh_time() const;            ///< [s] of the smallest particle
   std::uint64_t n_rebuilds() const { return n_rebuilds_; }
-  std::size_t n_pair_contacts() const; ///< pairs in contact now
+  std::size_t n_pair_contacts() const { return n_pair_contacts_; } ///< pairs in contact now
   std::size_t n_neighbor_pairs() const { return neighbors_.n_pairs(); }
   std::size_t n_ghosts() const { return ghost_owner_.size(); }
+  std::size_t n_wall_particles() const { return wall_particles_.size(); } ///< near a wall
+  std::size_t n_wall_candidates() const { return wall_candidate_.size(); } ///< faces listed
   Energy energy() const;
   /// Bytes held per particle by the engine's arrays, excluding contact history.
   double bytes_per_particle() const;
@@ -83,6 +85,7 @@ public:
 private:
   void rebuild();
   void refresh_ghosts();
+  void sort_spatially();
   void compute_forces();
   void pair_forces();
   void wall_forces();
@@ -101,16 +104,25 @@ private:
   double cos_t_ = 1, sin_t_ = 0;
   std::vector<std::uint32_t> ghost_owner_;
 
-  // Pairs: history and per-pair results (gathered per particle without races).
-  std::vector<Vec3> pair_history_, pair_force_, pair_torque_i_, pair_torque_j_;
-  std::vector<std::uint32_t> incidence_offset_, incidence_;
+  // Pairs: tangential history; forces go to per-thread arrays (thread 0: the particles'
+  // own arrays), summed in thread order after the pair loop.
+  std::vector<Vec3> pair_history_;
+  std::vector<std::vector<Vec3>> force_buffer_, torque_buffer_;
+  std::size_t n_pair_contacts_ = 0;
   std::vector<Vec3> reference_position_;
 
   // Wall contacts: candidates per particle (wall << 24 | face) and history slots.
   static constexpr int wall_slots = 6;
   std::vector<std::uint32_t> wall_candidate_offset_, wall_candidate_;
-  std::vector<std::int16_t> slot_wall_;
-  std::vector<Vec3> slot_normal_, slot_delta_;
+  std::vector<std::uint32_t> wall_particles_; // particles with at least one candidate
+  // History slots of the wall contacts of near-wall particle q (in wall_particles_ order):
+  // entries [wall_slots q, wall_slots q + wall_slots), valid entries first (wall >= 0).
+  struct WallSlot {
+    Vec3 normal, delta; ///< unit contact normal; tangential history [m]
+    std::int32_t wall = -1;
+  };
+  std::vector<WallSlot> slots_;
+  std::vector<std::int32_t> slot_q_of_id_; // scratch for remapping at rebuilds
   // Per thread, per wearing wall: 8 doubles per face + totals.
   std::vector<std::vector<std::vector<double>>> wear_acc_;
 

@@ -6,15 +6,16 @@
 // histories over, index each particle's pairs, and list candidate wall faces.
 //
 // Histories across the cut: a pair's history is stored relative to the frame in which the
-// lower-index particle sits at its real position ("canonical frame"). A pair computed with
-// a ghost of the lower-index particle lives in a frame rotated by -angle, so its history is
-// rotated by +angle into the canonical frame and back; a wrap of the lower-index particle
-// rotates the canonical frame with it. Wall histories are kept in fixed slots per particle
+// particle with the lower stable id sits at its real position ("canonical frame"). A pair
+// computed with a ghost of that particle lives in a frame rotated by -angle, so its history
+// is rotated by +angle into the canonical frame and back; a wrap of that particle rotates the
+// canonical frame with it. Keys are stable ids, so the periodic spatial reordering of the
+// particle arrays (for cache locality) keeps every history. Wall histories are kept in fixed slots per particle
 // and matched by wall and contact normal (within about 25 degrees), so sliding across
 // triangle boundaries of a smooth or flat wall keeps the history.
 //
-// Pair forces go to per-pair arrays and are gathered per particle through an incidence
-// index, so there are no write races and the sums do not depend on the thread count.
+// Pair forces are accumulated per thread (thread 0 into the particles' own arrays) and
+// summed in thread order, so a run is bitwise reproducible for a given thread count.
 // Wear integrals are accumulated per thread and summed in thread order.
 #include "dem/contact_law.h"
 #include "dem/system.h"
@@ -38,9 +39,11 @@ void System::rebuild() {
   const bool periodic = settings.periodic.enabled;
   const double c = cos_t_, s = sin_t_;
 
-  // 1. Old histories into the canonical frame, keyed by (lower, higher) owner index.
+  // 1. Old histories into the canonical frame (that of the particle with the lower stable
+  //    id), keyed by the two ids, so they survive wrapping and reordering.
   struct Entry {
     std::uint64_t key;
+    std::uint32_t lower; // current index of the lower-id particle
     Vec3 h;
   };
   std::vector<Entry> old;
@@ -51,11 +54,17 @@ void System::rebuild() {
     const std::uint32_t i = neighbors_.pair_i[k], j = neighbors_.pair_j[k];
     const bool ghost = j >= n;
     const std::uint32_t b = ghost ? ghost_owner_[j - n] : j;
+    const auto id_i = std::uint64_t(p.id[i]), id_b = std::uint64_t(p.id[b]);
     Vec3 h = pair_history_[k];
-    if (ghost && b < i)
+    if (ghost && id_b < id_i)
       h = rotate_z(h, c, s);
-    old.push_back({(std::uint64_t(std::min(i, b)) << 32) | std::max(i, b), h});
+    old.push_back({(std::min(id_i, id_b) << 32) | std::max(id_i, id_b), id_b < id_i ? b : i, h});
   }
+
+  // Where each particle's wall-contact slots are now (by stable id).
+  slot_q_of_id_.assign(n, -1);
+  for (std::size_t q = 0; q < wall_particles_.size(); ++q)
+    slot_q_of_id_[p.id[wall_particles_[q]]] = std::int32_t(q);
 
   // 2. Wrap particles into [0, angle); rotate their state and what is tied to their frame.
   if (periodic) {
@@ -77,20 +86,25 @@ void System::rebuild() {
         p.position[i] = rotate_z(p.position[i], cs, sn);
         p.velocity[i] = rotate_z(p.velocity[i], cs, sn);
         p.angular_velocity[i] = rotate_z(p.angular_velocity[i], cs, sn);
-        for (int k = 0; k < wall_slots; ++k) {
-          slot_normal_[wall_slots * i + k] = rotate_z(slot_normal_[wall_slots * i + k], cs, sn);
-          slot_delta_[wall_slots * i + k] = rotate_z(slot_delta_[wall_slots * i + k], cs, sn);
+        const std::int32_t q = slot_q_of_id_[p.id[i]];
+        for (int k = 0; q >= 0 && k < wall_slots; ++k) {
+          WallSlot& sl = slots_[wall_slots * q + k];
+          sl.normal = rotate_z(sl.normal, cs, sn);
+          sl.delta = rotate_z(sl.delta, cs, sn);
         }
       }
       wrap[i] = w;
     }
-    for (auto& e : old) {
-      const auto a = std::uint32_t(e.key >> 32);
-      if (wrap[a] != 0)
-        e.h = rotate_z(e.h, c, wrap[a] > 0 ? s : -s);
-    }
+    for (auto& e : old)
+      if (wrap[e.lower] != 0)
+        e.h = rotate_z(e.h, c, wrap[e.lower] > 0 ? s : -s);
   }
   std::sort(old.begin(), old.end(), [](const Entry& a, const Entry& b) { return a.key < b.key; });
+
+  // 2b. Every few rebuilds, reorder particles along the cell grid so that neighbours are
+  //     neighbours in memory (histories are keyed by id, so nothing is lost).
+  if (n >= 1000 && n_rebuilds_ % 10 == 0)
+    sort_spatially();
 
   // 3. Ghosts: images of particles within reach of the theta = angle plane.
   ghost_owner_.clear();
@@ -120,41 +134,20 @@ void System::rebuild() {
   neighbors_.build(p, skin_);
   const std::size_t np = neighbors_.n_pairs();
   pair_history_.assign(np, {});
-  pair_force_.assign(np, {});
-  pair_torque_i_.assign(np, {});
-  pair_torque_j_.assign(np, {});
   if (!old.empty()) {
 #pragma omp parallel for schedule(static)
     for (std::size_t k = 0; k < np; ++k) {
       const std::uint32_t i = neighbors_.pair_i[k], j = neighbors_.pair_j[k];
       const bool ghost = j >= n;
       const std::uint32_t b = ghost ? ghost_owner_[j - n] : j;
-      const std::uint64_t key = (std::uint64_t(std::min(i, b)) << 32) | std::max(i, b);
+      const auto id_i = std::uint64_t(p.id[i]), id_b = std::uint64_t(p.id[b]);
+      const std::uint64_t key = (std::min(id_i, id_b) << 32) | std::max(id_i, id_b);
       const auto it = std::lower_bound(old.begin(), old.end(), key,
                                        [](const Entry& e, std::uint64_t v) { return e.key < v; });
       if (it != old.end() && it->key == key)
-        pair_history_[k] = ghost && b < i ? rotate_z(it->h, c, -s) : it->h;
+        pair_history_[k] = ghost && id_b < id_i ? rotate_z(it->h, c, -s) : it->h;
     }
   }
-  // 5. Incidence: entry 2 k for i of pair k, 2 k + 1 for the owner of j; stable order.
-  incidence_offset_.assign(n + 1, 0);
-  for (std::size_t k = 0; k < np; ++k) {
-    ++incidence_offset_[neighbors_.pair_i[k] + 1];
-    const auto j = neighbors_.pair_j[k];
-    ++incidence_offset_[(j < n ? j : ghost_owner_[j - n]) + 1];
-  }
-  for (std::size_t i = 0; i < n; ++i)
-    incidence_offset_[i + 1] += incidence_offset_[i];
-  incidence_.resize(incidence_offset_[n]);
-  {
-    std::vector<std::uint32_t> fill(incidence_offset_.begin(), incidence_offset_.end() - 1);
-    for (std::size_t k = 0; k < np; ++k) {
-      incidence_[fill[neighbors_.pair_i[k]]++] = std::uint32_t(2 * k);
-      const auto j = neighbors_.pair_j[k];
-      incidence_[fill[j < n ? j : ghost_owner_[j - n]]++] = std::uint32_t(2 * k + 1);
-    }
-  }
-
   // 6. Wall candidates: faces within radius + skin of each particle centre.
   wall_candidate_offset_.assign(n + 1, 0);
   std::vector<std::uint32_t> count(n, 0);
@@ -174,8 +167,22 @@ void System::rebuild() {
     scan(i, [&](std::uint32_t) { ++m; });
     count[i] = m;
   }
-  for (std::size_t i = 0; i < n; ++i)
+  wall_particles_.clear();
+  for (std::size_t i = 0; i < n; ++i) {
     wall_candidate_offset_[i + 1] = wall_candidate_offset_[i] + count[i];
+    if (count[i] > 0)
+      wall_particles_.push_back(std::uint32_t(i));
+  }
+  {
+    std::vector<WallSlot> slots(wall_slots * wall_particles_.size());
+    for (std::size_t q = 0; q < wall_particles_.size(); ++q) {
+      const std::int32_t old_q = slot_q_of_id_[p.id[wall_particles_[q]]];
+      if (old_q >= 0)
+        std::copy_n(slots_.begin() + wall_slots * old_q, wall_slots,
+                    slots.begin() + wall_slots * q);
+    }
+    slots_.swap(slots);
+  }
   wall_candidate_.resize(wall_candidate_offset_[n]);
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::size_t i = 0; i < n; ++i) {
@@ -184,6 +191,41 @@ void System::rebuild() {
   }
   reference_position_.assign(p.position.begin(), p.position.begin() + n);
   ++n_rebuilds_;
+}
+
+void System::sort_spatially() {
+  auto& p = particles;
+  const std::size_t n = p.n_real;
+  Vec3 lo = p.position[0];
+  for (std::size_t i = 1; i < n; ++i)
+    for (int d = 0; d < 3; ++d)
+      lo[d] = std::min(lo[d], p.position[i][d]);
+  const double cell = 2 * r_max_ + skin_;
+  std::vector<std::uint64_t> key(n);
+  std::vector<std::uint32_t> perm(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 q = (p.position[i] - lo) / cell;
+    key[i] = (std::uint64_t(q.z) << 42) | (std::uint64_t(q.y) << 21) | std::uint64_t(q.x);
+    perm[i] = std::uint32_t(i);
+  }
+  std::stable_sort(perm.begin(), perm.end(),
+                   [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
+  const auto apply = [&](auto& v, std::size_t per) {
+    auto copy = v;
+    for (std::size_t k = 0; k < n; ++k)
+      for (std::size_t q = 0; q < per; ++q)
+        v[per * k + q] = copy[per * perm[k] + q];
+  };
+  apply(p.position, 1);
+  apply(p.velocity, 1);
+  apply(p.angular_velocity, 1);
+  apply(p.force, 1);
+  apply(p.torque, 1);
+  apply(p.radius, 1);
+  apply(p.mass, 1);
+  apply(p.inertia, 1);
+  apply(p.material, 1);
+  apply(p.id, 1);
 }
 
 void System::refresh_ghosts() {
@@ -200,40 +242,76 @@ void System::refresh_ghosts() {
 
 void System::pair_forces() {
   auto& p = particles;
-  const std::size_t np = neighbors_.n_pairs();
+  const std::size_t n = p.n_real, np = neighbors_.n_pairs();
   const std::uint32_t* pi = neighbors_.pair_i.data();
   const std::uint32_t* pj = neighbors_.pair_j.data();
-#pragma omp parallel for schedule(static)
-  for (std::size_t k = 0; k < np; ++k) {
-    const std::uint32_t i = pi[k], j = pj[k];
-    const Vec3 d = p.position[i] - p.position[j];
-    const double dist2 = meshes::norm2(d), rs = p.radius[i] + p.radius[j];
-    if (dist2 >= rs * rs) {
-      pair_history_[k] = {};
-      pair_force_[k] = {};
-      pair_torque_i_[k] = {};
-      pair_torque_j_[k] = {};
-      continue;
+  const Vec3 gravity = settings.gravity;
+  const double c = cos_t_, s = sin_t_;
+  std::size_t n_contacts = 0;
+#pragma omp parallel num_threads(n_threads_) reduction(+ : n_contacts)
+  {
+    const int thread = omp_get_thread_num();
+    Vec3* F = thread == 0 ? p.force.data() : force_buffer_[thread].data();
+    Vec3* T = thread == 0 ? p.torque.data() : torque_buffer_[thread].data();
+    if (thread == 0)
+      for (std::size_t i = 0; i < n; ++i) {
+        F[i] = gravity * p.mass[i];
+        T[i] = {};
+      }
+    else
+      for (std::size_t i = 0; i < n; ++i)
+        F[i] = T[i] = {};
+#pragma omp for schedule(static) nowait
+    for (std::size_t k = 0; k < np; ++k) {
+      const std::uint32_t i = pi[k], j = pj[k];
+      const Vec3 d = p.position[i] - p.position[j];
+      const double dist2 = meshes::norm2(d), rs = p.radius[i] + p.radius[j];
+      if (dist2 >= rs * rs) {
+        pair_history_[k] = {};
+        continue;
+      }
+      ++n_contacts;
+      const double dist = std::sqrt(dist2);
+      ContactGeometry g;
+      g.normal = d / dist;
+      g.overlap = rs - dist;
+      g.r_eff = p.radius[i] * p.radius[j] / rs;
+      g.m_eff = p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]);
+      g.arm_i = p.radius[i] - 0.5 * g.overlap;
+      g.arm_j = p.radius[j] - 0.5 * g.overlap;
+      g.lever_i = p.radius[i];
+      g.lever_j = p.radius[j];
+      g.v_contact = p.velocity[i] - p.velocity[j] -
+                    meshes::cross(p.angular_velocity[i] * g.lever_i +
+                                      p.angular_velocity[j] * g.lever_j,
+                                  g.normal);
+      g.w_relative = p.angular_velocity[i] - p.angular_velocity[j];
+      const auto r = hertz_mindlin(contact_[p.material[i] * n_mat_ + p.material[j]], g, dt_,
+                                   pair_history_[k]);
+      F[i] += r.force;
+      T[i] += r.torque_i;
+      if (j < n) {
+        F[j] -= r.force;
+        T[j] += r.torque_j;
+      } else { // a ghost: back to its owner, rotated by +angle
+        const std::uint32_t o = ghost_owner_[j - n];
+        F[o] -= rotate_z(r.force, c, s);
+        T[o] += rotate_z(r.torque_j, c, s);
+      }
     }
-    const double dist = std::sqrt(dist2);
-    ContactGeometry g;
-    g.normal = d / dist;
-    g.overlap = rs - dist;
-    g.r_eff = p.radius[i] * p.radius[j] / rs;
-    g.m_eff = p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]);
-    g.arm_i = p.radius[i] - 0.5 * g.overlap;
-    g.arm_j = p.radius[j] - 0.5 * g.overlap;
-    g.lever_i = p.radius[i];
-    g.lever_j = p.radius[j];
-    g.v_contact = p.velocity[i] - p.velocity[j] +
-                  meshes::cross(p.angular_velocity[i], g.normal * -g.lever_i) -
-                  meshes::cross(p.angular_velocity[j], g.normal * g.lever_j);
-    g.w_relative = p.angular_velocity[i] - p.angular_velocity[j];
-    const auto r =
-        hertz_mindlin(contact_[p.material[i] * n_mat_ + p.material[j]], g, dt_, pair_history_[k]);
-    pair_force_[k] = r.force;
-    pair_torque_i_[k] = r.torque_i;
-    pair_torque_j_[k] = r.torque_j;
+  }
+  n_pair_contacts_ = n_contacts;
+  if (n_threads_ > 1) {
+#pragma omp parallel for schedule(static) num_threads(n_threads_)
+    for (std::size_t i = 0; i < n; ++i) {
+      Vec3 f = p.force[i], t = p.torque[i];
+      for (int th = 1; th < n_threads_; ++th) {
+        f += force_buffer_[th][i];
+        t += torque_buffer_[th][i];
+      }
+      p.force[i] = f;
+      p.torque[i] = t;
+    }
   }
 }
 
@@ -243,18 +321,20 @@ void System::wall_forces() {
   auto& p = particles;
   const std::size_t n = p.n_real;
   const double dt = dt_;
-#pragma omp parallel
+#pragma omp parallel num_threads(n_threads_)
   {
     const int thread = omp_get_thread_num();
     auto& acc = wear_acc_[thread];
+    // Only particles near a wall, split evenly: the bottom layer would otherwise all fall to
+    // one thread.
+    const std::size_t n_wall = wall_particles_.size();
 #pragma omp for schedule(static)
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t q = 0; q < n_wall; ++q) {
+      const std::size_t i = wall_particles_[q];
       const auto b = wall_candidate_offset_[i], e = wall_candidate_offset_[i + 1];
-      if (b == e)
-        continue;
       const Vec3 x = p.position[i];
       const double r = p.radius[i];
-      std::int16_t new_wall[wall_slots];
+      std::int32_t new_wall[wall_slots];
       Vec3 new_normal[wall_slots], new_delta[wall_slots];
       bool taken[wall_slots] = {};
       int n_new = 0;
@@ -262,6 +342,8 @@ void System::wall_forces() {
       for (auto k = b; k < e; ++k) {
         const std::uint32_t w = wall_candidate_[k] >> 24, f = wall_candidate_[k] & 0xFFFFFFu;
         const MeshWall& wall = walls_[w];
+        if (wall.plane_distance(f, x) >= r)
+          continue;
         const ClosestFeature cf = wall.closest(f, x);
         const Vec3 d = x - cf.point;
         const double dist2 = meshes::norm2(d);
@@ -290,10 +372,10 @@ void System::wall_forces() {
         Vec3 delta{};
         int best = -1;
         double best_dot = 0.9;
-        for (int s = 0; s < wall_slots; ++s) {
-          const std::size_t q = wall_slots * i + s;
-          if (slot_wall_[q] == std::int16_t(w) && !taken[s]) {
-            const double cd = meshes::dot(slot_normal_[q], g.normal);
+        const WallSlot* old = &slots_[wall_slots * q];
+        for (int s = 0; s < wall_slots && old[s].wall >= 0; ++s) {
+          if (old[s].wall == std::int32_t(w) && !taken[s]) {
+            const double cd = meshes::dot(old[s].normal, g.normal);
             if (cd > best_dot) {
               best_dot = cd;
               best = s;
@@ -302,13 +384,13 @@ void System::wall_forces() {
         }
         if (best >= 0) {
           taken[best] = true;
-          delta = slot_delta_[wall_slots * i + best];
+          delta = old[best].delta;
         }
         const auto res =
             hertz_mindlin(contact_[p.material[i] * n_mat_ + wall.material()], g, dt, delta);
         f_sum += res.force;
         t_sum += res.torque_i;
-        new_wall[n_new] = std::int16_t(w);
+        new_wall[n_new] = std::int32_t(w);
         new_normal[n_new] = g.normal;
         new_delta[n_new] = delta;
         ++n_new;
@@ -340,14 +422,11 @@ void System::wall_forces() {
           tot[5] += work;
         }
       }
-      for (int s = 0; s < wall_slots; ++s) {
-        const std::size_t q = wall_slots * i + s;
-        slot_wall_[q] = s < n_new ? new_wall[s] : std::int16_t(-1);
-        if (s < n_new) {
-          slot_normal_[q] = new_normal[s];
-          slot_delta_[q] = new_delta[s];
-        }
-      }
+      WallSlot* slot = &slots_[wall_slots * q];
+      for (int s = 0; s < n_new; ++s)
+        slot[s] = {new_normal[s], new_delta[s], new_wall[s]};
+      if (n_new < wall_slots)
+        slot[n_new].wall = -1;
       p.force[i] += f_sum;
       p.torque[i] += t_sum;
     }

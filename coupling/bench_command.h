@@ -1,0 +1,13 @@
+#pragma once
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace wear::coupling {
+
+/// `wearsim bench dem [--workload W] [--threads N] [--settle N] [--warm N] [--steps N]
+/// [--repeats N]`: runs a DEM benchmark workload and prints particle-steps per second; the
+/// last line is `particle_steps_per_second <median>`.
+int run_bench_command(const std::vector<std::string>& args, std::ostream& out);
+
+} // namespace wear::coupling

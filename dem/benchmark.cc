@@ -1,0 +1,138 @@
+// Benchmark workloads. The full-annulus lattice reproduces gen_meshes.py of the anchor
+// exactly: sites ((i + 1/2) a, (j + 1/2) a, (k + 1/2) a) with r_in + 0.6 a < r < r_out - 0.6 a,
+// and nz = round(45000 / sites per layer) layers, giving the anchor's 44,448 particles.
+#include "dem/benchmark.h"
+
+#include "dem/filling.h"
+#include "meshes/tester_walls.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace wear::dem {
+
+namespace {
+constexpr double pi = 3.14159265358979323846;
+constexpr double d0 = 7.95e-3, ri = 0.29, ro = 0.50;
+
+meshes::SurfaceMesh plate(double theta, double r0, double r1, double z0, double z1, int n) {
+  // Vertical plate in the radial-vertical plane at angle theta (normal along the flow),
+  // n x n quads split in two: 2 n^2 triangles.
+  meshes::SurfaceMesh m;
+  const double c = std::cos(theta), s = std::sin(theta);
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const double r = r0 + (r1 - r0) * i / n, z = z0 + (z1 - z0) * j / n;
+      m.vertices.push_back({r * c, r * s, z});
+    }
+  const auto id = [&](int i, int j) { return std::uint32_t(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  m.face_labels.assign(m.triangles.size(), meshes::label::wall);
+  return m;
+}
+} // namespace
+
+void build_benchmark(System& s, const std::string& workload) {
+  const int g = s.materials.add({"gravel", 5e7, 0.25, 2650});
+  s.materials.set_pair(g, g, {0.5, 0.5, 0.1});
+  s.settings.skin = 0.002;
+  s.settings.time_step_fraction = 0.2;
+  s.settings.domain = {{-0.52, -0.52, -0.01}, {0.52, 0.52, 1.0}};
+  const double a = 1.03 * d0, omega = 0.5 * pi;
+  WallMotion rotating;
+  rotating.angular_velocity = omega;
+  meshes::TesterGeometry t;
+  t.inner_radius = ri;
+  t.outer_radius = ro;
+  t.consolidator = false;
+  if (workload == "annulus") {
+    int layer = 0;
+    const int m = int(ro / a) + 2;
+    for (int i = -m; i < m; ++i)
+      for (int j = -m; j < m; ++j) {
+        const double r = std::hypot((i + 0.5) * a, (j + 0.5) * a);
+        layer += (ri + 0.6 * a < r && r < ro - 0.6 * a);
+      }
+    const int nz = std::max(1, int(std::lround(45000.0 / layer)));
+    t.sector_angle_deg = 360;
+    t.wall_height = 0.12;
+    t.wall_mesh_size = 0.021; // 150 x 10 floor segments as the anchor
+    const auto w = meshes::generate_tester_walls(t);
+    s.add_wall(MeshWall(w.floor, g, rotating, false, "floor"));
+    s.add_wall(MeshWall(w.inner, g, {}, false, "inner"));
+    s.add_wall(MeshWall(w.outer, g, {}, false, "outer"));
+    FillRegion region{{-ro, -ro, 0}, {ro, ro, nz * a}, [=](const Vec3& x) {
+                        const double r = std::hypot(x.x, x.y);
+                        return ri + 0.6 * a < r && r < ro - 0.6 * a && x.z > 0 && x.z < nz * a;
+                      }};
+    insert_lattice(s.particles, region, a, d0, 2650, g, 1e-4, 15485863);
+    return;
+  }
+  std::size_t target = 0;
+  if (workload == "sector5k")
+    target = 5000;
+  else if (workload == "sector20k")
+    target = 20000;
+  else if (workload == "sector45k" || workload == "sample45k")
+    target = 45000;
+  else
+    throw std::invalid_argument("unknown benchmark workload '" + workload +
+                                "' (annulus, sector5k, sector20k, sector45k, sample45k)");
+  // 14 layers as the anchor's channels; angle from the lattice sites per layer and radian.
+  const int nz = 14;
+  const double z_top = nz * a;
+  double per_rad = 0;
+  {
+    int layer = 0;
+    const int m = int(ro / a) + 2;
+    for (int i = -m; i < m; ++i)
+      for (int j = -m; j < m; ++j) {
+        const double r = std::hypot((i + 0.5) * a, (j + 0.5) * a);
+        layer += (ri + 0.6 * a < r && r < ro - 0.6 * a);
+      }
+    per_rad = layer / (2 * pi);
+  }
+  const double angle = std::min(2 * pi * 0.9, double(target) / (nz * per_rad));
+  t.sector_angle_deg = angle * 180 / pi;
+  t.wall_height = 0.2;
+  t.wall_mesh_size = 0.021;
+  // Walls reach a little past both cut planes: particles may sit up to half a skin beyond a
+  // cut between list rebuilds.
+  const double margin = 0.02;
+  const auto w = meshes::generate_tester_walls(t);
+  const auto extend = [&](const meshes::SurfaceMesh& mesh) {
+    // Rotate the vertices so the mesh spans [-margin, angle + margin].
+    meshes::SurfaceMesh e = mesh;
+    const double scale = (angle + 2 * margin) / angle;
+    for (auto& v : e.vertices) {
+      const double r = std::hypot(v.x, v.y), th = std::atan2(v.y, v.x);
+      const double th_full = th < -1e-12 ? th + 2 * pi : th;
+      const double th2 = th_full * scale - margin;
+      v = {r * std::cos(th2), r * std::sin(th2), v.z};
+    }
+    return e;
+  };
+  s.add_wall(MeshWall(extend(w.floor), g, rotating, false, "floor"));
+  s.add_wall(MeshWall(extend(w.inner), g, rotating, false, "inner"));
+  s.add_wall(MeshWall(extend(w.outer), g, rotating, false, "outer"));
+  if (workload == "sample45k")
+    s.add_wall(MeshWall(plate(angle / 2, 0.345, 0.445, 0.015, 0.115, 40), g, {}, false, "plate"));
+  s.settings.periodic = {true, angle};
+  FillRegion region{{-ro, -ro, 0}, {ro, ro, z_top}, [=](const Vec3& x) {
+                      const double r = std::hypot(x.x, x.y);
+                      double th = std::atan2(x.y, x.x);
+                      if (th < 0)
+                        th += 2 * pi;
+                      const bool in_plate = workload == "sample45k" &&
+                                            std::abs(th - angle / 2) * r < 0.6 * a;
+                      return ri + 0.6 * a < r && r < ro - 0.6 * a && x.z > 0 && x.z < z_top &&
+                             th * r > 0.5 * a && (angle - th) * r > 0.5 * a && !in_plate;
+                    }};
+  insert_lattice(s.particles, region, a, d0, 2650, g, 1e-4, 15485863);
+}
+
+} // namespace wear::dem
