@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <ostream>
 #include <stdexcept>
 #include <thread>
@@ -35,6 +36,7 @@ int run_bench_command(const std::vector<std::string>& args, std::ostream& out) {
   if (args.empty() || args[0] != "dem")
     throw std::invalid_argument("wearsim bench: only 'wearsim bench dem [options]' exists");
   dem::BenchmarkOptions o;
+  std::vector<int> thread_list;
   for (std::size_t k = 1; k < args.size(); k += 2) {
     if (k + 1 >= args.size())
       throw std::invalid_argument("wearsim bench: option " + args[k] + " needs a value");
@@ -42,9 +44,15 @@ int run_bench_command(const std::vector<std::string>& args, std::ostream& out) {
     const std::string& v = args[k + 1];
     if (f == "--workload")
       o.workload = v;
-    else if (f == "--threads")
-      o.threads = int(to_count(f, v));
-    else if (f == "--settle")
+    else if (f == "--threads") {
+      thread_list.clear();
+      std::size_t at = 0;
+      while (at <= v.size()) {
+        const auto comma = std::min(v.find(',', at), v.size());
+        thread_list.push_back(int(to_count(f, v.substr(at, comma - at))));
+        at = comma + 1;
+      }
+    } else if (f == "--settle")
       o.settle_steps = to_count(f, v);
     else if (f == "--warm")
       o.warm_steps = to_count(f, v);
@@ -55,7 +63,13 @@ int run_bench_command(const std::vector<std::string>& args, std::ostream& out) {
     else
       throw std::invalid_argument("wearsim bench: unknown option '" + f + "'");
   }
-  const int threads = o.threads > 0 ? o.threads : int(std::thread::hardware_concurrency());
+  const int all = int(std::thread::hardware_concurrency());
+  if (thread_list.empty())
+    thread_list.push_back(all);
+  for (int& t : thread_list)
+    if (t == 0)
+      t = all;
+  const int threads = *std::max_element(thread_list.begin(), thread_list.end());
   omp_set_num_threads(threads);
   dem::System s;
   dem::build_benchmark(s, o.workload);
@@ -63,33 +77,37 @@ int run_bench_command(const std::vector<std::string>& args, std::ostream& out) {
   auto t0 = clock();
   s.setup();
   char line[256];
-  std::snprintf(line, sizeof line,
-                "workload %s: %zu particles, %d walls, dt %.4e s, %d threads; settling %llu steps\n",
-                o.workload.c_str(), s.particles.n_real, s.n_walls(), s.time_step(), threads,
-                (unsigned long long)o.settle_steps);
+  std::snprintf(
+      line, sizeof line,
+      "workload %s: %zu particles, %d walls, dt %.4e s, %d threads; settling %llu steps\n",
+      o.workload.c_str(), s.particles.n_real, s.n_walls(), s.time_step(), threads,
+      (unsigned long long)o.settle_steps);
   out << line << std::flush;
   for (std::uint64_t k = 0; k < o.settle_steps; k += 1000) {
     s.run(std::min<std::uint64_t>(1000, o.settle_steps - k));
   }
   const double settle_s = std::chrono::duration<double>(clock() - t0).count();
-  s.run(o.warm_steps);
-  std::vector<double> rates;
-  for (int r = 0; r < o.repeats; ++r) {
-    const auto n0 = s.n_rebuilds();
-    t0 = clock();
-    s.run(o.timed_steps);
-    const double secs = std::chrono::duration<double>(clock() - t0).count();
-    const double rate = double(s.particles.n_real) * double(o.timed_steps) / secs;
-    rates.push_back(rate);
-    std::snprintf(line, sizeof line,
-                  "repeat %d: %llu steps in %.3f s, %.4e particle-steps/s, rebuild every %.1f "
-                  "steps, %.2f neighbour pairs and %.2f contacts per particle\n",
-                  r + 1, (unsigned long long)o.timed_steps, secs, rate,
-                  double(o.timed_steps) / std::max<double>(1, double(s.n_rebuilds() - n0)),
-                  double(s.n_neighbor_pairs()) / double(s.particles.n_real),
-                  double(s.n_pair_contacts()) / double(s.particles.n_real));
-    out << line << std::flush;
-  }
+  // Repeats interleave the thread counts, so each pair of figures shares one time window.
+  std::map<int, std::vector<double>> rates;
+  for (int r = 0; r < o.repeats; ++r)
+    for (int th : thread_list) {
+      s.set_n_threads(th);
+      s.run(o.warm_steps);
+      const auto n0 = s.n_rebuilds();
+      t0 = clock();
+      s.run(o.timed_steps);
+      const double secs = std::chrono::duration<double>(clock() - t0).count();
+      const double rate = double(s.particles.n_real) * double(o.timed_steps) / secs;
+      rates[th].push_back(rate);
+      std::snprintf(line, sizeof line,
+                    "repeat %d, %d threads: %llu steps in %.3f s, %.4e particle-steps/s, rebuild "
+                    "every %.1f steps, %.2f neighbour pairs and %.2f contacts per particle\n",
+                    r + 1, th, (unsigned long long)o.timed_steps, secs, rate,
+                    double(o.timed_steps) / std::max<double>(1, double(s.n_rebuilds() - n0)),
+                    double(s.n_neighbor_pairs()) / double(s.particles.n_real),
+                    double(s.n_pair_contacts()) / double(s.particles.n_real));
+      out << line << std::flush;
+    }
   double z_top = 0, lz = 0, r2 = 0;
   for (std::size_t i = 0; i < s.particles.n_real; ++i) {
     const auto& x = s.particles.position[i];
@@ -98,7 +116,13 @@ int run_bench_command(const std::vector<std::string>& args, std::ostream& out) {
     lz += x.x * v.y - x.y * v.x;
     r2 += x.x * x.x + x.y * x.y;
   }
-  std::sort(rates.begin(), rates.end());
+  for (auto& [th, v] : rates) {
+    std::sort(v.begin(), v.end());
+    std::snprintf(line, sizeof line, "median with %d threads: %.4e particle-steps/s\n", th,
+                  v[v.size() / 2]);
+    out << line;
+  }
+  auto& last = rates[thread_list.back()];
   std::snprintf(line, sizeof line,
                 "settle %.1f s; bed top %.4f m, mean bed angular velocity %.3f rad/s; %.0f bytes "
                 "per particle plus contact history; %zu particles, %zu near walls with %.2f "
@@ -107,7 +131,7 @@ int run_bench_command(const std::vector<std::string>& args, std::ostream& out) {
                 s.n_wall_particles(),
                 double(s.n_wall_candidates()) / std::max<double>(1, double(s.n_wall_particles())));
   out << line;
-  std::snprintf(line, sizeof line, "particle_steps_per_second %.6e\n", rates[rates.size() / 2]);
+  std::snprintf(line, sizeof line, "particle_steps_per_second %.6e\n", last[last.size() / 2]);
   out << line;
   return 0;
 }

@@ -5,7 +5,7 @@
 
 namespace wear::coupling {
 
-/// `wearsim bench dem [--workload W] [--threads N] [--settle N] [--warm N] [--steps N]
+/// `wearsim bench dem [--workload W] [--threads N[,M..]] [--settle N] [--warm N] [--steps N]
 /// [--repeats N]`: runs a DEM benchmark workload and prints particle-steps per second; the
 /// last line is `particle_steps_per_second <median>`.
 int run_bench_command(const std::vector<std::string>& args, std::ostream& out);

@@ -16,7 +16,7 @@ void usage(std::ostream& out) {
          "commands:\n"
          "  mesh <case.prm>          generate the sample (.msh/.stl/.vtu) and the tester walls\n"
          "  bench dem [--workload annulus|sector5k|sector20k|sector45k|sample45k]\n"
-         "            [--threads N] [--settle N] [--warm N] [--steps N] [--repeats N]\n"
+         "            [--threads N[,M..]] [--settle N] [--warm N] [--steps N] [--repeats N]\n"
          "                           DEM benchmark; last line: particle_steps_per_second <value>\n"
          "  --print-parameters       list every case-file parameter with default and meaning\n"
          "  --help                   this text\n";

@@ -127,8 +127,8 @@ void build_benchmark(System& s, const std::string& workload) {
                       double th = std::atan2(x.y, x.x);
                       if (th < 0)
                         th += 2 * pi;
-                      const bool in_plate = workload == "sample45k" &&
-                                            std::abs(th - angle / 2) * r < 0.6 * a;
+                      const bool in_plate =
+                          workload == "sample45k" && std::abs(th - angle / 2) * r < 0.6 * a;
                       return ri + 0.6 * a < r && r < ro - 0.6 * a && x.z > 0 && x.z < z_top &&
                              th * r > 0.5 * a && (angle - th) * r > 0.5 * a && !in_plate;
                     }};

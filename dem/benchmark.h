@@ -7,8 +7,7 @@
 namespace wear::dem {
 
 struct BenchmarkOptions {
-  std::string workload = "annulus"; ///< annulus | sector5k | sector20k | sector45k | sample45k
-  int threads = 0;                  ///< 0: all cores
+  std::string workload = "annulus";   ///< annulus | sector5k | sector20k | sector45k | sample45k
   std::uint64_t settle_steps = 24000; ///< as the anchor's NSETTLE, floor rotating
   std::uint64_t warm_steps = 500;
   std::uint64_t timed_steps = 2000;

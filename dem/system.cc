@@ -82,7 +82,21 @@ void System::setup() {
   }
   for (auto& w : walls_)
     w.build_grid(r_max_ + skin_);
-  n_threads_ = omp_get_max_threads();
+  for (std::size_t i = 0; i < p.n_real; ++i)
+    if (p.id[i] < 0 || std::size_t(p.id[i]) >= p.n_real)
+      throw std::invalid_argument("DEM: particle ids must be 0 .. n - 1");
+  set_n_threads(omp_get_max_threads());
+  set_up_ = true;
+  check_particles_or_throw("at setup");
+  rebuild();
+  compute_forces();
+}
+
+void System::set_n_threads(int n) {
+  if (n < 1)
+    throw std::invalid_argument("DEM: the thread count must be at least 1");
+  n_threads_ = n;
+  omp_set_num_threads(n); // every parallel loop of the engine uses the same count
   wear_acc_.assign(n_threads_, {});
   for (auto& t : wear_acc_) {
     t.resize(walls_.size());
@@ -90,21 +104,14 @@ void System::setup() {
       if (walls_[w].wearing())
         t[w].assign(8 * walls_[w].n_faces() + 8, 0.0);
   }
-  for (std::size_t i = 0; i < p.n_real; ++i)
-    if (p.id[i] < 0 || std::size_t(p.id[i]) >= p.n_real)
-      throw std::invalid_argument("DEM: particle ids must be 0 .. n - 1");
   force_buffer_.assign(n_threads_, {});
   torque_buffer_.assign(n_threads_, {});
   for (int t = 1; t < n_threads_; ++t) {
-    force_buffer_[t].assign(p.n_real, {});
-    torque_buffer_[t].assign(p.n_real, {});
+    force_buffer_[t].assign(particles.n_real, {});
+    torque_buffer_[t].assign(particles.n_real, {});
   }
   error_particle_.assign(n_threads_, -1);
   error_kind_.assign(n_threads_, no_error);
-  set_up_ = true;
-  check_particles_or_throw("at setup");
-  rebuild();
-  compute_forces();
 }
 
 void System::check_particles_or_throw(const char* stage) {
@@ -253,11 +260,9 @@ double System::bytes_per_particle() const {
   const auto& p = particles;
   const double n = double(std::max<std::size_t>(1, p.n_real));
   const double per_slot = 5 * sizeof(Vec3) + 3 * sizeof(double) + sizeof(int) + 8;
-  double bytes =
-      per_slot * p.position.size() + sizeof(Vec3) * reference_position_.size() +
-      sizeof(std::uint32_t) * wall_candidate_offset_.size() +
-      (n_threads_ - 1) * 2 * sizeof(Vec3) * p.n_real +
-      sizeof(WallSlot) * slots_.size();
+  double bytes = per_slot * p.position.size() + sizeof(Vec3) * reference_position_.size() +
+                 sizeof(std::uint32_t) * wall_candidate_offset_.size() +
+                 (n_threads_ - 1) * 2 * sizeof(Vec3) * p.n_real + sizeof(WallSlot) * slots_.size();
   return bytes / n;
 }
 

@@ -63,6 +63,10 @@ public:
   void setup();
   void step();
   void run(std::uint64_t n_steps);
+  /// Threads used from now on (default: OpenMP's maximum at setup). Resets the wear
+  /// integrals of the current window; results stay bitwise reproducible per thread count.
+  void set_n_threads(int n);
+  int n_threads() const { return n_threads_; }
 
   double time() const { return time_; } ///< [s]
   std::uint64_t n_steps() const { return n_steps_; }
@@ -72,7 +76,7 @@ public:
   std::size_t n_pair_contacts() const { return n_pair_contacts_; } ///< pairs in contact now
   std::size_t n_neighbor_pairs() const { return neighbors_.n_pairs(); }
   std::size_t n_ghosts() const { return ghost_owner_.size(); }
-  std::size_t n_wall_particles() const { return wall_particles_.size(); } ///< near a wall
+  std::size_t n_wall_particles() const { return wall_particles_.size(); }  ///< near a wall
   std::size_t n_wall_candidates() const { return wall_candidate_.size(); } ///< faces listed
   Energy energy() const;
   /// Bytes held per particle by the engine's arrays, excluding contact history.
@@ -107,6 +111,13 @@ private:
   // Pairs: tangential history; forces go to per-thread arrays (thread 0: the particles'
   // own arrays), summed in thread order after the pair loop.
   std::vector<Vec3> pair_history_;
+  // Constants of each listed pair, fixed between rebuilds: read sequentially in the step loop
+  // instead of gathering the partner's radius, mass and material.
+  struct PairConstants {
+    double r_sum, r_eff, m_eff; ///< [m], [m], [kg]
+    std::int32_t type;          ///< index into the contact table
+  };
+  std::vector<PairConstants> pair_const_;
   std::vector<std::vector<Vec3>> force_buffer_, torque_buffer_;
   std::size_t n_pair_contacts_ = 0;
   std::vector<Vec3> reference_position_;

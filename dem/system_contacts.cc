@@ -10,8 +10,8 @@
 // computed with a ghost of that particle lives in a frame rotated by -angle, so its history
 // is rotated by +angle into the canonical frame and back; a wrap of that particle rotates the
 // canonical frame with it. Keys are stable ids, so the periodic spatial reordering of the
-// particle arrays (for cache locality) keeps every history. Wall histories are kept in fixed slots per particle
-// and matched by wall and contact normal (within about 25 degrees), so sliding across
+// particle arrays (for cache locality) keeps every history. Wall histories are kept in fixed slots
+// per particle and matched by wall and contact normal (within about 25 degrees), so sliding across
 // triangle boundaries of a smooth or flat wall keeps the history.
 //
 // Pair forces are accumulated per thread (thread 0 into the particles' own arrays) and
@@ -99,7 +99,18 @@ void System::rebuild() {
       if (wrap[e.lower] != 0)
         e.h = rotate_z(e.h, c, wrap[e.lower] > 0 ? s : -s);
   }
-  std::sort(old.begin(), old.end(), [](const Entry& a, const Entry& b) { return a.key < b.key; });
+  // Bucket the entries by the lower id (counting sort, O(n)); a bucket holds a few entries.
+  std::vector<std::uint32_t> bucket(n + 1, 0);
+  for (const auto& e : old)
+    ++bucket[(e.key >> 32) + 1];
+  for (std::size_t i = 0; i < n; ++i)
+    bucket[i + 1] += bucket[i];
+  std::vector<Entry> by_id(old.size());
+  {
+    std::vector<std::uint32_t> fill(bucket.begin(), bucket.end() - 1);
+    for (const auto& e : old)
+      by_id[fill[e.key >> 32]++] = e;
+  }
 
   // 2b. Every few rebuilds, reorder particles along the cell grid so that neighbours are
   //     neighbours in memory (histories are keyed by id, so nothing is lost).
@@ -134,6 +145,15 @@ void System::rebuild() {
   neighbors_.build(p, skin_);
   const std::size_t np = neighbors_.n_pairs();
   pair_history_.assign(np, {});
+  pair_const_.resize(np);
+#pragma omp parallel for schedule(static)
+  for (std::size_t k = 0; k < np; ++k) {
+    const std::uint32_t i = neighbors_.pair_i[k], j = neighbors_.pair_j[k];
+    const double rs = p.radius[i] + p.radius[j];
+    pair_const_[k] = {rs, p.radius[i] * p.radius[j] / rs,
+                      p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]),
+                      p.material[i] * n_mat_ + p.material[j]};
+  }
   if (!old.empty()) {
 #pragma omp parallel for schedule(static)
     for (std::size_t k = 0; k < np; ++k) {
@@ -142,10 +162,12 @@ void System::rebuild() {
       const std::uint32_t b = ghost ? ghost_owner_[j - n] : j;
       const auto id_i = std::uint64_t(p.id[i]), id_b = std::uint64_t(p.id[b]);
       const std::uint64_t key = (std::min(id_i, id_b) << 32) | std::max(id_i, id_b);
-      const auto it = std::lower_bound(old.begin(), old.end(), key,
-                                       [](const Entry& e, std::uint64_t v) { return e.key < v; });
-      if (it != old.end() && it->key == key)
-        pair_history_[k] = ghost && id_b < id_i ? rotate_z(it->h, c, -s) : it->h;
+      const std::size_t lower = std::min(id_i, id_b);
+      for (auto q = bucket[lower]; q < bucket[lower + 1]; ++q)
+        if (by_id[q].key == key) {
+          pair_history_[k] = ghost && id_b < id_i ? rotate_z(by_id[q].h, c, -s) : by_id[q].h;
+          break;
+        }
     }
   }
   // 6. Wall candidates: faces within radius + skin of each particle centre.
@@ -261,33 +283,35 @@ void System::pair_forces() {
     else
       for (std::size_t i = 0; i < n; ++i)
         F[i] = T[i] = {};
-#pragma omp for schedule(static) nowait
+        // Interleaved chunks: the denser bottom of a bed is shared by all threads.
+#pragma omp for schedule(static, 512) nowait
     for (std::size_t k = 0; k < np; ++k) {
       const std::uint32_t i = pi[k], j = pj[k];
+      const PairConstants& pc = pair_const_[k];
       const Vec3 d = p.position[i] - p.position[j];
-      const double dist2 = meshes::norm2(d), rs = p.radius[i] + p.radius[j];
+      const double dist2 = meshes::norm2(d), rs = pc.r_sum;
       if (dist2 >= rs * rs) {
-        pair_history_[k] = {};
+        if (pair_history_[k].x != 0 || pair_history_[k].y != 0 || pair_history_[k].z != 0)
+          pair_history_[k] = {};
         continue;
       }
       ++n_contacts;
       const double dist = std::sqrt(dist2);
       ContactGeometry g;
-      g.normal = d / dist;
+      g.normal = d * (1.0 / dist);
       g.overlap = rs - dist;
-      g.r_eff = p.radius[i] * p.radius[j] / rs;
-      g.m_eff = p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]);
+      g.r_eff = pc.r_eff;
+      g.m_eff = pc.m_eff;
       g.arm_i = p.radius[i] - 0.5 * g.overlap;
       g.arm_j = p.radius[j] - 0.5 * g.overlap;
       g.lever_i = p.radius[i];
       g.lever_j = p.radius[j];
-      g.v_contact = p.velocity[i] - p.velocity[j] -
-                    meshes::cross(p.angular_velocity[i] * g.lever_i +
-                                      p.angular_velocity[j] * g.lever_j,
-                                  g.normal);
+      g.v_contact =
+          p.velocity[i] - p.velocity[j] -
+          meshes::cross(p.angular_velocity[i] * g.lever_i + p.angular_velocity[j] * g.lever_j,
+                        g.normal);
       g.w_relative = p.angular_velocity[i] - p.angular_velocity[j];
-      const auto r = hertz_mindlin(contact_[p.material[i] * n_mat_ + p.material[j]], g, dt_,
-                                   pair_history_[k]);
+      const auto r = hertz_mindlin(contact_[pc.type], g, dt_, pair_history_[k]);
       F[i] += r.force;
       T[i] += r.torque_i;
       if (j < n) {
@@ -328,7 +352,7 @@ void System::wall_forces() {
     // Only particles near a wall, split evenly: the bottom layer would otherwise all fall to
     // one thread.
     const std::size_t n_wall = wall_particles_.size();
-#pragma omp for schedule(static)
+#pragma omp for schedule(static, 64)
     for (std::size_t q = 0; q < n_wall; ++q) {
       const std::size_t i = wall_particles_[q];
       const auto b = wall_candidate_offset_[i], e = wall_candidate_offset_[i + 1];

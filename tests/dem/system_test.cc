@@ -246,3 +246,32 @@ TEST_CASE("bad input stops with a message naming the problem", "[dem][errors]") 
   CHECK_THROWS_WITH(SizeDistribution({{2e-3, 3e-3}, {0.5, 0.4}, 1}).validate(),
                     Catch::Contains("sum to"));
 }
+
+TEST_CASE("filling to a bed height from a PSD, then settling", "[dem][filling]") {
+  System s;
+  const int g = add_gravel(s, 0.5, 0.5, 0.1);
+  const double L = 0.06;
+  s.add_wall(MeshWall(box_walls(L), g, {}, false, "box"));
+  // The reference three-bin PSD at s = 3: 6, 7.95, 10.05 mm.
+  SizeDistribution psd{{2.0e-3, 2.65e-3, 3.35e-3}, {0.25, 0.5, 0.25}, 3.0};
+  const auto report = fill_to_height(
+      s,
+      [&](double z_top) {
+        return box_region({0, 0, 0}, {L, L, std::min(z_top, L)}, 5.1e-3);
+      },
+      L * L, 0.0, 0.025, psd, 2650, g, 3);
+  INFO("n " << report.n_particles << ", bed height " << report.bed_height << " m, packing "
+            << report.packing_fraction << ", settled after " << report.settle_time << " s");
+  CHECK(report.n_particles > 100);
+  CHECK(report.bed_height == Approx(0.025).epsilon(0.2));
+  CHECK(report.packing_fraction > 0.45); // random packings of spheres: about 0.55 to 0.64
+  CHECK(report.packing_fraction < 0.68);
+  // No particle overlaps another by more than 2 % of its radius after settling.
+  const auto& p = s.particles;
+  double worst = 0;
+  for (std::size_t i = 0; i < p.n_real; ++i)
+    for (std::size_t j = i + 1; j < p.n_real; ++j)
+      worst = std::max(worst, (p.radius[i] + p.radius[j] - norm(p.position[i] - p.position[j])) /
+                                  std::min(p.radius[i], p.radius[j]));
+  CHECK(worst < 0.02);
+}
