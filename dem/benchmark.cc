@@ -15,6 +15,18 @@ namespace {
 constexpr double pi = 3.14159265358979323846;
 constexpr double d0 = 7.95e-3, ri = 0.29, ro = 0.50;
 
+// Lattice sites of one layer inside the full annulus, as gen_meshes.py counts them.
+int lattice_sites_per_layer(double a) {
+  int layer = 0;
+  const int m = int(ro / a) + 2;
+  for (int i = -m; i < m; ++i)
+    for (int j = -m; j < m; ++j) {
+      const double r = std::hypot((i + 0.5) * a, (j + 0.5) * a);
+      layer += (ri + 0.6 * a < r && r < ro - 0.6 * a);
+    }
+  return layer;
+}
+
 meshes::SurfaceMesh plate(double theta, double r0, double r1, double z0, double z1, int n) {
   // Vertical plate in the radial-vertical plane at angle theta (normal along the flow),
   // n x n quads split in two: 2 n^2 triangles.
@@ -50,13 +62,7 @@ void build_benchmark(System& s, const std::string& workload) {
   t.outer_radius = ro;
   t.consolidator = false;
   if (workload == "annulus") {
-    int layer = 0;
-    const int m = int(ro / a) + 2;
-    for (int i = -m; i < m; ++i)
-      for (int j = -m; j < m; ++j) {
-        const double r = std::hypot((i + 0.5) * a, (j + 0.5) * a);
-        layer += (ri + 0.6 * a < r && r < ro - 0.6 * a);
-      }
+    const int layer = lattice_sites_per_layer(a);
     const int nz = std::max(1, int(std::lround(45000.0 / layer)));
     t.sector_angle_deg = 360;
     t.wall_height = 0.12;
@@ -85,17 +91,7 @@ void build_benchmark(System& s, const std::string& workload) {
   // 14 layers as the anchor's channels; angle from the lattice sites per layer and radian.
   const int nz = 14;
   const double z_top = nz * a;
-  double per_rad = 0;
-  {
-    int layer = 0;
-    const int m = int(ro / a) + 2;
-    for (int i = -m; i < m; ++i)
-      for (int j = -m; j < m; ++j) {
-        const double r = std::hypot((i + 0.5) * a, (j + 0.5) * a);
-        layer += (ri + 0.6 * a < r && r < ro - 0.6 * a);
-      }
-    per_rad = layer / (2 * pi);
-  }
+  const double per_rad = lattice_sites_per_layer(a) / (2 * pi);
   const double angle = std::min(2 * pi * 0.9, double(target) / (nz * per_rad));
   t.sector_angle_deg = angle * 180 / pi;
   t.wall_height = 0.2;
