@@ -4,6 +4,7 @@
 #include "dem/benchmark.h"
 
 #include "dem/filling.h"
+#include "meshes/structured_grid.h"
 #include "meshes/tester_walls.h"
 
 #include <cmath>
@@ -30,21 +31,14 @@ int lattice_sites_per_layer(double a) {
 meshes::SurfaceMesh plate(double theta, double r0, double r1, double z0, double z1, int n) {
   // Vertical plate in the radial-vertical plane at angle theta (normal along the flow),
   // n x n quads split in two: 2 n^2 triangles.
-  meshes::SurfaceMesh m;
   const double c = std::cos(theta), s = std::sin(theta);
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) {
-      const double r = r0 + (r1 - r0) * i / n, z = z0 + (z1 - z0) * j / n;
-      m.vertices.push_back({r * c, r * s, z});
-    }
-  const auto id = [&](int i, int j) { return std::uint32_t(j * (n + 1) + i); };
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-      m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-    }
-  m.face_labels.assign(m.triangles.size(), meshes::label::wall);
-  return m;
+  return meshes::structured_grid(
+      n, n,
+      [=](double u, double v) {
+        const double r = r0 + (r1 - r0) * u;
+        return Vec3{r * c, r * s, z0 + (z1 - z0) * v};
+      },
+      false, meshes::label::wall, meshes::Diagonals::uniform);
 }
 } // namespace
 

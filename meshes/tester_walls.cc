@@ -4,6 +4,8 @@
 // analytic surfaces and the sector's cut planes at theta = 0 and theta = Theta.
 #include "meshes/tester_walls.h"
 
+#include "meshes/structured_grid.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -15,31 +17,6 @@ int divisions(double length, double size) {
   return std::max(1, static_cast<int>(std::ceil(length / size - 1e-9)));
 }
 
-// Structured triangulation of a patch (u, v) in [0,1]^2 -> point with n_u x n_v quads, each
-// split along alternating diagonals so the wall has no directional bias.
-template <typename Map>
-SurfaceMesh structured_patch(int n_u, int n_v, Map&& point, bool flip, int label_id) {
-  SurfaceMesh m;
-  for (int j = 0; j <= n_v; ++j)
-    for (int i = 0; i <= n_u; ++i)
-      m.vertices.push_back(point(double(i) / n_u, double(j) / n_v));
-  const auto id = [&](int i, int j) { return static_cast<std::uint32_t>(j * (n_u + 1) + i); };
-  const auto add = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-    m.triangles.push_back(flip ? Triangle{a, c, b} : Triangle{a, b, c});
-    m.face_labels.push_back(label_id);
-  };
-  for (int j = 0; j < n_v; ++j)
-    for (int i = 0; i < n_u; ++i) {
-      if ((i + j) % 2 == 0) {
-        add(id(i, j), id(i + 1, j), id(i + 1, j + 1));
-        add(id(i, j), id(i + 1, j + 1), id(i, j + 1));
-      } else {
-        add(id(i, j), id(i + 1, j), id(i, j + 1));
-        add(id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
-      }
-    }
-  return m;
-}
 } // namespace
 
 TesterWalls generate_tester_walls(const TesterGeometry& t) {
@@ -48,7 +25,7 @@ TesterWalls generate_tester_walls(const TesterGeometry& t) {
   const int n_th = divisions(ro * Th, h), n_r = divisions(ro - ri, h), n_z = divisions(H, h);
   TesterWalls w;
   // (u, v) = (radius, angle): d/du x d/dv points along +z, the floor's normal.
-  w.floor = structured_patch(
+  w.floor = structured_grid(
       n_r, n_th,
       [&](double u, double v) {
         const double r = ri + u * (ro - ri), th = v * Th;
@@ -57,7 +34,7 @@ TesterWalls generate_tester_walls(const TesterGeometry& t) {
       false, label::wall);
   // (u, v) = (angle, height): d/du x d/dv = e_theta x e_z = +e_r.
   const auto cylinder = [&](double r, bool flip) {
-    return structured_patch(
+    return structured_grid(
         n_th, n_z,
         [&](double u, double v) {
           const double th = u * Th;
@@ -70,7 +47,7 @@ TesterWalls generate_tester_walls(const TesterGeometry& t) {
   if (t.consolidator) {
     const double e = t.consolidator_extent_deg * pi / 180;
     const double th0 = t.consolidator_angle_deg * pi / 180 - e / 2;
-    w.consolidator = structured_patch(
+    w.consolidator = structured_grid(
         n_r, divisions(ro * e, h),
         [&](double u, double v) {
           const double r = ri + u * (ro - ri), th = th0 + v * e;

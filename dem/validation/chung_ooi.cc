@@ -10,6 +10,7 @@
 #include "dem/validation/chung_ooi.h"
 
 #include "dem/system.h"
+#include "meshes/structured_grid.h"
 
 #include <cmath>
 
@@ -22,19 +23,12 @@ using meshes::dot;
 using meshes::norm;
 
 meshes::SurfaceMesh plane_mesh(double half) {
-  meshes::SurfaceMesh m;
-  const int n = 4;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i)
-      m.vertices.push_back({-half + 2 * half * i / n, -half + 2 * half * j / n, 0});
-  const auto id = [&](int i, int j) { return std::uint32_t(j * (n + 1) + i); };
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-      m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-    }
-  m.face_labels.assign(m.triangles.size(), meshes::label::wall);
-  return m;
+  return meshes::structured_grid(
+      4, 4,
+      [half](double u, double v) {
+        return Vec3{-half + 2 * half * u, -half + 2 * half * v, 0};
+      },
+      false, meshes::label::wall, meshes::Diagonals::uniform);
 }
 
 struct Tracker {
@@ -54,6 +48,30 @@ struct Tracker {
   bool done() const { return t_end >= 0; }
 };
 
+// No gravity, dt = 1 % of the Rayleigh time, a speed limit above Test 5's 70 m/s.
+void configure(System& s, RestitutionMapping mapping) {
+  s.settings.gravity = {};
+  s.settings.time_step_fraction = 0.01;
+  s.settings.max_speed = 1000;
+  s.materials.set_restitution_mapping(mapping);
+}
+
+void set_all_pairs(System& s, int a, int b, const PairProperties& pp) {
+  s.materials.set_pair(a, a, pp);
+  s.materials.set_pair(a, b, pp);
+  s.materials.set_pair(b, b, pp);
+}
+
+ImpactResult result(const System& s, const Tracker& tr) {
+  ImpactResult res;
+  res.contact_time = tr.t_end - tr.t_start;
+  res.max_overlap = tr.max_overlap;
+  res.max_force = tr.max_force;
+  res.v_after = s.particles.velocity[0];
+  res.w_after = s.particles.angular_velocity[0];
+  return res;
+}
+
 int add_material(System& s, const ImpactMaterial& m, const std::string& name) {
   return s.materials.add({name, m.youngs_modulus, m.poisson_ratio, m.density});
 }
@@ -63,17 +81,11 @@ ImpactResult sphere_on_plane(const ImpactMaterial& m, double r, const Vec3& v, c
                              double restitution, double friction, bool rigid_plane, PlaneSpot spot,
                              RestitutionMapping mapping) {
   System s;
-  s.settings.gravity = {};
-  s.settings.time_step_fraction = 0.01;
-  s.settings.max_speed = 1000; // Test 5 slides at up to 70 m/s
-  s.materials.set_restitution_mapping(mapping);
+  configure(s, mapping);
   const int mp = add_material(s, m, "sphere");
   const int mw = rigid_plane ? s.materials.add({"rigid", INFINITY, m.poisson_ratio, m.density})
                              : add_material(s, m, "plane");
-  const PairProperties pp{restitution, friction, 0.0};
-  s.materials.set_pair(mp, mp, pp);
-  s.materials.set_pair(mp, mw, pp);
-  s.materials.set_pair(mw, mw, pp);
+  set_all_pairs(s, mp, mw, {restitution, friction, 0.0});
   const double half = 4 * r;
   s.add_wall(MeshWall(plane_mesh(half), mw, {}, false, "plane"));
   Vec3 target{-half / 4 - half / 8, half / 16, 0}; // inside a triangle, off every edge
@@ -93,12 +105,7 @@ ImpactResult sphere_on_plane(const ImpactMaterial& m, double r, const Vec3& v, c
     s.step();
     tr.sample(s.time(), r - s.particles.position[0].z, s.particles.force[0].z);
   }
-  ImpactResult res;
-  res.contact_time = tr.t_end - tr.t_start;
-  res.max_overlap = tr.max_overlap;
-  res.max_force = tr.max_force;
-  res.v_after = s.particles.velocity[0];
-  res.w_after = s.particles.angular_velocity[0];
+  ImpactResult res = result(s, tr);
   res.radius = r;
   return res;
 }
@@ -107,15 +114,9 @@ ImpactResult sphere_on_sphere(const ImpactMaterial& m1, double r1, const Vec3& v
                               const ImpactMaterial& m2, double r2, const Vec3& v2, const Vec3& w2,
                               double restitution, double friction, RestitutionMapping mapping) {
   System s;
-  s.settings.gravity = {};
-  s.settings.time_step_fraction = 0.01;
-  s.settings.max_speed = 1000; // Test 5 slides at up to 70 m/s
-  s.materials.set_restitution_mapping(mapping);
+  configure(s, mapping);
   const int a = add_material(s, m1, "sphere 1"), b = add_material(s, m2, "sphere 2");
-  const PairProperties pp{restitution, friction, 0.0};
-  s.materials.set_pair(a, a, pp);
-  s.materials.set_pair(a, b, pp);
-  s.materials.set_pair(b, b, pp);
+  set_all_pairs(s, a, b, {restitution, friction, 0.0});
   s.particles.add({-r1, 0, 0}, v1, r1, m1.density, a);
   s.particles.add({r2, 0, 0}, v2, r2, m2.density, b);
   const double dt = 0.01 * s.rayleigh_time();
@@ -130,12 +131,7 @@ ImpactResult sphere_on_sphere(const ImpactMaterial& m1, double r1, const Vec3& v
     const Vec3 d = s.particles.position[1] - s.particles.position[0];
     tr.sample(s.time(), r1 + r2 - norm(d), -dot(s.particles.force[0], d / norm(d)));
   }
-  ImpactResult res;
-  res.contact_time = tr.t_end - tr.t_start;
-  res.max_overlap = tr.max_overlap;
-  res.max_force = tr.max_force;
-  res.v_after = s.particles.velocity[0];
-  res.w_after = s.particles.angular_velocity[0];
+  ImpactResult res = result(s, tr);
   res.v2_after = s.particles.velocity[1];
   res.w2_after = s.particles.angular_velocity[1];
   res.radius = r1;

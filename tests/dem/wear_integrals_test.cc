@@ -1,5 +1,6 @@
 // Wearing walls: per-face integrals sum to the per-contact totals, and the Archard
 // load-distance of a particle held on a moving face equals F_n |v_t| t.
+#include "meshes/structured_grid.h"
 #include "tests/dem/dem_fixtures.h"
 
 #include <catch2/catch.hpp>
@@ -11,18 +12,12 @@ using wear::meshes::Vec3;
 namespace {
 // Flat square [-L, L]^2 at z = 0 with n x n quads.
 wear::meshes::SurfaceMesh flat(double L, int n) {
-  wear::meshes::SurfaceMesh m;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i)
-      m.vertices.push_back({-L + 2 * L * i / n, -L + 2 * L * j / n, 0});
-  const auto id = [&](int i, int j) { return std::uint32_t(j * (n + 1) + i); };
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-      m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-    }
-  m.face_labels.assign(m.triangles.size(), wear::meshes::label::base);
-  return m;
+  return wear::meshes::structured_grid(
+      n, n,
+      [L](double u, double v) {
+        return Vec3{-L + 2 * L * u, -L + 2 * L * v, 0};
+      },
+      false, wear::meshes::label::base, wear::meshes::Diagonals::uniform);
 }
 } // namespace
 
