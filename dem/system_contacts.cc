@@ -183,11 +183,18 @@ void System::rebuild() {
           emit(std::uint32_t(w << 24) | *b);
     }
   };
-#pragma omp parallel for schedule(dynamic, 256)
-  for (std::size_t i = 0; i < n; ++i) {
-    std::uint32_t m = 0;
-    scan(i, [&](std::uint32_t) { ++m; });
-    count[i] = m;
+  // One pass: each thread scans a contiguous range into its own buffer; concatenated in
+  // thread order, the buffers give the serial order.
+  std::vector<std::vector<std::uint32_t>> found(n_threads_);
+#pragma omp parallel num_threads(n_threads_)
+  {
+    auto& mine = found[omp_get_thread_num()];
+#pragma omp for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t before = mine.size();
+      scan(i, [&](std::uint32_t v) { mine.push_back(v); });
+      count[i] = std::uint32_t(mine.size() - before);
+    }
   }
   wall_particles_.clear();
   for (std::size_t i = 0; i < n; ++i) {
@@ -205,12 +212,9 @@ void System::rebuild() {
     }
     slots_.swap(slots);
   }
-  wall_candidate_.resize(wall_candidate_offset_[n]);
-#pragma omp parallel for schedule(dynamic, 256)
-  for (std::size_t i = 0; i < n; ++i) {
-    std::uint32_t at = wall_candidate_offset_[i];
-    scan(i, [&](std::uint32_t v) { wall_candidate_[at++] = v; });
-  }
+  wall_candidate_.clear();
+  for (const auto& f : found)
+    wall_candidate_.insert(wall_candidate_.end(), f.begin(), f.end());
   reference_position_.assign(p.position.begin(), p.position.begin() + n);
   ++n_rebuilds_;
 }
@@ -343,7 +347,6 @@ void System::wall_forces() {
   if (walls_.empty())
     return;
   auto& p = particles;
-  const std::size_t n = p.n_real;
   const double dt = dt_;
 #pragma omp parallel num_threads(n_threads_)
   {
