@@ -8,9 +8,12 @@
 
 #include "meshes/atomic_file.h"
 
+#include <deal.II/base/utilities.h>
+
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
 
 namespace wear::coupling {
 
@@ -21,7 +24,60 @@ namespace {
 
 // One table drives declaration, parsing and write-back, so the three never disagree.
 template <typename Visitor>
-void visit(meshes::GeometryParameters& g, OutputParameters& o, Visitor&& v) {
+void visit_dem(dem::TesterDemParameters& d, Visitor&& v) {
+  v.enter("DEM");
+  const auto material = [&](const std::string& which, dem::DemMaterial& m) {
+    v.real(which + " shear modulus", m.shear_modulus,
+           "[Pa] Shear modulus of the " + which + " in the contact law (DEM stiffness).");
+    v.real(which + " Poisson ratio", m.poisson_ratio, "[-] Poisson ratio of the " + which + ".");
+    v.real(which + " density", m.density, "[kg/m^3] Solid density of the " + which + ".");
+  };
+  material("Particle", d.particle);
+  material("Sample", d.sample);
+  material("Wall", d.walls);
+  const auto pair = [&](const std::string& which, dem::PairProperties& p) {
+    v.real("Restitution " + which, p.restitution,
+           "[-] Normal coefficient of restitution, " + which + ".");
+    v.real("Friction " + which, p.friction, "[-] Static friction coefficient, " + which + ".");
+    v.real("Rolling friction " + which, p.rolling_friction,
+           "[-] Rolling friction coefficient (constant directional torque), " + which + ".");
+  };
+  pair("particle-particle", d.particle_particle);
+  pair("particle-wall", d.particle_wall);
+  v.real_list("PSD diameters", d.psd.diameters,
+              "[m] Diameter bins of the particle size distribution at scaling factor 1.");
+  v.real_list("PSD mass fractions", d.psd.mass_fractions, "[-] Mass fraction of each bin.");
+  v.real("Scaling factor", d.psd.scaling_factor,
+         "[-] Particle scaling factor s: multiplies every diameter (1 to 4).");
+  v.real("Fill height", d.fill_height, "[m] Settled bed height above the floor.");
+  v.real("Loose factor", d.loose_factor,
+         "[-] Height of the insertion region over the fill height (random loose insertion).");
+  v.real("Assumed packing", d.assumed_packing,
+         "[-] Settled solid fraction used to count the particles for the fill height.");
+  v.real("Settle time", d.settle_time, "[s] Longest settling with the walls at rest.");
+  v.real("Rotation rate", d.rotation_rate_deg, "[deg/s] Rotation of the floor and cylinders.");
+  v.real("Time step fraction", d.time_step_fraction,
+         "[-] Time step as a fraction of the Rayleigh time of the smallest particle (<= 0.4).");
+  v.real("Maximum speed", d.max_speed, "[m/s] A faster particle stops the run with a report.");
+  v.count("Seed", d.seed, "Random seed of the insertion.");
+  v.integer("Threads", d.n_threads, 0, 1024, "OpenMP threads; 0 uses all cores.");
+  v.integer("Revolutions", d.revolutions, 1, 100000,
+            "Revolutions to run (one revolution = one pass of the bed through the sector).");
+  v.integer("Samples per revolution", d.samples_per_revolution, 2, 100000,
+            "Evaluation samples per revolution (forces, speeds, bed height, wear rate).");
+  v.real("Steady threshold", d.steady_threshold,
+         "[-] Coefficient of variation below which a revolution counts as steady.");
+  v.integer("Steady revolutions", d.steady_revolutions, 1, 1000,
+            "Consecutive steady revolutions that judge the run steady.");
+  v.int_list("Snapshot revolutions", d.snapshot_revolutions,
+             "Revolutions after which particle snapshots are written (the last always is).");
+  v.leave();
+}
+
+template <typename Visitor>
+void visit(CaseParameters& c, Visitor&& v) {
+  auto& g = c.geometry;
+  auto& o = c.output;
   auto& s = g.sample;
   auto& p = s.pattern;
   v.enter("Geometry");
@@ -83,6 +139,31 @@ void visit(meshes::GeometryParameters& g, OutputParameters& o, Visitor&& v) {
     v.leave();
   }
   v.leave();
+  visit_dem(c.dem, v);
+  v.enter("Wear law");
+  {
+    std::string doc = "Wear law by name:";
+    std::string names;
+    for (const auto& l : dem::wear_law_catalogue()) {
+      doc += "\n  " + l.name + ": " + l.description;
+      names += (names.empty() ? "" : "|") + l.name;
+    }
+    v.selection("Model", c.wear_law.model, names, doc);
+    v.real("Archard coefficient", c.wear_law.archard_coefficient,
+           "[1/Pa] alpha = k/H of the Archard law.");
+    v.real("Work coefficient", c.wear_law.work_coefficient,
+           "[m^3/J] Volume removed per frictional work (frictional-work law).");
+  }
+  v.leave();
+  v.enter("Deformation");
+  v.boolean("Reference method", c.deformation.enabled,
+            "Move the sample's surface nodes inside the DEM by the local wear depth (the "
+            "reference study's method); valid until the surface distorts.");
+  v.count("Update interval", c.deformation.update_interval,
+          "[steps] Node moves happen every this many DEM steps.");
+  v.real("Amplification", c.deformation.amplification,
+         "[-] Declared factor on the removed volume applied to the nodes (1: physical).");
+  v.leave();
   v.enter("Output");
   v.text("Directory", o.directory, "Results folder; created if missing.");
   v.leave();
@@ -93,6 +174,18 @@ std::string to_text(double x) {
   s.precision(17);
   s << x;
   return s.str();
+}
+
+template <typename T>
+std::string join(const std::vector<T>& x) {
+  std::string s;
+  for (const auto& v : x) {
+    if constexpr (std::is_floating_point_v<T>)
+      s += (s.empty() ? "" : ", ") + to_text(v);
+    else
+      s += (s.empty() ? "" : ", ") + std::to_string(v);
+  }
+  return s;
 }
 
 struct Declare {
@@ -115,6 +208,19 @@ struct Declare {
   void text(const std::string& n, std::string& x, const std::string& doc) {
     prm.declare_entry(n, x, Patterns::Anything(), doc);
   }
+  void selection(const std::string& n, std::string& x, const std::string& options,
+                 const std::string& doc) {
+    prm.declare_entry(n, x, Patterns::Selection(options), doc);
+  }
+  void count(const std::string& n, std::uint64_t& x, const std::string& doc) {
+    prm.declare_entry(n, std::to_string(x), Patterns::Integer(0), doc);
+  }
+  void real_list(const std::string& n, std::vector<double>& x, const std::string& doc) {
+    prm.declare_entry(n, join(x), Patterns::List(Patterns::Double()), doc);
+  }
+  void int_list(const std::string& n, std::vector<int>& x, const std::string& doc) {
+    prm.declare_entry(n, join(x), Patterns::List(Patterns::Integer(0)), doc);
+  }
 };
 
 struct Parse {
@@ -131,6 +237,18 @@ struct Parse {
     x = prm.get(n) == yes;
   }
   void text(const std::string& n, std::string& x, const std::string&) { x = prm.get(n); }
+  void selection(const std::string& n, std::string& x, const std::string&, const std::string&) {
+    x = prm.get(n);
+  }
+  void count(const std::string& n, std::uint64_t& x, const std::string&) {
+    x = static_cast<std::uint64_t>(prm.get_integer(n));
+  }
+  void real_list(const std::string& n, std::vector<double>& x, const std::string&) {
+    x = dealii::Utilities::string_to_double(dealii::Utilities::split_string_list(prm.get(n)));
+  }
+  void int_list(const std::string& n, std::vector<int>& x, const std::string&) {
+    x = dealii::Utilities::string_to_int(dealii::Utilities::split_string_list(prm.get(n)));
+  }
 };
 
 struct Store {
@@ -147,6 +265,18 @@ struct Store {
     prm.set(n, x ? yes : no);
   }
   void text(const std::string& n, std::string& x, const std::string&) { prm.set(n, x); }
+  void selection(const std::string& n, std::string& x, const std::string&, const std::string&) {
+    prm.set(n, x);
+  }
+  void count(const std::string& n, std::uint64_t& x, const std::string&) {
+    prm.set(n, static_cast<long int>(x));
+  }
+  void real_list(const std::string& n, std::vector<double>& x, const std::string&) {
+    prm.set(n, join(x));
+  }
+  void int_list(const std::string& n, std::vector<int>& x, const std::string&) {
+    prm.set(n, join(x));
+  }
 };
 
 // deal.II's exception text is long; keep the part that says what is wrong.
@@ -169,7 +299,7 @@ std::string short_message(const std::exception& e) {
 
 void declare_parameters(ParameterHandler& prm) {
   CaseParameters defaults;
-  visit(defaults.geometry, defaults.output, Declare{prm});
+  visit(defaults, Declare{prm});
 }
 
 CaseParameters read_case(const std::string& path) {
@@ -184,9 +314,11 @@ CaseParameters read_case(const std::string& path) {
   }
   CaseParameters p;
   p.case_file = path;
-  visit(p.geometry, p.output, Parse{prm});
+  visit(p, Parse{prm});
   try {
     meshes::validate(p.geometry);
+    dem::validate(p.dem);
+    dem::make_wear_law(p.wear_law);
   } catch (const std::invalid_argument& e) {
     throw std::runtime_error("case file '" + path + "': " + e.what());
   }
@@ -197,7 +329,7 @@ void write_resolved_parameters(const CaseParameters& p, const std::string& path)
   ParameterHandler prm;
   declare_parameters(prm);
   CaseParameters copy = p;
-  visit(copy.geometry, copy.output, Store{prm});
+  visit(copy, Store{prm});
   meshes::write_atomically(path, [&](std::ostream& out) {
     out << "# Fully resolved parameters";
     if (!p.case_file.empty())

@@ -1,6 +1,9 @@
 #pragma once
 // The case file: a deal.II ParameterHandler `.prm` with one subsection per concern. Each
 // subsection fills a plain struct owned by its module (meshes/ has no deal.II dependency).
+#include "dem/reference_deformation.h"
+#include "dem/wear_law.h"
+#include "dem/wear_tester.h"
 #include "meshes/geometry_parameters.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -15,6 +18,9 @@ struct OutputParameters {
 
 struct CaseParameters {
   meshes::GeometryParameters geometry;
+  dem::TesterDemParameters dem;
+  dem::WearLawParameters wear_law;
+  dem::ReferenceDeformationParameters deformation;
   OutputParameters output;
   std::string case_file; ///< path the parameters were read from ("" for defaults)
 };

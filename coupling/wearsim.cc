@@ -2,6 +2,7 @@
 // error reaches the user as one message naming the file or parameter, with exit code 1.
 #include "coupling/bench_command.h"
 #include "coupling/case_parameters.h"
+#include "coupling/dem_command.h"
 #include "coupling/mesh_command.h"
 
 #include <cstring>
@@ -15,6 +16,8 @@ void usage(std::ostream& out) {
   out << "usage: wearsim <command> [arguments]\n\n"
          "commands:\n"
          "  mesh <case.prm>          generate the sample (.msh/.stl/.vtu) and the tester walls\n"
+         "  dem <case.prm>           the wear tester in DEM: fill, settle, revolutions with wear\n"
+         "                           evaluations; writes history.h5/.xdmf and summary.csv\n"
          "  bench dem [--workload annulus|sector5k|sector20k|sector45k|sample45k]\n"
          "            [--threads N[,M..]] [--settle N] [--warm N] [--steps N] [--repeats N]\n"
          "                           DEM benchmark; last line: particle_steps_per_second <value>\n"
@@ -46,6 +49,14 @@ int main(int argc, char** argv) {
         return 2;
       }
       run_mesh_command(read_case(argv[2]), std::cout);
+      return 0;
+    }
+    if (cmd == "dem") {
+      if (argc != 3) {
+        std::cerr << "wearsim dem: expected one case file\n";
+        return 2;
+      }
+      run_dem_command(read_case(argv[2]), std::cout);
       return 0;
     }
     if (cmd == "bench")

@@ -95,16 +95,7 @@ void build_benchmark(System& s, const std::string& workload) {
   const double margin = 0.02;
   const auto w = meshes::generate_tester_walls(t);
   const auto extend = [&](const meshes::SurfaceMesh& mesh) {
-    // Rotate the vertices so the mesh spans [-margin, angle + margin].
-    meshes::SurfaceMesh e = mesh;
-    const double scale = (angle + 2 * margin) / angle;
-    for (auto& v : e.vertices) {
-      const double r = std::hypot(v.x, v.y), th = std::atan2(v.y, v.x);
-      const double th_full = th < -1e-12 ? th + 2 * pi : th;
-      const double th2 = th_full * scale - margin;
-      v = {r * std::cos(th2), r * std::sin(th2), v.z};
-    }
-    return e;
+    return meshes::widen_sector(mesh, angle, margin);
   };
   s.add_wall(MeshWall(extend(w.floor), g, rotating, false, "floor"));
   s.add_wall(MeshWall(extend(w.inner), g, rotating, false, "inner"));

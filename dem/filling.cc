@@ -84,7 +84,7 @@ std::size_t insert_random(Particles& p, const FillRegion& region, const SizeDist
   psd.validate();
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> ux(region.lo.x, region.hi.x), uy(region.lo.y, region.hi.y),
-      uz(region.lo.z, region.hi.z), u01(0, 1);
+      uz(region.lo.z, region.hi.z);
   const auto frac = psd.number_fractions();
   const double cell = psd.max_diameter();
   struct Key {
@@ -104,17 +104,25 @@ std::size_t insert_random(Particles& p, const FillRegion& region, const SizeDist
   };
   for (std::uint32_t i = 0; i < p.n_real; ++i)
     grid[key(p.position[i])].push_back(i);
+  // The diameters are fixed before placing (counts from the number fractions, in a
+  // random order): redrawing a diameter after a failed placement would
+  // favour small particles and skew the size distribution.
+  std::vector<double> diameters;
+  diameters.reserve(n);
+  {
+    double carried = 0;
+    for (std::size_t k = 0; k < frac.size(); ++k) {
+      const double exact = frac[k] * double(n) + carried;
+      const auto count = static_cast<std::size_t>(std::llround(exact));
+      carried = exact - double(count);
+      diameters.insert(diameters.end(), std::min(count, n - diameters.size()), psd.diameters[k]);
+    }
+    diameters.resize(n, psd.diameters.back());
+    std::shuffle(diameters.begin(), diameters.end(), rng);
+  }
   std::size_t added = 0, fails = 0;
   while (added < n && fails < max_attempts) {
-    double u = u01(rng), d = psd.diameters.back();
-    for (std::size_t k = 0; k < frac.size(); ++k) {
-      if (u < frac[k]) {
-        d = psd.diameters[k];
-        break;
-      }
-      u -= frac[k];
-    }
-    const double r = 0.5 * d * psd.scaling_factor;
+    const double r = 0.5 * diameters[added] * psd.scaling_factor;
     const Vec3 x{ux(rng), uy(rng), uz(rng)};
     bool ok = region.inside(x);
     if (ok) {
@@ -179,7 +187,8 @@ FillReport fill_to_height(System& system, const std::function<FillRegion(double)
                           double area, double z_floor, double target_height,
                           const SizeDistribution& psd, double density, int material,
                           std::uint64_t seed, double loose_factor, double speed_tolerance,
-                          double max_time) {
+                          double max_time, const std::function<void(double)>& on_check,
+                          double packing) {
   psd.validate();
   if (!(target_height > 0))
     throw std::invalid_argument("DEM/Fill height must be positive");
@@ -188,7 +197,7 @@ FillReport fill_to_height(System& system, const std::function<FillRegion(double)
   for (std::size_t k = 0; k < frac.size(); ++k)
     mean_volume +=
         frac[k] * 3.14159265358979323846 / 6 * std::pow(psd.diameters[k] * psd.scaling_factor, 3);
-  const auto n = static_cast<std::size_t>(0.6 * area * target_height / mean_volume);
+  const auto n = static_cast<std::size_t>(packing * area * target_height / mean_volume);
   const FillRegion region = make_region(z_floor + loose_factor * target_height);
   const std::size_t got = insert_random(system.particles, region, psd, n, density, material, seed);
   if (got < n)
@@ -199,10 +208,18 @@ FillReport fill_to_height(System& system, const std::function<FillRegion(double)
   const double check_every = 0.02;
   while (system.time() < max_time) {
     system.run(std::max<std::uint64_t>(1, std::uint64_t(check_every / system.time_step())));
-    double v = 0;
-    for (std::size_t i = 0; i < system.particles.n_real; ++i)
-      v += meshes::norm(system.particles.velocity[i]);
-    if (v / double(system.particles.n_real) < speed_tolerance && system.time() > 0.1)
+    // Settled when the mean speed is below the tolerance and no particle is still falling
+    // (a few late arrivals barely move the mean).
+    double v = 0, v_max = 0;
+    for (std::size_t i = 0; i < system.particles.n_real; ++i) {
+      const double s = meshes::norm(system.particles.velocity[i]);
+      v += s;
+      v_max = std::max(v_max, s);
+    }
+    if (on_check)
+      on_check(system.time());
+    if (v / double(system.particles.n_real) < speed_tolerance && v_max < 10 * speed_tolerance &&
+        system.time() > 0.1)
       break;
   }
   const Particles& p = system.particles;

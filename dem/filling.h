@@ -57,16 +57,19 @@ struct FillReport {
 };
 
 /// Fills a region whose floor is z = z_floor up to about `target_height`: estimates the count
-/// from an assumed settled packing of 0.6, inserts at random (no overlaps) into a region
+/// from an assumed settled packing (`packing`), inserts at random (no overlaps) into a region
 /// `loose_factor` times taller, then runs `system` (already holding walls and materials, not
-/// yet set up) until the mean particle speed drops below `speed_tolerance` or `max_time`
-/// passes. `make_region(z_top)` gives the insertion region up to z_top;
-/// `horizontal_area` is the floor area [m^2]. Throws if the region cannot take the particles.
+/// yet set up) until the mean particle speed drops below `speed_tolerance` and the largest
+/// below ten times it, or `max_time`
+/// passes (`on_check(time)` after each check, for progress). `make_region(z_top)` gives the
+/// insertion region up to z_top; `horizontal_area` is the floor area [m^2]. Throws if the region
+/// cannot take the particles.
 FillReport fill_to_height(System& system, const std::function<FillRegion(double)>& make_region,
                           double horizontal_area, double z_floor, double target_height,
                           const SizeDistribution& psd, double density, int material,
                           std::uint64_t seed, double loose_factor = 2.0,
-                          double speed_tolerance = 0.01, double max_time = 2.0);
+                          double speed_tolerance = 0.01, double max_time = 2.0,
+                          const std::function<void(double)>& on_check = {}, double packing = 0.6);
 
 /// Solid fraction of the particles whose centres lie in z_lo..z_hi over a horizontal area.
 double packing_fraction(const Particles& p, double horizontal_area, double z_lo, double z_hi);

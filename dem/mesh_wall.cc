@@ -32,58 +32,96 @@ MeshWall::MeshWall(const meshes::SurfaceMesh& mesh, int material_id, const WallM
     throw std::invalid_argument("wall '" + name_ + "' has no triangles");
   omega_ = normalized(motion_.axis) * motion_.angular_velocity;
   const std::size_t nf = mesh_.n_faces();
-  corners_.resize(nf);
-  normal_.resize(nf);
-  for (std::size_t f = 0; f < nf; ++f) {
-    for (int k = 0; k < 3; ++k)
-      corners_[f][k] = mesh_.vertices[mesh_.triangles[f][k]];
-    const Vec3 n = meshes::face_normal_unnormalized(mesh_, f);
-    if (norm(n) == 0)
-      throw std::invalid_argument("wall '" + name_ + "': triangle " + std::to_string(f) +
-                                  " is degenerate (zero area)");
-    normal_[f] = normalized(n);
-  }
   // Edges.
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> edge_id;
   face_edge_.resize(nf);
-  inward_.resize(nf);
   for (std::uint32_t f = 0; f < nf; ++f)
     for (int k = 0; k < 3; ++k) {
       const auto a = mesh_.triangles[f][k], b = mesh_.triangles[f][(k + 1) % 3];
       const auto key = std::make_pair(std::min(a, b), std::max(a, b));
       auto [it, inserted] = edge_id.emplace(key, static_cast<std::uint32_t>(edge_face_.size()));
-      if (inserted)
+      if (inserted) {
         edge_face_.push_back({f, ~0u});
-      else if (edge_face_[it->second][1] == ~0u)
+        edge_vertex_.push_back({key.first, key.second});
+      } else if (edge_face_[it->second][1] == ~0u)
         edge_face_[it->second][1] = f;
       face_edge_[f][k] = it->second;
-      // In-plane normal of edge k pointing into the triangle.
-      const Vec3 e = corners_[f][(k + 1) % 3] - corners_[f][k];
-      inward_[f][k] = normalized(cross(normal_[f], e));
     }
-  // Vertices: first face, faces around, directions of edges leaving.
+  // Vertices: first face, faces around, edges leaving.
   const std::size_t nv = mesh_.n_vertices();
   vertex_first_face_.assign(nv, ~0u);
-  std::vector<std::vector<std::uint32_t>> vf(nv);
-  std::vector<std::vector<Vec3>> dirs(nv);
+  std::vector<std::vector<std::uint32_t>> vf(nv), ve(nv);
   for (std::uint32_t f = 0; f < nf; ++f)
     for (int k = 0; k < 3; ++k) {
       const auto v = mesh_.triangles[f][k];
       vertex_first_face_[v] = std::min(vertex_first_face_[v], f);
       vf[v].push_back(f);
     }
-  for (const auto& [key, e] : edge_id) {
-    const Vec3 d = normalized(mesh_.vertices[key.second] - mesh_.vertices[key.first]);
-    dirs[key.first].push_back(d);
-    dirs[key.second].push_back(d * -1.0);
+  for (std::uint32_t e = 0; e < edge_vertex_.size(); ++e) {
+    ve[edge_vertex_[e][0]].push_back(e);
+    ve[edge_vertex_[e][1]].push_back(e);
   }
   vertex_edge_offset_.assign(nv + 1, 0);
   vertex_face_offset_.assign(nv + 1, 0);
   for (std::size_t v = 0; v < nv; ++v) {
-    vertex_edge_offset_[v + 1] = vertex_edge_offset_[v] + dirs[v].size();
+    vertex_edge_offset_[v + 1] = vertex_edge_offset_[v] + ve[v].size();
     vertex_face_offset_[v + 1] = vertex_face_offset_[v] + vf[v].size();
-    vertex_edge_dir_.insert(vertex_edge_dir_.end(), dirs[v].begin(), dirs[v].end());
+    vertex_edge_.insert(vertex_edge_.end(), ve[v].begin(), ve[v].end());
     vertex_face_.insert(vertex_face_.end(), vf[v].begin(), vf[v].end());
+  }
+  compute_geometry();
+}
+
+void MeshWall::set_vertices(const std::vector<Vec3>& vertices) {
+  if (vertices.size() != mesh_.vertices.size())
+    throw std::invalid_argument("wall '" + name_ + "': new vertex count " +
+                                std::to_string(vertices.size()) + " differs from " +
+                                std::to_string(mesh_.vertices.size()));
+  mesh_.vertices = vertices;
+  mesh_.bump_revision();
+  compute_geometry();
+  if (cell_ > 0)
+    build_grid(reach_);
+}
+
+void MeshWall::compute_geometry() {
+  const std::size_t nf = mesh_.n_faces(), nv = mesh_.n_vertices();
+  corners_.resize(nf);
+  normal_.resize(nf);
+  inward_.resize(nf);
+  for (std::size_t f = 0; f < nf; ++f) {
+    for (int k = 0; k < 3; ++k)
+      corners_[f][k] = mesh_.vertices[mesh_.triangles[f][k]];
+    const Vec3 n = meshes::face_normal_unnormalized(mesh_, f);
+    if (!(norm(n) > 0))
+      throw std::invalid_argument("wall '" + name_ + "': triangle " + std::to_string(f) +
+                                  " is degenerate (zero area)");
+    normal_[f] = normalized(n);
+    // In-plane normal of edge k pointing into the triangle.
+    for (int k = 0; k < 3; ++k)
+      inward_[f][k] = normalized(cross(normal_[f], corners_[f][(k + 1) % 3] - corners_[f][k]));
+  }
+  vertex_edge_dir_.resize(vertex_edge_.size());
+  vertex_face_weight_.resize(vertex_face_.size());
+  for (std::uint32_t v = 0; v < nv; ++v) {
+    for (auto i = vertex_edge_offset_[v]; i < vertex_edge_offset_[v + 1]; ++i) {
+      const auto& ev = edge_vertex_[vertex_edge_[i]];
+      const auto other = ev[0] == v ? ev[1] : ev[0];
+      vertex_edge_dir_[i] = normalized(mesh_.vertices[other] - mesh_.vertices[v]);
+    }
+    // Share of a vertex contact per face: the face's interior angle at v over the total,
+    // i.e. the fraction of a small disc around the vertex that lies on the face.
+    double total = 0;
+    for (auto i = vertex_face_offset_[v]; i < vertex_face_offset_[v + 1]; ++i) {
+      const auto& t = mesh_.triangles[vertex_face_[i]];
+      const int k = t[0] == v ? 0 : (t[1] == v ? 1 : 2);
+      const Vec3 a = mesh_.vertices[t[(k + 1) % 3]] - mesh_.vertices[v];
+      const Vec3 b = mesh_.vertices[t[(k + 2) % 3]] - mesh_.vertices[v];
+      vertex_face_weight_[i] = std::atan2(norm(cross(a, b)), dot(a, b));
+      total += vertex_face_weight_[i];
+    }
+    for (auto i = vertex_face_offset_[v]; i < vertex_face_offset_[v + 1]; ++i)
+      vertex_face_weight_[i] /= total;
   }
 }
 
@@ -145,25 +183,33 @@ bool MeshWall::owns_contact(std::uint32_t f, const ClosestFeature& cf, const Vec
 }
 
 int MeshWall::faces_sharing(std::uint32_t f, const ClosestFeature& cf, std::uint32_t* out,
-                            int max_out) const {
+                            double* weight, int max_out) const {
   if (cf.feature == Feature::face) {
     out[0] = f;
+    weight[0] = 1;
     return 1;
   }
   int n = 0;
   if (cf.feature == Feature::edge) {
-    for (auto g : edge_face_[face_edge_[f][cf.local]])
-      if (g != ~0u && n < max_out)
+    const auto& ef = edge_face_[face_edge_[f][cf.local]];
+    const int n_sharing = ef[1] == ~0u ? 1 : 2;
+    for (auto g : ef)
+      if (g != ~0u && n < max_out) {
+        weight[n] = 1.0 / n_sharing;
         out[n++] = g;
+      }
     return n;
   }
   const auto v = mesh_.triangles[f][cf.local];
-  for (auto i = vertex_face_offset_[v]; i < vertex_face_offset_[v + 1] && n < max_out; ++i)
+  for (auto i = vertex_face_offset_[v]; i < vertex_face_offset_[v + 1] && n < max_out; ++i) {
+    weight[n] = vertex_face_weight_[i];
     out[n++] = vertex_face_[i];
+  }
   return n;
 }
 
 void MeshWall::build_grid(double reach) {
+  reach_ = reach;
   const auto bb = meshes::bounding_box(mesh_);
   const Vec3 lo = bb.min - Vec3{reach, reach, reach}, hi = bb.max + Vec3{reach, reach, reach};
   const Vec3 ext = hi - lo;

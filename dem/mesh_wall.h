@@ -42,6 +42,11 @@ public:
   int material() const { return material_; }
   bool wearing() const { return wearing_; }
   const WallMotion& motion() const { return motion_; }
+  /// Changes the rigid motion (e.g. start the floor's rotation after settling).
+  void set_motion(const WallMotion& m) {
+    motion_ = m;
+    omega_ = meshes::normalized(m.axis) * m.angular_velocity;
+  }
   const meshes::SurfaceMesh& mesh() const { return mesh_; }
   std::size_t n_faces() const { return mesh_.n_faces(); }
 
@@ -67,10 +72,16 @@ public:
   /// dropped when moving into a neighbouring face brings the point closer to c.
   bool owns_contact(std::uint32_t f, const ClosestFeature& cf, const Vec3& c) const;
 
-  /// Faces that share the contact's feature (for splitting extensive wear quantities).
-  /// Writes up to max_out face ids, returns the count.
-  int faces_sharing(std::uint32_t f, const ClosestFeature& cf, std::uint32_t* out,
+  /// Faces that share the contact's feature and each one's share of it (for splitting
+  /// extensive wear quantities; shares sum to 1): a face contact stays on its face, an edge
+  /// contact is halved between the two faces, a vertex contact is split by the faces'
+  /// interior angles at the vertex. Writes up to max_out entries, returns the count.
+  int faces_sharing(std::uint32_t f, const ClosestFeature& cf, std::uint32_t* out, double* weight,
                     int max_out) const;
+
+  /// Moves the vertices (same count and topology), recomputes the geometry and the candidate
+  /// grid and bumps the mesh revision. Throws if a triangle degenerates.
+  void set_vertices(const std::vector<Vec3>& vertices);
 
   /// Builds the candidate grid: every face is registered in each cell its bounding box,
   /// inflated by `reach`, overlaps.
@@ -89,14 +100,17 @@ private:
   std::vector<Vec3> normal_;
   std::vector<std::array<std::uint32_t, 3>> face_edge_; // edge k of face f: global id
   std::vector<std::array<std::uint32_t, 2>> edge_face_; // adjacent faces (second = ~0u: none)
-  std::vector<std::array<Vec3, 3>> inward_;             // in-plane unit normal of edge k, into f
+  std::vector<std::array<std::uint32_t, 2>> edge_vertex_;
+  std::vector<std::array<Vec3, 3>> inward_; // in-plane unit normal of edge k, into f
   std::vector<std::uint32_t> vertex_first_face_;
-  std::vector<std::uint32_t> vertex_edge_offset_; // CSR: unit directions away from v
-  std::vector<Vec3> vertex_edge_dir_;
-  std::vector<std::uint32_t> vertex_face_offset_, vertex_face_;
+  std::vector<std::uint32_t> vertex_edge_offset_, vertex_edge_; // CSR: edges at v
+  std::vector<Vec3> vertex_edge_dir_;                           // unit, away from v
+  std::vector<std::uint32_t> vertex_face_offset_, vertex_face_; // CSR: faces at v
+  std::vector<double> vertex_face_weight_;                      // interior-angle share
+  void compute_geometry();
   // candidate grid
   Vec3 grid_min_;
-  double cell_ = 0;
+  double cell_ = 0, reach_ = 0;
   int nx_ = 0, ny_ = 0, nz_ = 0;
   std::vector<std::uint32_t> cell_offset_, cell_face_;
 };

@@ -266,6 +266,13 @@ double System::bytes_per_particle() const {
   return bytes / n;
 }
 
+void System::set_wall_vertices(int w, const std::vector<Vec3>& vertices) {
+  walls_.at(w).set_vertices(vertices);
+  if (set_up_) {
+    rebuild();
+  }
+}
+
 WearIntegrals System::wear_integrals(int w) const {
   const auto& wall = walls_.at(w);
   if (!wall.wearing())

@@ -82,6 +82,11 @@ public:
   /// Bytes held per particle by the engine's arrays, excluding contact history.
   double bytes_per_particle() const;
 
+  void set_wall_motion(int w, const WallMotion& m) { walls_.at(w).set_motion(m); }
+  /// Moves the vertices of wall w (same topology, e.g. a worn surface) and rebuilds the
+  /// contact candidates; contact histories are kept.
+  void set_wall_vertices(int w, const std::vector<Vec3>& vertices);
+
   /// Window integrals of a wearing wall (summed over threads in a fixed order).
   WearIntegrals wear_integrals(int wall) const;
   void reset_wear_integrals();

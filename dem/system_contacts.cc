@@ -423,8 +423,8 @@ void System::wall_forces() {
         ++n_new;
         if (wall.wearing()) {
           std::uint32_t faces[32];
-          const int n_faces = wall.faces_sharing(f, cf, faces, 32);
-          const double share = 1.0 / n_faces;
+          double shares[32];
+          const int n_faces = wall.faces_sharing(f, cf, faces, shares, 32);
           const Vec3 impulse = res.force * (-dt);
           const double fn_dt = res.normal_force * dt;
           const double archard = fn_dt * meshes::norm(res.v_tangential);
@@ -432,6 +432,7 @@ void System::wall_forces() {
           auto& a = acc[w];
           for (int q = 0; q < n_faces; ++q) {
             double* v = &a[8 * faces[q]];
+            const double share = shares[q];
             v[0] += impulse.x * share;
             v[1] += impulse.y * share;
             v[2] += impulse.z * share;

@@ -47,7 +47,7 @@ struct TesterGeometry {
   double inner_radius = 0.290;   ///< [m]
   double outer_radius = 0.500;   ///< [m]
   double sector_angle_deg = 150; ///< [deg]
-  double wall_height = 0.200;    ///< [m] of the cylindrical walls
+  double wall_height = 0.350;    ///< [m] of the cylindrical walls (room for loose filling)
   double wall_mesh_size = 10e-3; ///< [m] target edge length of wall triangles
   bool consolidator = true;
   double consolidator_height = 0.130;  ///< [m] of the plate above the floor

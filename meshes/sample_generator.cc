@@ -264,6 +264,15 @@ Vec3 sample_to_tester(const Vec3& p, const SampleGeometry& s, const SamplePlacem
           pl.wear_face_height + r.z};
 }
 
+Vec3 tester_to_sample(const Vec3& p, const SampleGeometry& s, const SamplePlacement& pl) {
+  const double phi = pl.angle_deg * pi / 180, th = pl.incline_deg * pi / 180;
+  const double rad = p.x * std::cos(phi) + p.y * std::sin(phi);
+  const Vec3 r{rad - pl.radius, -p.x * std::sin(phi) + p.y * std::cos(phi),
+               p.z - pl.wear_face_height};
+  return {r.x, r.y * std::cos(th) + r.z * std::sin(th),
+          -r.y * std::sin(th) + r.z * std::cos(th) + s.thickness};
+}
+
 SurfaceMesh place_in_tester(const SurfaceMesh& m, const SampleGeometry& s,
                             const SamplePlacement& pl) {
   SurfaceMesh out = m;

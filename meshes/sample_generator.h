@@ -41,6 +41,8 @@ SurfaceMesh read_msh_surface(const std::string& path, std::size_t* n_tetrahedra 
 /// Maps a point from the sample frame into the tester frame (cylindrical sector about z):
 /// incline about the radial axis through the wear-face centre, then placement.
 Vec3 sample_to_tester(const Vec3& p, const SampleGeometry& s, const SamplePlacement& pl);
+/// Inverse of sample_to_tester.
+Vec3 tester_to_sample(const Vec3& p, const SampleGeometry& s, const SamplePlacement& pl);
 /// The sample surface moved into the tester frame (a proper rotation: orientation kept).
 SurfaceMesh place_in_tester(const SurfaceMesh& m, const SampleGeometry& s,
                             const SamplePlacement& pl);

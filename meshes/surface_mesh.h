@@ -34,6 +34,10 @@ inline int column_of(int id) {
 inline int element_of(int id) {
   return id % 10;
 }
+/// Faces of the wear face of a sample: the base top and the convex elements.
+inline bool wears(int id) {
+  return id == base || is_convex_element(id);
+}
 /// "bottom", "side", "base", "wall", "C<j><k>" or "L<id>".
 std::string name(int id);
 /// Inverse of name(); throws std::invalid_argument for an unknown name.

@@ -58,4 +58,17 @@ TesterWalls generate_tester_walls(const TesterGeometry& t) {
   return w;
 }
 
+SurfaceMesh widen_sector(const SurfaceMesh& wall, double angle, double margin) {
+  SurfaceMesh e = wall;
+  const double scale = (angle + 2 * margin) / angle;
+  for (auto& v : e.vertices) {
+    const double r = std::hypot(v.x, v.y), th = std::atan2(v.y, v.x);
+    const double th_full = th < -1e-12 ? th + 2 * pi : th;
+    const double th2 = th_full * scale - margin;
+    v = {r * std::cos(th2), r * std::sin(th2), v.z};
+  }
+  e.bump_revision();
+  return e;
+}
+
 } // namespace wear::meshes

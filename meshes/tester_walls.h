@@ -17,4 +17,9 @@ struct TesterWalls {
 
 TesterWalls generate_tester_walls(const TesterGeometry& t);
 
+/// A wall of the sector 0..angle stretched in angle about the z axis to span
+/// [-margin, angle + margin] [rad]: particles may sit slightly beyond a periodic cut between
+/// neighbour-list rebuilds and must still see the wall.
+SurfaceMesh widen_sector(const SurfaceMesh& wall, double angle, double margin);
+
 } // namespace wear::meshes

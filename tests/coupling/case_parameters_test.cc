@@ -21,16 +21,28 @@ TEST_CASE("reference case files parse and validate", "[coupling][parameters]") {
   CHECK(c.geometry.placement.incline_deg == 2);
   const auto p = read_case(WEAR_SOURCE_DIR "/cases/reference/plain.prm");
   CHECK_FALSE(p.geometry.sample.convex);
+  // wear-tester.md defaults
+  CHECK(c.dem.psd.scaling_factor == 4);
+  CHECK(c.dem.particle_wall.friction == 0.30);
+  CHECK(c.wear_law.archard_coefficient == 5e-9);
 }
 
 TEST_CASE("resolved parameters round-trip", "[coupling][parameters]") {
   auto c = read_case(WEAR_SOURCE_DIR "/cases/reference/convex.prm");
   c.geometry.sample.pattern.h = 5.5e-3;
   c.output.directory = "elsewhere";
+  c.dem.psd.diameters = {1e-3, 2e-3};
+  c.dem.psd.mass_fractions = {0.4, 0.6};
+  c.dem.snapshot_revolutions = {2, 5};
+  c.wear_law.model = "frictional-work";
   write_resolved_parameters(c, "resolved.prm");
   const auto r = read_case("resolved.prm");
   CHECK(r.geometry.sample.pattern.h == 5.5e-3);
   CHECK(r.output.directory == "elsewhere");
+  CHECK(r.dem.psd.diameters == std::vector<double>{1e-3, 2e-3});
+  CHECK(r.dem.psd.mass_fractions == std::vector<double>{0.4, 0.6});
+  CHECK(r.dem.snapshot_revolutions == std::vector<int>{2, 5});
+  CHECK(r.wear_law.model == "frictional-work");
   CHECK(r.geometry.tester.outer_radius == c.geometry.tester.outer_radius);
 }
 
@@ -49,12 +61,27 @@ TEST_CASE("bad case files fail naming the parameter", "[coupling][parameters]") 
   const auto mm = write("mm.prm", "subsection Geometry\n subsection Sample\n"
                                   "  set Mesh size = 1\n end\nend\n");
   CHECK_THROWS_WITH(read_case(mm), Catch::Contains("Mesh size"));
+  const auto law = write("law.prm", "subsection Wear law\n set Model = archrad\nend\n");
+  CHECK_THROWS_WITH(read_case(law), Catch::Contains("archrad"));
+  const auto alpha =
+      write("alpha.prm", "subsection Wear law\n set Archard coefficient = -5e-9\nend\n");
+  CHECK_THROWS_WITH(read_case(alpha), Catch::Contains("Archard coefficient"));
+  const auto dt = write("dt.prm", "subsection DEM\n set Time step fraction = 0.6\nend\n");
+  CHECK_THROWS_WITH(read_case(dt), Catch::Contains("DEM/Time step fraction"));
+  const auto psd = write("psd.prm", "subsection DEM\n set PSD diameters = 2e-3, -2.65e-3, "
+                                    "3.35e-3\nend\n");
+  CHECK_THROWS_WITH(read_case(psd), Catch::Contains("diameter"));
+  const auto fractions =
+      write("fractions.prm", "subsection DEM\n set PSD mass fractions = 0.25, 0.5\nend\n");
+  CHECK_THROWS(read_case(fractions));
 }
 
 TEST_CASE("every parameter is documented", "[coupling][parameters]") {
   std::ostringstream out;
   print_parameters(out);
   const auto text = out.str();
-  for (const char* name : {"Mesh size", "First column offset", "Consolidator angle", "Directory"})
+  for (const char* name : {"Mesh size", "First column offset", "Consolidator angle", "Directory",
+                           "Scaling factor", "Archard coefficient", "frictional-work",
+                           "Reference method", "Update interval", "PSD mass fractions"})
     CHECK(text.find(name) != std::string::npos);
 }

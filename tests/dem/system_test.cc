@@ -252,15 +252,18 @@ TEST_CASE("filling to a bed height from a PSD, then settling", "[dem][filling]")
   System s;
   const int g = add_gravel(s, 0.5, 0.5, 0.1);
   const double L = 0.06;
-  s.add_wall(MeshWall(box_walls(L), g, {}, false, "box"));
+  auto box = box_walls(L); // twice as tall as wide: room for the loose insertion
+  for (auto& v : box.vertices)
+    v.z *= 2;
+  s.add_wall(MeshWall(box, g, {}, false, "box"));
   // The reference three-bin PSD at s = 3: 6, 7.95, 10.05 mm.
   SizeDistribution psd{{2.0e-3, 2.65e-3, 3.35e-3}, {0.25, 0.5, 0.25}, 3.0};
   const auto report = fill_to_height(
       s,
       [&](double z_top) {
-        return box_region({0, 0, 0}, {L, L, std::min(z_top, L)}, 5.1e-3);
+        return box_region({0, 0, 0}, {L, L, std::min(z_top, 2 * L)}, 5.1e-3);
       },
-      L * L, 0.0, 0.025, psd, 2650, g, 3);
+      L * L, 0.0, 0.025, psd, 2650, g, 3, 3.0, 0.01, 2.0, {}, 0.52);
   INFO("n " << report.n_particles << ", bed height " << report.bed_height << " m, packing "
             << report.packing_fraction << ", settled after " << report.settle_time << " s");
   CHECK(report.n_particles > 100);

@@ -1,0 +1,41 @@
+#pragma once
+// A minimal HDF5 writer (C API of the library deal.II links, so one HDF5 per process) that
+// writes atomically: datasets go to "<path>.tmp.<pid>", which is renamed over <path> by
+// commit(). Intermediate groups are created on demand.
+#include <hdf5.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace wear::coupling {
+
+class Hdf5File {
+public:
+  explicit Hdf5File(std::string path);
+  ~Hdf5File(); ///< without commit(): the temporary file is removed, the old file kept
+  Hdf5File(const Hdf5File&) = delete;
+  Hdf5File& operator=(const Hdf5File&) = delete;
+
+  /// Row-major dataset of shape dims (product must equal data.size()).
+  void write(const std::string& name, const std::vector<double>& data,
+             const std::vector<std::size_t>& dims);
+  void write(const std::string& name, const std::vector<std::int64_t>& data,
+             const std::vector<std::size_t>& dims);
+  void write(const std::string& name, const std::vector<int>& data,
+             const std::vector<std::size_t>& dims);
+  /// Attributes on an existing object (group or dataset); "/" is the root.
+  void attribute(const std::string& object, const std::string& name, double value);
+  void attribute(const std::string& object, const std::string& name, const std::string& value);
+
+  /// Closes the file and renames it into place. Throws naming the path on failure.
+  void commit();
+
+private:
+  void write_raw(const std::string& name, hid_t type, const void* data,
+                 const std::vector<std::size_t>& dims, std::size_t n);
+  std::string path_, tmp_;
+  hid_t file_ = -1;
+};
+
+} // namespace wear::coupling
