@@ -1,0 +1,39 @@
+#pragma once
+// The correspondence between the boundary faces of the deal.II triangulation and the
+// triangles of the sample's SurfaceMesh (same triangles, matched by their vertex positions),
+// tied to the surface's revision.
+#include "meshes/surface_mesh.h"
+
+#include <deal.II/grid/tria.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace wear::fem {
+
+struct BoundaryFace {
+  dealii::Triangulation<3>::active_cell_iterator cell;
+  unsigned int face_no = 0;
+};
+
+/// The boundary of a tetrahedral triangulation as a SurfaceMesh: one triangle per boundary
+/// face, oriented outward, labelled with the face's boundary id, vertices shared.
+meshes::SurfaceMesh extract_boundary_surface(const dealii::Triangulation<3>& tria);
+
+class BoundaryFaceMap {
+public:
+  /// Throws naming the first surface triangle without a boundary face (or a boundary face
+  /// without a triangle), or a label that disagrees with the face's boundary id.
+  BoundaryFaceMap(const dealii::Triangulation<3>& tria, const meshes::SurfaceMesh& surface);
+
+  const meshes::SurfaceMesh& surface() const { return surface_; }
+  std::size_t size() const { return faces_.size(); }
+  /// Boundary face of surface triangle f.
+  const BoundaryFace& operator[](std::size_t f) const { return faces_[f]; }
+
+private:
+  meshes::SurfaceMesh surface_;
+  std::vector<BoundaryFace> faces_;
+};
+
+} // namespace wear::fem

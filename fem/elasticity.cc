@@ -1,0 +1,269 @@
+// Linear elasticity on the sample (model.md section 6).
+//
+//   -div sigma(u) = 0,  sigma = lambda tr(eps) I + 2 mu eps,  eps = sym grad u
+//   u = 0 on the bottom face (label 1); sigma n = t_f = F_f / A_f on surface face f
+// with F_f the extensive force field (window-averaged face loads), so the applied total
+// force equals sum_f F_f exactly (the traction is constant on each face and integrated
+// exactly). FE_SimplexP of degree 1 or 2 per component, Gauss simplex quadrature of
+// degree + 1, affine mapping. Solver: CG with Trilinos ML AMG (constant modes per
+// component as near null space). Reaction: the nodal residual K u - f of the unconstrained
+// system summed over the clamped DoFs per component.
+// Stresses: von Mises sqrt(3/2 s:s) (s deviatoric) and principal stresses (eigenvalues of
+// the symmetric tensor), averaged over each cell's quadrature points for output; the
+// maxima use every quadrature point.
+#include "fem/elasticity.h"
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/precondition.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <chrono>
+#include <stdexcept>
+
+namespace wear::fem {
+
+using namespace dealii;
+
+namespace {
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+SymmetricTensor<4, 3> stiffness(double E, double nu) {
+  const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
+  SymmetricTensor<4, 3> C;
+  for (unsigned int i = 0; i < 3; ++i)
+    for (unsigned int j = 0; j < 3; ++j)
+      for (unsigned int k = 0; k < 3; ++k)
+        for (unsigned int l = 0; l < 3; ++l)
+          C[i][j][k][l] = (i == j && k == l ? lambda : 0) + (i == k && j == l ? mu : 0) +
+                          (i == l && j == k ? mu : 0);
+  return C;
+}
+
+// Checked before the finite element is built: FE_SimplexP offers degrees 1 and 2 only.
+unsigned int checked_degree(unsigned int degree) {
+  if (degree != 1 && degree != 2)
+    throw std::invalid_argument("FEM/Degree: must be 1 or 2, got " + std::to_string(degree));
+  return degree;
+}
+
+double von_mises_of(const SymmetricTensor<2, 3>& s) {
+  const auto d = deviator(s);
+  return std::sqrt(1.5 * scalar_product(d, d));
+}
+} // namespace
+
+ElasticitySolver::ElasticitySolver(const Triangulation<3>& tria, const BoundaryFaceMap& faces,
+                                   const ElasticityParameters& p)
+    : tria_(tria), faces_(faces), p_(p), fe_(FE_SimplexP<3>(checked_degree(p.degree)), 3),
+      mapping_(FE_SimplexP<3>(1)), dof_handler_(tria) {
+  if (!(p.youngs_modulus > 0))
+    throw std::invalid_argument("FEM/Young's modulus: must be positive [Pa]");
+  if (!(p.poisson_ratio > -1 && p.poisson_ratio < 0.5))
+    throw std::invalid_argument("FEM/Poisson ratio: must lie in (-1, 0.5)");
+  if (!(p.yield_stress > 0))
+    throw std::invalid_argument("FEM/Yield stress: must be positive [Pa]");
+}
+
+ElasticityResult ElasticitySolver::run(const meshes::FaceField<meshes::Vec3>& forces) {
+  forces.check_matches(faces_.surface());
+  if (!forces.extensive())
+    throw std::invalid_argument("face field '" + forces.name() +
+                                "' must be extensive (forces per face, not tractions)");
+  ElasticityResult r;
+  auto t = std::chrono::steady_clock::now();
+  setup_system();
+  r.setup_seconds = seconds_since(t);
+  r.n_dofs = dof_handler_.n_dofs();
+  t = std::chrono::steady_clock::now();
+  assemble_system(forces, r);
+  r.assemble_seconds = seconds_since(t);
+  t = std::chrono::steady_clock::now();
+  solve(r);
+  r.solve_seconds = seconds_since(t);
+  compute_stresses(r);
+  return r;
+}
+
+void ElasticitySolver::setup_system() {
+  dof_handler_.distribute_dofs(fe_);
+  constraints_.clear();
+  DoFTools::make_hanging_node_constraints(dof_handler_, constraints_);
+  VectorTools::interpolate_boundary_values(mapping_, dof_handler_,
+                                           types::boundary_id(meshes::label::bottom),
+                                           Functions::ZeroFunction<3>(3), constraints_);
+  constraints_.close();
+  if (constraints_.n_constraints() == 0)
+    throw std::runtime_error("FEM: no degree of freedom lies on the clamped bottom face (id 1)");
+  DynamicSparsityPattern dsp(dof_handler_.n_dofs());
+  DoFTools::make_sparsity_pattern(dof_handler_, dsp, constraints_, false);
+  matrix_.reinit(dsp);
+  rhs_.reinit(dof_handler_.n_dofs());
+  unconstrained_rhs_.reinit(dof_handler_.n_dofs());
+  solution_.reinit(dof_handler_.n_dofs());
+}
+
+void ElasticitySolver::assemble_system(const meshes::FaceField<meshes::Vec3>& forces,
+                                       ElasticityResult& r) {
+  const QGaussSimplex<3> quadrature(fe_.degree + 1);
+  const QGaussSimplex<2> face_quadrature(fe_.degree + 1);
+  FEValues<3> fv(mapping_, fe_, quadrature, update_gradients | update_JxW_values);
+  FEFaceValues<3> ffv(mapping_, fe_, face_quadrature, update_values | update_JxW_values);
+  const auto C = stiffness(p_.youngs_modulus, p_.poisson_ratio);
+  const unsigned int n = fe_.n_dofs_per_cell();
+  FullMatrix<double> cell_matrix(n, n);
+  Vector<double> cell_rhs(n);
+  std::vector<types::global_dof_index> dofs(n);
+  std::vector<SymmetricTensor<2, 3>> eps(n);
+  // Traction per cell face from the surface field.
+  std::map<std::pair<unsigned int, unsigned int>, Tensor<1, 3>> traction;
+  const auto area = meshes::face_areas(faces_.surface());
+  for (std::size_t f = 0; f < faces_.size(); ++f) {
+    const auto& F = forces[f];
+    r.applied_force += F;
+    if (F.x == 0 && F.y == 0 && F.z == 0)
+      continue;
+    Tensor<1, 3> t;
+    for (unsigned int d = 0; d < 3; ++d)
+      t[d] = F[d] / area[f];
+    traction[{faces_[f].cell->active_cell_index(), faces_[f].face_no}] = t;
+  }
+  for (const auto& cell : dof_handler_.active_cell_iterators()) {
+    fv.reinit(cell);
+    cell_matrix = 0;
+    cell_rhs = 0;
+    for (unsigned int q = 0; q < quadrature.size(); ++q) {
+      for (unsigned int i = 0; i < n; ++i)
+        eps[i] = fv[FEValuesExtractors::Vector(0)].symmetric_gradient(i, q);
+      for (unsigned int i = 0; i < n; ++i) {
+        const auto Ce = C * eps[i];
+        for (unsigned int j = i; j < n; ++j)
+          cell_matrix(i, j) += (Ce * eps[j]) * fv.JxW(q);
+      }
+    }
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j < i; ++j)
+        cell_matrix(i, j) = cell_matrix(j, i);
+    for (const auto f : cell->face_indices()) {
+      if (!cell->face(f)->at_boundary())
+        continue;
+      const auto it = traction.find({cell->active_cell_index(), f});
+      if (it == traction.end())
+        continue;
+      ffv.reinit(cell, f);
+      for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+        for (unsigned int i = 0; i < n; ++i) {
+          const unsigned int c = fe_.system_to_component_index(i).first;
+          cell_rhs(i) += it->second[c] * ffv.shape_value(i, q) * ffv.JxW(q);
+        }
+    }
+    cell->get_dof_indices(dofs);
+    unconstrained_rhs_.add(dofs, cell_rhs);
+    constraints_.distribute_local_to_global(cell_matrix, cell_rhs, dofs, matrix_, rhs_);
+  }
+  matrix_.compress(VectorOperation::add);
+}
+
+void ElasticitySolver::solve(ElasticityResult& r) {
+  TrilinosWrappers::PreconditionAMG amg;
+  TrilinosWrappers::PreconditionAMG::AdditionalData data;
+  data.elliptic = true;
+  data.higher_order_elements = fe_.degree > 1;
+  data.smoother_sweeps = 2;
+  data.aggregation_threshold = 0.02;
+  DoFTools::extract_constant_modes(dof_handler_, ComponentMask(3, true), data.constant_modes);
+  amg.initialize(matrix_, data);
+  SolverControl control(10000, p_.relative_tolerance * rhs_.l2_norm());
+  SolverCG<Vector<double>> cg(control);
+  solution_ = 0;
+  if (rhs_.l2_norm() > 0)
+    cg.solve(matrix_, solution_, rhs_, amg);
+  constraints_.distribute(solution_);
+  r.iterations = control.last_step();
+}
+
+void ElasticitySolver::compute_stresses(ElasticityResult& r) {
+  const QGaussSimplex<3> quadrature(fe_.degree + 1);
+  FEValues<3> fv(mapping_, fe_, quadrature, update_gradients | update_JxW_values);
+  const auto C = stiffness(p_.youngs_modulus, p_.poisson_ratio);
+  const unsigned int n = fe_.n_dofs_per_cell();
+  std::vector<types::global_dof_index> dofs(n);
+  std::vector<SymmetricTensor<2, 3>> strain(quadrature.size());
+  von_mises_.reinit(tria_.n_active_cells());
+  for (auto& p : principal_)
+    p.reinit(tria_.n_active_cells());
+  std::vector<double> cell_max(tria_.n_active_cells(), 0);
+  // Reaction: (K u - f) of the unconstrained system on the clamped DoFs.
+  Vector<double> residual(dof_handler_.n_dofs());
+  FullMatrix<double> cell_matrix(n, n);
+  Vector<double> u_local(n), ku(n);
+  for (const auto& cell : dof_handler_.active_cell_iterators()) {
+    fv.reinit(cell);
+    fv[FEValuesExtractors::Vector(0)].get_function_symmetric_gradients(solution_, strain);
+    double vm_sum = 0, vol = 0;
+    std::array<double, 3> pr{0, 0, 0};
+    for (unsigned int q = 0; q < quadrature.size(); ++q) {
+      const auto s = C * strain[q];
+      const double vm = von_mises_of(s);
+      vm_sum += vm * fv.JxW(q);
+      const auto ev = eigenvalues(s);
+      for (int k = 0; k < 3; ++k)
+        pr[k] += ev[k] * fv.JxW(q);
+      vol += fv.JxW(q);
+      r.max_von_mises = std::max(r.max_von_mises, vm);
+      cell_max[cell->active_cell_index()] = std::max(cell_max[cell->active_cell_index()], vm);
+    }
+    von_mises_[cell->active_cell_index()] = vm_sum / vol;
+    for (int k = 0; k < 3; ++k)
+      principal_[k][cell->active_cell_index()] = pr[k] / vol;
+    bool clamped = false;
+    for (const auto f : cell->face_indices())
+      if (cell->face(f)->at_boundary()) {
+        const int id = int(cell->face(f)->boundary_id());
+        auto& m = r.max_von_mises_per_label[id];
+        m = std::max(m, cell_max[cell->active_cell_index()]);
+        clamped = clamped || id == meshes::label::bottom;
+      }
+    // Vertices on the clamped face may belong to cells without a clamped face.
+    cell->get_dof_indices(dofs);
+    for (unsigned int i = 0; i < n && !clamped; ++i)
+      clamped = constraints_.is_constrained(dofs[i]);
+    if (!clamped)
+      continue;
+    cell_matrix = 0;
+    for (unsigned int q = 0; q < quadrature.size(); ++q)
+      for (unsigned int i = 0; i < n; ++i) {
+        const auto Ce = C * fv[FEValuesExtractors::Vector(0)].symmetric_gradient(i, q);
+        for (unsigned int j = 0; j < n; ++j)
+          cell_matrix(i, j) +=
+              (Ce * fv[FEValuesExtractors::Vector(0)].symmetric_gradient(j, q)) * fv.JxW(q);
+      }
+    for (unsigned int i = 0; i < n; ++i)
+      u_local(i) = solution_(dofs[i]);
+    cell_matrix.vmult(ku, u_local);
+    for (unsigned int i = 0; i < n; ++i)
+      residual(dofs[i]) += ku(i);
+  }
+  // Component of each DoF from the finite element (robust to DoF numbering).
+  std::vector<unsigned int> component(dof_handler_.n_dofs(), 0);
+  for (const auto& cell : dof_handler_.active_cell_iterators()) {
+    cell->get_dof_indices(dofs);
+    for (unsigned int i = 0; i < n; ++i)
+      component[dofs[i]] = fe_.system_to_component_index(i).first;
+  }
+  for (types::global_dof_index i = 0; i < dof_handler_.n_dofs(); ++i)
+    if (constraints_.is_constrained(i))
+      r.reaction_force[component[i]] += residual(i) - unconstrained_rhs_(i);
+  r.safety_factor = r.max_von_mises > 0 ? p_.yield_stress / r.max_von_mises : 0;
+  r.max_displacement = solution_.linfty_norm();
+}
+
+} // namespace wear::fem

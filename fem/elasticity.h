@@ -1,0 +1,80 @@
+#pragma once
+// Linear elasticity of the sample (model.md section 6): simplex P1 or P2 elements, clamped
+// bottom face, tractions from an extensive per-face force field on the labelled boundary.
+#include "fem/boundary_face_map.h"
+#include "meshes/face_field.h"
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_fe.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <array>
+#include <map>
+#include <memory>
+#include <string>
+
+namespace wear::fem {
+
+struct ElasticityParameters {
+  double youngs_modulus = 700e6; ///< [Pa] PE1000
+  double poisson_ratio = 0.40;
+  double yield_stress = 20e6;        ///< [Pa] for the safety factor
+  unsigned int degree = 1;           ///< 1 (P1) or 2 (P2)
+  double relative_tolerance = 1e-10; ///< of the CG residual
+};
+
+struct ElasticityResult {
+  unsigned int n_dofs = 0, iterations = 0;
+  double setup_seconds = 0, assemble_seconds = 0, solve_seconds = 0;
+  meshes::Vec3 applied_force;  ///< [N] sum of the applied face forces
+  meshes::Vec3 reaction_force; ///< [N] force the clamped face exerts on the sample
+  double max_von_mises = 0;    ///< [Pa] over all quadrature points
+  double safety_factor = 0;    ///< yield stress / max von Mises
+  double max_displacement = 0; ///< [m] largest displacement component
+  /// Max von Mises [Pa] over the cells touching each boundary label's faces.
+  std::map<int, double> max_von_mises_per_label;
+};
+
+/// Linear elasticity solved as in deal.II's tutorials: run() = setup_system, assemble_system,
+/// solve, compute_stresses. Requires MPI to be initialised (Trilinos AMG).
+class ElasticitySolver {
+public:
+  ElasticitySolver(const dealii::Triangulation<3>& tria, const BoundaryFaceMap& faces,
+                   const ElasticityParameters& p);
+
+  /// Tractions from forces per surface face (extensive, [N]); throws when the field is not
+  /// of the surface the map was built on (revision and face count).
+  ElasticityResult run(const meshes::FaceField<meshes::Vec3>& forces);
+
+  const dealii::DoFHandler<3>& dof_handler() const { return dof_handler_; }
+  const dealii::Vector<double>& displacement() const { return solution_; }
+  /// Cell-averaged von Mises stress [Pa] of the last run (one value per active cell).
+  const dealii::Vector<double>& von_mises() const { return von_mises_; }
+  /// Cell-averaged principal stresses [Pa], largest first (3 vectors of one value per cell).
+  const std::array<dealii::Vector<double>, 3>& principal_stresses() const { return principal_; }
+  const dealii::Mapping<3>& mapping() const { return mapping_; }
+
+private:
+  void setup_system();
+  void assemble_system(const meshes::FaceField<meshes::Vec3>& forces, ElasticityResult& r);
+  void solve(ElasticityResult& r);
+  void compute_stresses(ElasticityResult& r);
+
+  const dealii::Triangulation<3>& tria_;
+  const BoundaryFaceMap& faces_;
+  ElasticityParameters p_;
+  dealii::FESystem<3> fe_;
+  dealii::MappingFE<3> mapping_;
+  dealii::DoFHandler<3> dof_handler_;
+  dealii::AffineConstraints<double> constraints_;
+  dealii::TrilinosWrappers::SparseMatrix matrix_;
+  dealii::Vector<double> rhs_, solution_, unconstrained_rhs_;
+  dealii::Vector<double> von_mises_;
+  std::array<dealii::Vector<double>, 3> principal_;
+};
+
+} // namespace wear::fem
