@@ -66,6 +66,7 @@ BoundaryFaceMap::BoundaryFaceMap(const dealii::Triangulation<3>& tria,
         f;
   }
   faces_.resize(surface.n_faces());
+  vertex_.assign(surface.n_vertices(), ~0u);
   std::vector<char> found(surface.n_faces(), 0);
   std::size_t n_boundary = 0;
   for (const auto& cell : tria.active_cell_iterators())
@@ -89,6 +90,10 @@ BoundaryFaceMap::BoundaryFaceMap(const dealii::Triangulation<3>& tria,
                                  std::to_string(face->boundary_id()));
       faces_[it->second] = {cell, f};
       found[it->second] = 1;
+      for (const auto sv : surface.triangles[it->second])
+        for (unsigned int k = 0; k < 3; ++k)
+          if (meshes::norm2(surface.vertices[sv] - v[k]) <= q * q * 16)
+            vertex_[sv] = face->vertex_index(k);
     }
   for (std::size_t f = 0; f < found.size(); ++f)
     if (!found[f])

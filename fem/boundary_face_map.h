@@ -30,10 +30,13 @@ public:
   std::size_t size() const { return faces_.size(); }
   /// Boundary face of surface triangle f.
   const BoundaryFace& operator[](std::size_t f) const { return faces_[f]; }
+  /// Triangulation vertex index of each surface vertex.
+  const std::vector<unsigned int>& vertex_map() const { return vertex_; }
 
 private:
   meshes::SurfaceMesh surface_;
   std::vector<BoundaryFace> faces_;
+  std::vector<unsigned int> vertex_;
 };
 
 } // namespace wear::fem

@@ -1,0 +1,273 @@
+// Boundary recession, interior mesh motion and tetrahedron quality.
+//
+// Recession (model.md section 6): node v of the wear face moves by -s * D_v n_v with
+//   D_v = sum_{f in W(v)} V_f / sum_{f in W(v)} A_f,  n_v = normalized(sum_{f in W(v)} A_f n_f)
+// over the wearing faces W(v) around v. The averaging smooths the depth field and does not
+// conserve volume where wear is concentrated, so the scale s is found by secant steps on
+// g(s) = volume loss(s) - sum V_f, which is smooth and monotone for small recessions.
+// Mesh motion: for each component, -div(gamma grad d) = 0 with gamma = 1 / |K| per cell
+// (Jasak & Tukovic: small cells near the worn surface stiffen and move rigidly), P1 on the
+// current mesh, d prescribed on every boundary vertex (the recession on the wear face, zero
+// elsewhere); CG with SSOR.
+// Quality of a tetrahedron with signed volume V, edges l_k, face areas S_k:
+//   scaled Jacobian = min over corners of sqrt(2) 6 V / (l_a l_b l_c)   (1 regular, <= 0 inverted)
+//   aspect ratio    = l_max / (2 sqrt(6) r_in),  r_in = 3 |V| / sum S_k  (1 regular)
+//   dihedral angle at edge (i, j) = pi - angle between the outward normals of its two faces.
+#include "fem/mesh_motion.h"
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_fe.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/precondition.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace wear::fem {
+
+using meshes::Vec3;
+
+namespace {
+constexpr double pi = 3.14159265358979323846;
+
+Vec3 point(const dealii::Point<3>& p) {
+  return {p[0], p[1], p[2]};
+}
+
+double signed_volume(const Vec3 v[4]) {
+  return meshes::dot(v[1] - v[0], meshes::cross(v[2] - v[0], v[3] - v[0])) / 6.0;
+}
+// One sub-step of the interior motion: the boundary moves by `fraction` of its displacement.
+unsigned int laplace_step(dealii::Triangulation<3>& tria, const std::vector<Vec3>& boundary,
+                          const std::vector<char>& on_boundary, double fraction) {
+  using namespace dealii;
+  unsigned int iterations = 0;
+  const FE_SimplexP<3> fe(1);
+  const MappingFE<3> mapping(FE_SimplexP<3>(1));
+  DoFHandler<3> dof(tria);
+  dof.distribute_dofs(fe);
+  std::vector<unsigned int> vertex_of_dof(dof.n_dofs());
+  for (const auto& cell : dof.active_cell_iterators())
+    for (unsigned int k = 0; k < 4; ++k)
+      vertex_of_dof[cell->vertex_dof_index(k, 0)] = cell->vertex_index(k);
+  DynamicSparsityPattern dsp(dof.n_dofs());
+  DoFTools::make_sparsity_pattern(dof, dsp);
+  SparsityPattern sp;
+  sp.copy_from(dsp);
+  const QGaussSimplex<3> quadrature(1);
+  FEValues<3> fv(mapping, fe, quadrature, update_gradients | update_JxW_values);
+  FullMatrix<double> cell_matrix(4, 4);
+  Vector<double> cell_rhs(4);
+  std::vector<types::global_dof_index> dofs(4);
+  std::vector<Vec3> moved(tria.n_vertices());
+  for (unsigned int c = 0; c < 3; ++c) {
+    AffineConstraints<double> constraints;
+    for (types::global_dof_index i = 0; i < dof.n_dofs(); ++i)
+      if (on_boundary[vertex_of_dof[i]]) {
+        constraints.add_line(i);
+        constraints.set_inhomogeneity(i, fraction * boundary[vertex_of_dof[i]][c]);
+      }
+    constraints.close();
+    SparseMatrix<double> matrix(sp);
+    Vector<double> rhs(dof.n_dofs()), d(dof.n_dofs());
+    for (const auto& cell : dof.active_cell_iterators()) {
+      fv.reinit(cell);
+      double volume = 0;
+      for (unsigned int q = 0; q < quadrature.size(); ++q)
+        volume += fv.JxW(q);
+      cell_matrix = 0;
+      cell_rhs = 0;
+      for (unsigned int q = 0; q < quadrature.size(); ++q)
+        for (unsigned int i = 0; i < 4; ++i)
+          for (unsigned int j = 0; j < 4; ++j)
+            cell_matrix(i, j) += fv.shape_grad(i, q) * fv.shape_grad(j, q) * fv.JxW(q) / volume;
+      cell->get_dof_indices(dofs);
+      constraints.distribute_local_to_global(cell_matrix, cell_rhs, dofs, matrix, rhs);
+    }
+    SolverControl control(5000, 1e-12 * std::max(1e-300, rhs.l2_norm()));
+    SolverCG<Vector<double>> cg(control);
+    PreconditionSSOR<SparseMatrix<double>> ssor;
+    ssor.initialize(matrix, 1.2);
+    if (rhs.l2_norm() > 0)
+      cg.solve(matrix, d, rhs, ssor);
+    constraints.distribute(d);
+    iterations += control.last_step();
+    for (types::global_dof_index i = 0; i < dof.n_dofs(); ++i)
+      moved[vertex_of_dof[i]][c] = d(i);
+  }
+  std::vector<char> done(tria.n_vertices(), 0);
+  for (const auto& cell : tria.active_cell_iterators())
+    for (unsigned int k = 0; k < 4; ++k) {
+      const auto v = cell->vertex_index(k);
+      if (done[v])
+        continue;
+      done[v] = 1;
+      for (unsigned int c = 0; c < 3; ++c)
+        cell->vertex(k)[c] += moved[v][c];
+    }
+  return iterations;
+}
+
+} // namespace
+
+Recession compute_recession(const meshes::SurfaceMesh& surface,
+                            const std::vector<double>& removed_volume) {
+  const std::size_t nf = surface.n_faces(), nv = surface.n_vertices();
+  if (removed_volume.size() != nf)
+    throw std::invalid_argument("recession: " + std::to_string(removed_volume.size()) +
+                                " face volumes for a surface of " + std::to_string(nf) + " faces");
+  Recession r;
+  const auto area = meshes::face_areas(surface);
+  std::vector<double> volume(nv, 0), area_sum(nv, 0);
+  std::vector<Vec3> normal(nv);
+  for (std::size_t f = 0; f < nf; ++f) {
+    if (!(removed_volume[f] >= 0) || !std::isfinite(removed_volume[f]))
+      throw std::invalid_argument("recession: removed volume of face " + std::to_string(f) +
+                                  " is negative or not finite");
+    if (!meshes::label::wears(surface.face_labels[f]))
+      continue;
+    r.removed_volume += removed_volume[f];
+    const Vec3 n = meshes::face_normal_unnormalized(surface, f);
+    for (const auto v : surface.triangles[f]) {
+      volume[v] += removed_volume[f];
+      area_sum[v] += area[f];
+      normal[v] += n;
+    }
+  }
+  std::vector<Vec3> unit(nv);
+  for (std::size_t v = 0; v < nv; ++v)
+    if (area_sum[v] > 0)
+      unit[v] = meshes::normalized(normal[v]) * (-volume[v] / area_sum[v]);
+  r.displacement.assign(nv, {});
+  if (r.removed_volume == 0)
+    return r;
+  const double v0 = meshes::enclosed_volume(surface);
+  meshes::SurfaceMesh moved = surface;
+  const auto loss = [&](double s) {
+    for (std::size_t v = 0; v < nv; ++v)
+      moved.vertices[v] = surface.vertices[v] + unit[v] * s;
+    return v0 - meshes::enclosed_volume(moved);
+  };
+  // Secant iteration from s = 1 (exact for a flat, uniformly worn face).
+  double s0 = 0, g0 = -r.removed_volume, s1 = 1, g1 = loss(1) - r.removed_volume;
+  for (int k = 0; k < 20 && std::abs(g1) > 1e-12 * r.removed_volume; ++k) {
+    const double s2 = s1 - g1 * (s1 - s0) / (g1 - g0);
+    s0 = s1;
+    g0 = g1;
+    s1 = s2;
+    g1 = loss(s1) - r.removed_volume;
+  }
+  r.scale = s1;
+  r.swept_volume = g1 + r.removed_volume;
+  for (std::size_t v = 0; v < nv; ++v)
+    r.displacement[v] = unit[v] * s1;
+  return r;
+}
+
+VolumeQuality volume_quality(const dealii::Triangulation<3>& tria) {
+  VolumeQuality q;
+  // Edges and faces of a tetrahedron by local vertex index.
+  static constexpr int edge[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+  static constexpr int face[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+  for (const auto& cell : tria.active_cell_iterators()) {
+    Vec3 v[4];
+    for (unsigned int k = 0; k < 4; ++k)
+      v[k] = point(cell->vertex(k));
+    // deal.II numbers a tetrahedron with vertex 3 on the positive side of face 0-1-2, so a
+    // valid cell has a positive signed volume.
+    const double vol = signed_volume(v);
+    double l[6], l_max = 0;
+    for (int e = 0; e < 6; ++e) {
+      l[e] = meshes::norm(v[edge[e][1]] - v[edge[e][0]]);
+      l_max = std::max(l_max, l[e]);
+    }
+    const double corner[4] = {l[0] * l[1] * l[2], l[0] * l[3] * l[4], l[1] * l[3] * l[5],
+                              l[2] * l[4] * l[5]};
+    double sj = 1e300;
+    for (double c : corner)
+      sj = std::min(sj, std::sqrt(2.0) * 6 * vol / c);
+    if (sj < q.min_scaled_jacobian || q.worst_cell < 0) {
+      q.min_scaled_jacobian = std::min(q.min_scaled_jacobian, sj);
+      q.worst_cell = long(cell->active_cell_index());
+    }
+    if (vol <= 0)
+      ++q.n_inverted;
+    Vec3 n[4];
+    double s_sum = 0;
+    for (int f = 0; f < 4; ++f) {
+      n[f] = meshes::cross(v[face[f][1]] - v[face[f][0]], v[face[f][2]] - v[face[f][0]]);
+      s_sum += 0.5 * meshes::norm(n[f]);
+    }
+    const double r_in = 3 * std::abs(vol) / s_sum;
+    q.max_aspect_ratio = std::max(q.max_aspect_ratio, l_max / (2 * std::sqrt(6.0) * r_in));
+    // Face f omits vertex f, normals outward; edge (a, b) joins the faces omitting the
+    // other two vertices.
+    for (int e = 0; e < 6; ++e) {
+      int others[2], k = 0;
+      for (int c = 0; c < 4; ++c)
+        if (c != edge[e][0] && c != edge[e][1])
+          others[k++] = c;
+      const Vec3 &na = n[others[0]], &nb = n[others[1]];
+      const double c = meshes::dot(na, nb) / (meshes::norm(na) * meshes::norm(nb));
+      const double angle = 180 - std::acos(std::clamp(c, -1.0, 1.0)) * 180 / pi;
+      q.min_dihedral_deg = std::min(q.min_dihedral_deg, angle);
+      q.max_dihedral_deg = std::max(q.max_dihedral_deg, angle);
+    }
+  }
+  return q;
+}
+
+meshes::SurfaceMesh move_mesh(dealii::Triangulation<3>& tria, const BoundaryFaceMap& map,
+                              const std::vector<Vec3>& surface_displacement, MotionReport* report) {
+  using namespace dealii;
+  const auto start = std::chrono::steady_clock::now();
+  const auto& surface = map.surface();
+  if (surface_displacement.size() != surface.n_vertices())
+    throw std::invalid_argument(
+        "mesh motion: displacement of " + std::to_string(surface_displacement.size()) +
+        " vertices for a surface of " + std::to_string(surface.n_vertices()));
+  // Boundary vertex displacements by triangulation vertex index.
+  std::vector<Vec3> boundary(tria.n_vertices());
+  std::vector<char> on_boundary(tria.n_vertices(), 0);
+  for (std::size_t v = 0; v < surface.n_vertices(); ++v) {
+    boundary[map.vertex_map()[v]] = surface_displacement[v];
+    on_boundary[map.vertex_map()[v]] = 1;
+  }
+  // Sub-steps: each moves the boundary by a fraction small against the boundary cells, and
+  // the interior follows on the current (already moved) mesh with its current volumes.
+  double max_move = 0, min_edge = 1e300;
+  for (std::size_t v = 0; v < surface.n_vertices(); ++v)
+    max_move = std::max(max_move, meshes::norm(surface_displacement[v]));
+  for (const auto& t : surface.triangles)
+    for (int k = 0; k < 3; ++k)
+      min_edge = std::min(min_edge,
+                          meshes::norm(surface.vertices[t[(k + 1) % 3]] - surface.vertices[t[k]]));
+  const int n_sub = std::clamp(int(std::ceil(max_move / (0.25 * min_edge))), 1, 50);
+  unsigned int iterations = 0;
+  for (int sub = 0; sub < n_sub; ++sub)
+    iterations += laplace_step(tria, boundary, on_boundary, 1.0 / n_sub);
+  meshes::SurfaceMesh out = surface;
+  for (std::size_t v = 0; v < out.n_vertices(); ++v)
+    out.vertices[v] += surface_displacement[v];
+  out.bump_revision();
+  if (report) {
+    report->iterations = iterations;
+    report->substeps = n_sub;
+    report->quality = volume_quality(tria);
+    report->seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  return out;
+}
+
+} // namespace wear::fem

@@ -1,0 +1,55 @@
+#pragma once
+// Wear applied to the volume mesh: recession of the worn boundary from an extensive
+// removed-volume field, interior mesh motion, and volume-mesh quality.
+#include "fem/boundary_face_map.h"
+#include "meshes/surface_mesh.h"
+
+#include <deal.II/grid/tria.h>
+
+#include <vector>
+
+namespace wear::fem {
+
+struct Recession {
+  std::vector<meshes::Vec3> displacement; ///< [m] per surface vertex (zero off the wear face)
+  double removed_volume = 0;              ///< [m^3] requested (sum of the field)
+  double swept_volume = 0;                ///< [m^3] enclosed-volume loss after correction
+  double scale = 1;                       ///< correction applied to the area-weighted depths
+};
+
+/// Per-vertex recession of the wear face (labels base and C<j><k>) along the inward
+/// area-weighted normal of the wearing faces around each vertex, by the area-weighted mean
+/// depth sum(V_f) / sum(A_f), then scaled (a few secant steps) so that the enclosed volume
+/// of the closed surface drops by exactly the removed volume. Throws for a field of the
+/// wrong size or a negative volume.
+Recession compute_recession(const meshes::SurfaceMesh& surface,
+                            const std::vector<double>& removed_volume);
+
+struct VolumeQuality {
+  double min_scaled_jacobian = 1; ///< [-] 1 for the regular tetrahedron, <= 0 inverted
+  double min_dihedral_deg = 180;  ///< [deg]
+  double max_dihedral_deg = 0;    ///< [deg]
+  double max_aspect_ratio = 0;    ///< [-] longest edge / (2 sqrt(6) inradius); 1 regular
+  std::size_t n_inverted = 0;     ///< cells with non-positive volume
+  long worst_cell = -1;           ///< cell of the smallest scaled Jacobian
+};
+VolumeQuality volume_quality(const dealii::Triangulation<3>& tria);
+
+struct MotionReport {
+  unsigned int iterations = 0; ///< CG iterations, all components and sub-steps
+  int substeps = 1;            ///< boundary moved in this many increments
+  double seconds = 0;
+  VolumeQuality quality;
+};
+
+/// Moves the boundary vertices of `tria` by the surface displacement (through the map of
+/// the surface it was computed on) and the interior vertices by a vector Laplace problem
+/// with stiffness 1 / cell volume (small cells move rigidly), P1 on the current mesh, every
+/// other boundary vertex fixed; in increments of at most a quarter of the smallest surface
+/// edge, each solved on the mesh the previous one produced. Returns the new surface (same topology,
+/// new revision).
+meshes::SurfaceMesh move_mesh(dealii::Triangulation<3>& tria, const BoundaryFaceMap& map,
+                              const std::vector<meshes::Vec3>& surface_displacement,
+                              MotionReport* report = nullptr);
+
+} // namespace wear::fem

@@ -1,0 +1,140 @@
+// Recession and mesh motion: a uniformly worn top face stays flat and the volume drops by
+// exactly the removed volume; a convex element losing 30 % of its height inverts cells and
+// the quality check reports it; quality measures of known tetrahedra.
+#include "fem/boundary_face_map.h"
+#include "fem/mesh_motion.h"
+#include "fem/sample_triangulation.h"
+#include "meshes/sample_generator.h"
+
+#include <catch2/catch.hpp>
+
+#include <deal.II/grid/grid_generator.h>
+
+#include <cmath>
+
+using namespace wear::fem;
+using wear::meshes::Vec3;
+
+namespace {
+void make_box(dealii::Triangulation<3>& tria, double a, double b, double c) {
+  dealii::GridGenerator::subdivided_hyper_rectangle_with_simplices(
+      tria, {6, 4, 3}, dealii::Point<3>(0, 0, 0), dealii::Point<3>(a, b, c), false);
+  for (const auto& cell : tria.active_cell_iterators())
+    for (const auto f : cell->face_indices())
+      if (cell->face(f)->at_boundary()) {
+        const double z = cell->face(f)->center()[2];
+        cell->face(f)->set_boundary_id(z < 1e-9 * c ? 1 : (z > (1 - 1e-9) * c ? 3 : 2));
+      }
+}
+} // namespace
+
+TEST_CASE("uniform recession of the top face: flat, exact volume, valid mesh", "[fem][motion]") {
+  dealii::Triangulation<3> tria;
+  const double a = 0.06, b = 0.04, c = 0.01, depth = 1.5e-3;
+  make_box(tria, a, b, c);
+  const auto surface = extract_boundary_surface(tria);
+  BoundaryFaceMap map(tria, surface);
+  const auto area = wear::meshes::face_areas(surface);
+  std::vector<double> removed(surface.n_faces(), 0);
+  for (std::size_t f = 0; f < surface.n_faces(); ++f)
+    if (surface.face_labels[f] == 3)
+      removed[f] = depth * area[f];
+  const double v0 = mesh_volume(tria);
+  const auto rec = compute_recession(surface, removed);
+  CHECK(rec.removed_volume == Approx(depth * a * b).epsilon(1e-12));
+  CHECK(rec.scale == Approx(1).epsilon(1e-9));
+  MotionReport report;
+  const auto worn = move_mesh(tria, map, rec.displacement, &report);
+  CHECK(worn.revision() != surface.revision());
+  for (std::size_t f = 0; f < worn.n_faces(); ++f)
+    if (worn.face_labels[f] == 3)
+      for (const auto v : worn.triangles[f])
+        CHECK(worn.vertices[v].z == Approx(c - depth).epsilon(1e-12));
+  CHECK(v0 - mesh_volume(tria) == Approx(depth * a * b).epsilon(1e-6));
+  CHECK(v0 - wear::meshes::enclosed_volume(worn) == Approx(depth * a * b).epsilon(1e-6));
+  CHECK(report.quality.n_inverted == 0);
+  CHECK(report.quality.min_scaled_jacobian > 0.1);
+  // The surface of the moved triangulation is the moved surface.
+  BoundaryFaceMap again(tria, worn);
+  CHECK(again.size() == worn.n_faces());
+}
+
+namespace {
+struct ElementWear {
+  double tip_loss = 0;     ///< [-] of the element height
+  double volume_error = 0; ///< [-] relative, mesh volume change vs removed volume
+  VolumeQuality quality;
+};
+
+// Element C33 of a 1.5 mm convex sample worn from above as the flow would wear it: depth
+// `fraction` h n_z^2 (z - base) / h, so the tip recedes by about `fraction` of h and the
+// steep flanks hardly at all.
+ElementWear wear_element(double fraction) {
+  wear::meshes::SampleGeometry s;
+  s.mesh_size = 1.5e-3;
+  s.mesh_size_bottom = 4e-3;
+  static bool generated = false;
+  if (!generated)
+    wear::meshes::generate_sample(s, "motion_sample.msh");
+  generated = true;
+  dealii::Triangulation<3> tria;
+  read_sample_mesh("motion_sample.msh", tria);
+  const auto surface = extract_boundary_surface(tria);
+  BoundaryFaceMap map(tria, surface);
+  const double base = s.thickness, h = s.pattern.h;
+  const auto area = wear::meshes::face_areas(surface);
+  const auto centroid = wear::meshes::face_centroids(surface);
+  const auto normal = wear::meshes::face_normals(surface);
+  const int label = wear::meshes::label::convex_element(3, 3);
+  std::vector<double> removed(surface.n_faces(), 0);
+  double tip0 = 0;
+  for (std::size_t f = 0; f < surface.n_faces(); ++f)
+    if (surface.face_labels[f] == label) {
+      const double t = (centroid[f].z - base) / h;
+      removed[f] = fraction * h * normal[f].z * normal[f].z * t * area[f];
+      for (const auto v : surface.triangles[f])
+        tip0 = std::max(tip0, surface.vertices[v].z);
+    }
+  const double v0 = mesh_volume(tria);
+  const auto rec = compute_recession(surface, removed);
+  MotionReport report;
+  const auto worn = move_mesh(tria, map, rec.displacement, &report);
+  double tip = 0;
+  for (std::size_t f = 0; f < worn.n_faces(); ++f)
+    if (worn.face_labels[f] == label)
+      for (const auto v : worn.triangles[f])
+        tip = std::max(tip, worn.vertices[v].z);
+  ElementWear w;
+  w.tip_loss = (tip0 - tip) / h;
+  w.volume_error = (v0 - mesh_volume(tria)) / rec.removed_volume - 1;
+  w.quality = report.quality;
+  return w;
+}
+} // namespace
+
+TEST_CASE("a convex element losing 30 % of its height: inverted cells are detected",
+          "[fem][motion]") {
+  // Depths along the normal beyond the tip's radius of curvature (b^2 / h = 0.67 mm) fold
+  // the offset surface: the mesh update must report it (remeshing takes over there).
+  const auto w = wear_element(0.3);
+  INFO("tip loss " << w.tip_loss << " of h, inverted " << w.quality.n_inverted);
+  CHECK(w.tip_loss == Approx(0.3).epsilon(0.3));
+  CHECK(w.quality.n_inverted > 0);
+  CHECK(w.quality.min_scaled_jacobian <= 0);
+}
+
+TEST_CASE("tetrahedron quality measures", "[fem][motion]") {
+  dealii::Triangulation<3> tria;
+  dealii::GridGenerator::reference_cell(tria, dealii::ReferenceCells::Tetrahedron);
+  const auto q = volume_quality(tria);
+  // The reference tetrahedron (right corner at the origin): corner Jacobian at the origin
+  // sqrt(2), at the others sqrt(2) / sqrt(2)^2 = 1/sqrt(2); dihedral angles 90 and
+  // acos(1/sqrt(3)) = 54.7 deg.
+  CHECK(q.n_inverted == 0);
+  CHECK(q.min_scaled_jacobian == Approx(1 / std::sqrt(2.0)).epsilon(1e-12));
+  CHECK(q.min_dihedral_deg ==
+        Approx(std::acos(1 / std::sqrt(3.0)) * 180 / 3.14159265358979).epsilon(1e-9));
+  CHECK(q.max_dihedral_deg == Approx(90).epsilon(1e-9));
+  CHECK_THROWS_WITH(compute_recession(extract_boundary_surface(tria), {1.0}),
+                    Catch::Contains("face volumes"));
+}
