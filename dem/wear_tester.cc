@@ -218,7 +218,7 @@ WearTester::run_revolution(const std::function<void(const TesterProgress&)>& pro
     const std::uint64_t k = std::min({to_sample, to_update, n - done});
     system_.run(k);
     done += k;
-    const bool sample = done % sample_every == 0 && done < n + sample_every / 2;
+    const bool sample = done % sample_every == 0;
     const bool update = deformation_ && (done % update_every == 0 || done == n);
     if (sample || update) {
       const WearIntegrals wi = system_.wear_integrals(sample_wall_);
