@@ -28,6 +28,7 @@ wear::meshes::SurfaceMesh flat(double L, int n, double z = 0,
 // Volume worn by one particle resting by its weight on a face moving at v under it.
 struct Held {
   double volume = 0, expected = 0, face_sum = 0;
+  double normal_impulse = 0, expected_normal_impulse = 0; ///< [N s]
   int n_faces_hit = 0;
 };
 Held held_particle(const Vec3& where) {
@@ -52,6 +53,8 @@ Held held_particle(const Vec3& where) {
     h.n_faces_hit += v > 0;
   }
   h.expected = 5e-9 * m * 9.81 * 0.3 * s.time();
+  h.normal_impulse = wi.total_normal_impulse;
+  h.expected_normal_impulse = m * 9.81 * s.time();
   return h;
 }
 } // namespace
@@ -70,6 +73,7 @@ TEST_CASE("Archard volume alpha F v t of a held particle on a face, an edge and 
     INFO(c.where);
     const Held h = held_particle(c.x);
     CHECK(h.volume == Approx(h.expected).epsilon(0.005));
+    CHECK(h.normal_impulse == Approx(h.expected_normal_impulse).epsilon(0.005));
     CHECK(h.face_sum == Approx(h.volume).epsilon(1e-12));
     CHECK(h.n_faces_hit == c.faces);
   }
