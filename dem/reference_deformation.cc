@@ -14,6 +14,8 @@
 // stays frozen from then on (the reference method's validity ends there; the bed runs on).
 #include "dem/reference_deformation.h"
 
+#include "meshes/recession.h"
+
 #include <cmath>
 #include <stdexcept>
 
@@ -22,8 +24,7 @@ namespace wear::dem {
 using meshes::Vec3;
 
 ReferenceDeformation::ReferenceDeformation(const meshes::SurfaceMesh& mesh)
-    : mesh_(mesh), initial_normals_(meshes::face_normals(mesh)),
-      vertex_faces_(meshes::vertex_faces(mesh)) {
+    : mesh_(mesh), initial_normals_(meshes::face_normals(mesh)) {
   wears_.resize(mesh_.n_faces());
   std::size_t n_wearing = 0;
   for (std::size_t f = 0; f < mesh_.n_faces(); ++f) {
@@ -51,22 +52,9 @@ const std::vector<Vec3>& ReferenceDeformation::update(const std::vector<double>&
   const auto area = meshes::face_areas(mesh_);
   const auto old_centroids = meshes::face_centroids(mesh_);
   const std::vector<Vec3> previous = mesh_.vertices;
-  std::vector<Vec3> moved = mesh_.vertices;
-  for (std::size_t v = 0; v < nv; ++v) {
-    double volume = 0, area_sum = 0;
-    Vec3 normal{};
-    for (auto k = vertex_faces_.offsets[v]; k < vertex_faces_.offsets[v + 1]; ++k) {
-      const auto f = vertex_faces_.faces[k];
-      if (!wears_[f])
-        continue;
-      volume += removed_volume[f];
-      area_sum += area[f];
-      normal += meshes::face_normal_unnormalized(mesh_, f);
-    }
-    if (area_sum > 0 && meshes::norm(normal) > 0)
-      moved[v] -= meshes::normalized(normal) * (volume / area_sum);
-  }
-  mesh_.vertices = moved;
+  const auto recession = meshes::area_weighted_recession(mesh_, removed_volume);
+  for (std::size_t v = 0; v < nv; ++v)
+    mesh_.vertices[v] += recession[v];
   mesh_.bump_revision();
   quality_ = meshes::surface_quality(mesh_, &initial_normals_);
   if (!quality_.valid()) {

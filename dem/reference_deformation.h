@@ -52,7 +52,6 @@ private:
   meshes::SurfaceMesh mesh_;
   std::vector<meshes::Vec3> initial_normals_;
   std::vector<char> wears_;
-  meshes::VertexFaces vertex_faces_;
   double initial_volume_ = 0, swept_volume_ = 0, applied_volume_ = 0;
   std::uint64_t n_updates_ = 0;
   std::optional<Distortion> distortion_;

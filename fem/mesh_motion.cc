@@ -15,6 +15,8 @@
 //   dihedral angle at edge (i, j) = pi - angle between the outward normals of its two faces.
 #include "fem/mesh_motion.h"
 
+#include "meshes/recession.h"
+
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -127,27 +129,14 @@ Recession compute_recession(const meshes::SurfaceMesh& surface,
     throw std::invalid_argument("recession: " + std::to_string(removed_volume.size()) +
                                 " face volumes for a surface of " + std::to_string(nf) + " faces");
   Recession r;
-  const auto area = meshes::face_areas(surface);
-  std::vector<double> volume(nv, 0), area_sum(nv, 0);
-  std::vector<Vec3> normal(nv);
   for (std::size_t f = 0; f < nf; ++f) {
     if (!(removed_volume[f] >= 0) || !std::isfinite(removed_volume[f]))
       throw std::invalid_argument("recession: removed volume of face " + std::to_string(f) +
                                   " is negative or not finite");
-    if (!meshes::label::wears(surface.face_labels[f]))
-      continue;
-    r.removed_volume += removed_volume[f];
-    const Vec3 n = meshes::face_normal_unnormalized(surface, f);
-    for (const auto v : surface.triangles[f]) {
-      volume[v] += removed_volume[f];
-      area_sum[v] += area[f];
-      normal[v] += n;
-    }
+    if (meshes::label::wears(surface.face_labels[f]))
+      r.removed_volume += removed_volume[f];
   }
-  std::vector<Vec3> unit(nv);
-  for (std::size_t v = 0; v < nv; ++v)
-    if (area_sum[v] > 0)
-      unit[v] = meshes::normalized(normal[v]) * (-volume[v] / area_sum[v]);
+  const std::vector<Vec3> unit = meshes::area_weighted_recession(surface, removed_volume);
   r.displacement.assign(nv, {});
   if (r.removed_volume == 0)
     return r;

@@ -1,0 +1,16 @@
+#pragma once
+// The node displacement of a worn surface shared by the reference deformation (dem/) and the
+// FEM boundary recession (fem/).
+#include "meshes/surface_mesh.h"
+
+#include <vector>
+
+namespace wear::meshes {
+
+/// Per vertex: -n_v * sum_f V_f / sum_f A_f over the wearing faces f around the vertex
+/// (labels base and C<j><k>), n_v the normalized area-weighted normal of those faces; zero
+/// for vertices without wearing faces. `removed_volume` is per face [m^3], extensive.
+std::vector<Vec3> area_weighted_recession(const SurfaceMesh& m,
+                                          const std::vector<double>& removed_volume);
+
+} // namespace wear::meshes
