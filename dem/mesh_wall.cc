@@ -126,37 +126,7 @@ void MeshWall::compute_geometry() {
 }
 
 ClosestFeature MeshWall::closest(std::uint32_t f, const Vec3& p) const {
-  const Vec3 &a = corners_[f][0], &b = corners_[f][1], &c = corners_[f][2];
-  const Vec3 ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
-  if (d1 <= 0 && d2 <= 0)
-    return {a, Feature::vertex, 0};
-  const Vec3 bp = p - b;
-  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
-  if (d3 >= 0 && d4 <= d3)
-    return {b, Feature::vertex, 1};
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) {
-    const double v = d1 / (d1 - d3);
-    return {a + ab * v, Feature::edge, 0};
-  }
-  const Vec3 cp = p - c;
-  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
-  if (d6 >= 0 && d5 <= d6)
-    return {c, Feature::vertex, 2};
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) {
-    const double w = d2 / (d2 - d6);
-    return {a + ac * w, Feature::edge, 2};
-  }
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
-    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-    return {b + (c - b) * w, Feature::edge, 1};
-  }
-  const double denom = 1 / (va + vb + vc);
-  const double v = vb * denom, w = vc * denom;
-  return {a + ab * v + ac * w, Feature::face, 0};
+  return meshes::closest_point_on_triangle(corners_[f][0], corners_[f][1], corners_[f][2], p);
 }
 
 bool MeshWall::owns_contact(std::uint32_t f, const ClosestFeature& cf, const Vec3& c) const {

@@ -2,6 +2,7 @@
 // A triangle-mesh wall: geometry, the topology needed to count each physical contact once,
 // a rigid rotation, a candidate-search grid, and optional per-face wear accumulation.
 #include "meshes/surface_mesh.h"
+#include "meshes/triangle_geometry.h"
 
 #include <array>
 #include <cmath>
@@ -24,14 +25,9 @@ struct WallMotion {
   Vec3 surface_velocity;
 };
 
-enum class Feature : std::uint8_t { face = 0, edge = 1, vertex = 2 };
-
+using Feature = meshes::TriangleFeature;
 /// Closest point of a sphere centre on one triangle, with the feature that holds it.
-struct ClosestFeature {
-  Vec3 point;
-  Feature feature = Feature::face;
-  int local = 0; ///< edge k (vertices k, k+1) or vertex k of the triangle
-};
+using ClosestFeature = meshes::TrianglePoint;
 
 class MeshWall {
 public:
@@ -61,9 +57,7 @@ public:
     return std::abs(meshes::dot(c - corners_[f][0], normal_[f]));
   }
 
-  /// Closest point of triangle f to c (Ericson, Real-Time Collision Detection 5.1.5); the
-  /// face region needs strictly positive barycentric coordinates, so points on a shared edge
-  /// are edge points for both triangles.
+  /// Closest point of triangle f to c (meshes::closest_point_on_triangle).
   ClosestFeature closest(std::uint32_t f, const Vec3& c) const;
 
   /// True when the closest feature found on triangle f is the mesh's own closest feature near

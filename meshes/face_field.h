@@ -44,6 +44,16 @@ public:
           std::to_string(mesh.revision()) + " with " + std::to_string(mesh.n_faces()) + " faces");
   }
 
+  /// Re-tags the field for a new revision of the same triangles (vertices moved, topology
+  /// kept): per-face values stay with their faces. Throws when the face count differs.
+  void follow(const SurfaceMesh& moved) {
+    if (values_.size() != moved.n_faces())
+      throw std::runtime_error("face field '" + name_ + "' has " + std::to_string(values_.size()) +
+                               " faces and cannot follow a mesh of " +
+                               std::to_string(moved.n_faces()) + " faces; transfer it instead");
+    revision_ = moved.revision();
+  }
+
   /// Sum over faces: the conserved total of an extensive field.
   T sum() const {
     T s{};

@@ -1,12 +1,17 @@
-// gmsh session guard. gmsh keeps global state, so nesting sessions is refused rather than
-// silently sharing one model.
+// gmsh session guard, and reading and writing the current gmsh model. gmsh keeps global
+// state, so nesting sessions is refused rather than silently sharing one model.
 #include "meshes/gmsh_session.h"
 
 #include <gmsh.h>
 
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <mutex>
 #include <stdexcept>
+#include <unistd.h>
+#include <unordered_map>
 
 namespace wear::meshes {
 
@@ -31,6 +36,86 @@ GmshSession::~GmshSession() {
   std::lock_guard<std::mutex> lock(gmsh_mutex);
   gmsh::finalize();
   active = false;
+}
+
+SurfaceMesh gmsh_labelled_surface(std::size_t* n_tets, double* tet_volume) {
+  std::vector<std::size_t> node_tags;
+  std::vector<double> coords, param;
+  gmsh::model::mesh::getNodes(node_tags, coords, param, -1, -1, false, false);
+  std::unordered_map<std::size_t, std::uint32_t> index;
+  index.reserve(node_tags.size());
+  SurfaceMesh m;
+  m.vertices.reserve(node_tags.size());
+  for (std::size_t i = 0; i < node_tags.size(); ++i) {
+    index[node_tags[i]] = static_cast<std::uint32_t>(i);
+    m.vertices.push_back({coords[3 * i], coords[3 * i + 1], coords[3 * i + 2]});
+  }
+  gmsh::vectorpair groups;
+  gmsh::model::getPhysicalGroups(groups, 2);
+  for (const auto& [dim, tag] : groups) {
+    std::vector<int> entities;
+    gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
+    for (int e : entities) {
+      std::vector<std::size_t> elem, nodes;
+      gmsh::model::mesh::getElementsByType(2, elem, nodes, e);
+      for (std::size_t t = 0; t < elem.size(); ++t) {
+        m.triangles.push_back(
+            {index.at(nodes[3 * t]), index.at(nodes[3 * t + 1]), index.at(nodes[3 * t + 2])});
+        m.face_labels.push_back(tag);
+      }
+    }
+  }
+  if (n_tets || tet_volume) {
+    std::vector<std::size_t> elem, nodes;
+    gmsh::model::mesh::getElementsByType(4, elem, nodes, -1);
+    double v = 0;
+    for (std::size_t t = 0; t < elem.size(); ++t) {
+      const Vec3& a = m.vertices[index.at(nodes[4 * t])];
+      const Vec3& b = m.vertices[index.at(nodes[4 * t + 1])];
+      const Vec3& c = m.vertices[index.at(nodes[4 * t + 2])];
+      const Vec3& d = m.vertices[index.at(nodes[4 * t + 3])];
+      v += std::abs(dot(b - a, cross(c - a, d - a))) / 6.0;
+    }
+    if (n_tets)
+      *n_tets = elem.size();
+    if (tet_volume)
+      *tet_volume = v;
+  }
+  // Keep only the vertices the surface uses, so the mesh is self-contained.
+  SurfaceMesh compact;
+  compact.triangles = m.triangles;
+  compact.face_labels = m.face_labels;
+  compact.vertices = m.vertices;
+  {
+    std::vector<std::int64_t> remap(m.vertices.size(), -1);
+    std::vector<Vec3> used;
+    for (auto& t : compact.triangles)
+      for (auto& v : t) {
+        if (remap[v] < 0) {
+          remap[v] = static_cast<std::int64_t>(used.size());
+          used.push_back(m.vertices[v]);
+        }
+        v = static_cast<std::uint32_t>(remap[v]);
+      }
+    compact.vertices = std::move(used);
+  }
+  orient_outward(compact);
+  compact.set_revision(1);
+  return compact;
+}
+
+void gmsh_write_msh(const std::string& path) {
+  // gmsh picks the format from the extension, so the temporary name keeps ".msh".
+  const std::string tmp = path + ".tmp." + std::to_string(::getpid()) + ".msh";
+  gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
+  gmsh::option::setNumber("Mesh.Binary", 0);
+  gmsh::write(tmp);
+  if (!std::filesystem::exists(tmp))
+    throw std::runtime_error("cannot write mesh file '" + path + "'");
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error("cannot rename the temporary mesh onto '" + path + "'");
+  }
 }
 
 } // namespace wear::meshes

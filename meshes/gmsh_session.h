@@ -1,5 +1,7 @@
 #pragma once
 // RAII guard for the gmsh API: gmsh has one global model, so one session at a time.
+#include "meshes/surface_mesh.h"
+
 #include <string>
 
 namespace wear::meshes {
@@ -12,5 +14,15 @@ public:
   GmshSession(const GmshSession&) = delete;
   GmshSession& operator=(const GmshSession&) = delete;
 };
+
+/// Boundary triangles of the current gmsh model from its 2D physical groups (physical tag =
+/// label id), oriented outward, with only the vertices they use; optionally counts the
+/// tetrahedra and sums their volume [m^3].
+SurfaceMesh gmsh_labelled_surface(std::size_t* n_tetrahedra = nullptr,
+                                  double* tetrahedral_volume = nullptr);
+
+/// Writes the current model as a gmsh 4.1 ASCII `.msh` through a temporary file and a
+/// rename, so a reader never sees a partial file. Throws naming the path.
+void gmsh_write_msh(const std::string& path);
 
 } // namespace wear::meshes

@@ -47,91 +47,23 @@ std::vector<ElementSite> element_sites(const SampleGeometry& s) {
   return sites;
 }
 
-namespace {
-
-// Boundary triangles of the current gmsh model, from its 2D physical groups; the physical
-// tag is the label id. Also counts the tetrahedra and sums their volume.
-SurfaceMesh extract_labelled_surface(std::size_t* n_tets, double* tet_volume) {
-  std::vector<std::size_t> node_tags;
-  std::vector<double> coords, param;
-  gmsh::model::mesh::getNodes(node_tags, coords, param, -1, -1, false, false);
-  std::unordered_map<std::size_t, std::uint32_t> index;
-  index.reserve(node_tags.size());
-  SurfaceMesh m;
-  m.vertices.reserve(node_tags.size());
-  for (std::size_t i = 0; i < node_tags.size(); ++i) {
-    index[node_tags[i]] = static_cast<std::uint32_t>(i);
-    m.vertices.push_back({coords[3 * i], coords[3 * i + 1], coords[3 * i + 2]});
-  }
-  gmsh::vectorpair groups;
-  gmsh::model::getPhysicalGroups(groups, 2);
-  for (const auto& [dim, tag] : groups) {
-    std::vector<int> entities;
-    gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
-    for (int e : entities) {
-      std::vector<std::size_t> elem, nodes;
-      gmsh::model::mesh::getElementsByType(2, elem, nodes, e);
-      for (std::size_t t = 0; t < elem.size(); ++t) {
-        m.triangles.push_back(
-            {index.at(nodes[3 * t]), index.at(nodes[3 * t + 1]), index.at(nodes[3 * t + 2])});
-        m.face_labels.push_back(tag);
-      }
-    }
-  }
-  if (n_tets || tet_volume) {
-    std::vector<std::size_t> elem, nodes;
-    gmsh::model::mesh::getElementsByType(4, elem, nodes, -1);
-    double v = 0;
-    for (std::size_t t = 0; t < elem.size(); ++t) {
-      const Vec3& a = m.vertices[index.at(nodes[4 * t])];
-      const Vec3& b = m.vertices[index.at(nodes[4 * t + 1])];
-      const Vec3& c = m.vertices[index.at(nodes[4 * t + 2])];
-      const Vec3& d = m.vertices[index.at(nodes[4 * t + 3])];
-      v += std::abs(dot(b - a, cross(c - a, d - a))) / 6.0;
-    }
-    if (n_tets)
-      *n_tets = elem.size();
-    if (tet_volume)
-      *tet_volume = v;
-  }
-  // Keep only the vertices the surface uses, so the mesh is self-contained.
-  SurfaceMesh compact;
-  compact.triangles = m.triangles;
-  compact.face_labels = m.face_labels;
-  compact.vertices = m.vertices;
-  {
-    std::vector<std::int64_t> remap(m.vertices.size(), -1);
-    std::vector<Vec3> used;
-    for (auto& t : compact.triangles)
-      for (auto& v : t) {
-        if (remap[v] < 0) {
-          remap[v] = static_cast<std::int64_t>(used.size());
-          used.push_back(m.vertices[v]);
-        }
-        v = static_cast<std::uint32_t>(remap[v]);
-      }
-    compact.vertices = std::move(used);
-  }
-  orient_outward(compact);
-  compact.set_revision(1);
-  return compact;
+int set_sample_size_field(const SampleGeometry& s) {
+  const double t = s.thickness;
+  const int field = gmsh::model::mesh::field::add("MathEval");
+  char expr[256];
+  std::snprintf(expr, sizeof(expr), "%.17g + %.17g * (Fabs(%.17g - z) + (%.17g - z))", s.mesh_size,
+                (s.mesh_size_bottom - s.mesh_size) / (2 * t), t, t);
+  gmsh::model::mesh::field::setString(field, "F", expr);
+  gmsh::model::mesh::field::setAsBackgroundMesh(field);
+  gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", s.curvature_refinement ? 16 : 0);
+  gmsh::option::setNumber("Mesh.MeshSizeMin", s.mesh_size / 4);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", s.mesh_size_bottom);
+  gmsh::option::setNumber("Mesh.Algorithm", 6);   // Frontal-Delaunay surfaces
+  gmsh::option::setNumber("Mesh.Algorithm3D", 1); // Delaunay: HXT spent minutes optimising here
+  return field;
 }
-
-void write_msh_atomically(const std::string& path) {
-  // gmsh picks the format from the extension, so the temporary name keeps ".msh".
-  const std::string tmp = path + ".tmp." + std::to_string(::getpid()) + ".msh";
-  gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
-  gmsh::option::setNumber("Mesh.Binary", 0);
-  gmsh::write(tmp);
-  if (!std::filesystem::exists(tmp))
-    throw std::runtime_error("cannot write mesh file '" + path + "'");
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error("cannot rename the temporary mesh onto '" + path + "'");
-  }
-}
-
-} // namespace
 
 GeneratedSample generate_sample(const SampleGeometry& s, const std::string& msh_path) {
   validate(s);
@@ -208,24 +140,11 @@ GeneratedSample generate_sample(const SampleGeometry& s, const std::string& msh_
   gmsh::model::addPhysicalGroup(3, {solid[0].second}, 1);
   gmsh::model::setPhysicalName(3, 1, "sample");
 
-  // Size field: linear growth from the wear face down to the clamped bottom.
-  const int field = gmsh::model::mesh::field::add("MathEval");
-  char expr[256];
-  std::snprintf(expr, sizeof(expr), "%.17g + %.17g * (Fabs(%.17g - z) + (%.17g - z))", s.mesh_size,
-                (s.mesh_size_bottom - s.mesh_size) / (2 * t), t, t);
-  gmsh::model::mesh::field::setString(field, "F", expr);
-  gmsh::model::mesh::field::setAsBackgroundMesh(field);
-  gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
-  gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
-  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", s.curvature_refinement ? 16 : 0);
-  gmsh::option::setNumber("Mesh.MeshSizeMin", s.mesh_size / 4);
-  gmsh::option::setNumber("Mesh.MeshSizeMax", s.mesh_size_bottom);
-  gmsh::option::setNumber("Mesh.Algorithm", 6);   // Frontal-Delaunay surfaces
-  gmsh::option::setNumber("Mesh.Algorithm3D", 1); // Delaunay: HXT spent minutes optimising here
+  set_sample_size_field(s);
   gmsh::model::mesh::generate(s.volume_mesh ? 3 : 2);
   if (!msh_path.empty())
-    write_msh_atomically(msh_path);
-  g.surface = extract_labelled_surface(&g.n_tetrahedra, &g.tetrahedral_volume);
+    gmsh_write_msh(msh_path);
+  g.surface = gmsh_labelled_surface(&g.n_tetrahedra, &g.tetrahedral_volume);
   g.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return g;
 }
@@ -245,7 +164,7 @@ SurfaceMesh read_msh_surface(const std::string& path, std::size_t* n_tets, doubl
     throw std::runtime_error("mesh file '" + path +
                              "' has no surface physical groups (labels); regenerate it "
                              "with 'wearsim mesh'");
-  auto m = extract_labelled_surface(n_tets, tet_volume);
+  auto m = gmsh_labelled_surface(n_tets, tet_volume);
   m.validate("mesh file '" + path + "'");
   return m;
 }

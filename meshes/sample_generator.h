@@ -28,6 +28,12 @@ struct GeneratedSample {
   double seconds = 0;               ///< wall time of the generation
 };
 
+/// Sets the sample's mesh size on the current gmsh model: a field growing linearly from
+/// `mesh_size` at the wear face (z = thickness, and above) to `mesh_size_bottom` at z = 0,
+/// curvature refinement when asked, frontal-Delaunay surfaces and Delaunay volumes. Returns
+/// the tag of the field (the background field).
+int set_sample_size_field(const SampleGeometry& s);
+
 /// Builds the sample; when msh_path is not empty, writes the mesh (gmsh 4.1 format) there
 /// atomically, with physical groups: volume 1 "sample", surfaces by label id and name.
 GeneratedSample generate_sample(const SampleGeometry& s, const std::string& msh_path = "");

@@ -1,0 +1,49 @@
+#pragma once
+// Closest point of a triangle to a point (Ericson, Real-Time Collision Detection 5.1.5), with
+// the feature (face interior, edge, vertex) that holds it. Shared by the DEM contact search
+// and the surface locator; inline because it sits in the DEM inner loop.
+#include "meshes/vec3.h"
+
+#include <cstdint>
+
+namespace wear::meshes {
+
+enum class TriangleFeature : std::uint8_t { face = 0, edge = 1, vertex = 2 };
+
+struct TrianglePoint {
+  Vec3 point;
+  TriangleFeature feature = TriangleFeature::face;
+  int local = 0; ///< edge k (vertices k, k+1) or vertex k of the triangle
+};
+
+/// The face region needs strictly positive barycentric coordinates, so a point on a shared
+/// edge is an edge point for both triangles.
+inline TrianglePoint closest_point_on_triangle(const Vec3& a, const Vec3& b, const Vec3& c,
+                                               const Vec3& p) {
+  using F = TriangleFeature;
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+  if (d1 <= 0 && d2 <= 0)
+    return {a, F::vertex, 0};
+  const Vec3 bp = p - b;
+  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+  if (d3 >= 0 && d4 <= d3)
+    return {b, F::vertex, 1};
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0)
+    return {a + ab * (d1 / (d1 - d3)), F::edge, 0};
+  const Vec3 cp = p - c;
+  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+  if (d6 >= 0 && d5 <= d6)
+    return {c, F::vertex, 2};
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0)
+    return {a + ac * (d2 / (d2 - d6)), F::edge, 2};
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+    return {b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6))), F::edge, 1};
+  const double denom = 1 / (va + vb + vc);
+  return {a + ab * (vb * denom) + ac * (vc * denom), F::face, 0};
+}
+
+} // namespace wear::meshes
