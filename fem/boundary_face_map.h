@@ -27,6 +27,10 @@ public:
   BoundaryFaceMap(const dealii::Triangulation<3>& tria, const meshes::SurfaceMesh& surface);
 
   const meshes::SurfaceMesh& surface() const { return surface_; }
+  /// After the triangulation's vertices moved (same cells): takes `moved` (same triangles,
+  /// new revision) as the surface, with its vertices set to the triangulation's positions so
+  /// the two agree bitwise. Throws when the face or vertex count differs.
+  void follow(const dealii::Triangulation<3>& tria, meshes::SurfaceMesh moved);
   std::size_t size() const { return faces_.size(); }
   /// Boundary face of surface triangle f.
   const BoundaryFace& operator[](std::size_t f) const { return faces_[f]; }

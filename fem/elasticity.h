@@ -75,6 +75,7 @@ private:
   dealii::Vector<double> rhs_, solution_, unconstrained_rhs_;
   dealii::Vector<double> von_mises_;
   std::array<dealii::Vector<double>, 3> principal_;
+  std::vector<double> null_space_; ///< rigid-body modes for ML, alive while it is set up
 };
 
 } // namespace wear::fem

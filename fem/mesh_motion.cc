@@ -49,6 +49,38 @@ Vec3 point(const dealii::Point<3>& p) {
 double signed_volume(const Vec3 v[4]) {
   return meshes::dot(v[1] - v[0], meshes::cross(v[2] - v[0], v[3] - v[0])) / 6.0;
 }
+// The scale s of the displacement field `unit` at which the enclosed volume drops by
+// `target` (negative: grows), by secant steps from s = first_guess and s = 0.
+double scale_to_volume_loss(const meshes::SurfaceMesh& surface, const std::vector<Vec3>& unit,
+                            double target, double* achieved, double first_guess = 1) {
+  const std::size_t nv = surface.n_vertices();
+  const double v0 = meshes::enclosed_volume(surface);
+  meshes::SurfaceMesh moved = surface;
+  const auto loss = [&](double s) {
+    for (std::size_t v = 0; v < nv; ++v)
+      moved.vertices[v] = surface.vertices[v] + unit[v] * s;
+    return v0 - meshes::enclosed_volume(moved);
+  };
+  if (first_guess == 0) {
+    // Linearised first step: d(loss)/ds at s = 0 is the area swept per unit offset.
+    const double eps = 1e-9 * std::cbrt(std::abs(v0));
+    first_guess = target * eps / loss(eps);
+  }
+  double s0 = 0, g0 = -target, s1 = first_guess, g1 = loss(s1) - target;
+  // The enclosed volume is a sum over all faces: its round-off, not the target, limits the
+  // attainable accuracy; stop there rather than divide by a vanishing secant.
+  const double tolerance = std::max(1e-12 * std::abs(target), 1e-14 * std::abs(v0));
+  for (int k = 0; k < 20 && std::abs(g1) > tolerance && g1 != g0; ++k) {
+    const double s2 = s1 - g1 * (s1 - s0) / (g1 - g0);
+    s0 = s1;
+    g0 = g1;
+    s1 = s2;
+    g1 = loss(s1) - target;
+  }
+  *achieved = g1 + target;
+  return s1;
+}
+
 // One sub-step of the interior motion: the boundary moves by `fraction` of its displacement.
 unsigned int laplace_step(dealii::Triangulation<3>& tria, const std::vector<Vec3>& boundary,
                           const std::vector<char>& on_boundary, double fraction) {
@@ -140,31 +172,67 @@ Recession compute_recession(const meshes::SurfaceMesh& surface,
   r.displacement.assign(nv, {});
   if (r.removed_volume == 0)
     return r;
-  const double v0 = meshes::enclosed_volume(surface);
-  meshes::SurfaceMesh moved = surface;
-  const auto loss = [&](double s) {
-    for (std::size_t v = 0; v < nv; ++v)
-      moved.vertices[v] = surface.vertices[v] + unit[v] * s;
-    return v0 - meshes::enclosed_volume(moved);
-  };
-  // Secant iteration from s = 1 (exact for a flat, uniformly worn face).
-  double s0 = 0, g0 = -r.removed_volume, s1 = 1, g1 = loss(1) - r.removed_volume;
-  for (int k = 0; k < 20 && std::abs(g1) > 1e-12 * r.removed_volume; ++k) {
-    const double s2 = s1 - g1 * (s1 - s0) / (g1 - g0);
-    s0 = s1;
-    g0 = g1;
-    s1 = s2;
-    g1 = loss(s1) - r.removed_volume;
-  }
-  r.scale = s1;
-  r.swept_volume = g1 + r.removed_volume;
+  r.scale = scale_to_volume_loss(surface, unit, r.removed_volume, &r.swept_volume);
   for (std::size_t v = 0; v < nv; ++v)
-    r.displacement[v] = unit[v] * s1;
+    r.displacement[v] = unit[v] * r.scale;
   return r;
 }
 
-VolumeQuality volume_quality(const dealii::Triangulation<3>& tria) {
+Recession volume_restoring_offset(const meshes::SurfaceMesh& surface, double target_volume) {
+  // Unit inward offset of the wear face: the recession of a depth of 1 m everywhere.
+  std::vector<double> unit_depth = meshes::face_areas(surface);
+  const std::vector<Vec3> unit = meshes::area_weighted_recession(surface, unit_depth);
+  Recession r;
+  r.removed_volume = meshes::enclosed_volume(surface) - target_volume;
+  r.displacement.assign(surface.n_vertices(), {});
+  if (r.removed_volume == 0)
+    return r;
+  r.scale = scale_to_volume_loss(surface, unit, r.removed_volume, &r.swept_volume, 0);
+  for (std::size_t v = 0; v < surface.n_vertices(); ++v)
+    r.displacement[v] = unit[v] * r.scale;
+  return r;
+}
+
+std::vector<Vec3> tangential_relaxation(const meshes::SurfaceMesh& surface,
+                                        const std::vector<char>& moving, double weight) {
+  const std::size_t nv = surface.n_vertices();
+  if (moving.size() != nv)
+    throw std::invalid_argument("tangential relaxation: mask of the wrong size");
+  // A vertex qualifies when every face around it has the same wearing label.
+  std::vector<int> label(nv, -1);
+  std::vector<char> free(nv, 1);
+  for (std::size_t f = 0; f < surface.n_faces(); ++f)
+    for (const auto v : surface.triangles[f]) {
+      const int l = surface.face_labels[f];
+      if (!meshes::label::wears(l) || (label[v] >= 0 && label[v] != l))
+        free[v] = 0;
+      label[v] = l;
+    }
+  std::vector<Vec3> sum(nv);
+  std::vector<int> count(nv, 0);
+  for (const auto& t : surface.triangles)
+    for (int k = 0; k < 3; ++k) {
+      // Each interior edge is seen from both of its faces, so every neighbour counts twice.
+      const auto a = t[k], b = t[(k + 1) % 3];
+      sum[a] += surface.vertices[b];
+      sum[b] += surface.vertices[a];
+      ++count[a];
+      ++count[b];
+    }
+  const auto normal = meshes::vertex_normals(surface);
+  std::vector<Vec3> out(nv);
+  for (std::size_t v = 0; v < nv; ++v)
+    if (moving[v] && free[v] && count[v] > 0) {
+      const Vec3 d = sum[v] * (1.0 / count[v]) - surface.vertices[v];
+      out[v] = (d - normal[v] * meshes::dot(d, normal[v])) * weight;
+    }
+  return out;
+}
+
+VolumeQuality volume_quality(const dealii::Triangulation<3>& tria, std::vector<double>* per_cell) {
   VolumeQuality q;
+  if (per_cell)
+    per_cell->assign(tria.n_active_cells(), 0);
   // Edges and faces of a tetrahedron by local vertex index.
   static constexpr int edge[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
   static constexpr int face[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
@@ -185,6 +253,8 @@ VolumeQuality volume_quality(const dealii::Triangulation<3>& tria) {
     double sj = 1e300;
     for (double c : corner)
       sj = std::min(sj, std::sqrt(2.0) * 6 * vol / c);
+    if (per_cell)
+      (*per_cell)[cell->active_cell_index()] = sj;
     if (sj < q.min_scaled_jacobian || q.worst_cell < 0) {
       q.min_scaled_jacobian = std::min(q.min_scaled_jacobian, sj);
       q.worst_cell = long(cell->active_cell_index());
@@ -234,14 +304,18 @@ meshes::SurfaceMesh move_mesh(dealii::Triangulation<3>& tria, const BoundaryFace
   }
   // Sub-steps: each moves the boundary by a fraction small against the boundary cells, and
   // the interior follows on the current (already moved) mesh with its current volumes.
-  double max_move = 0, min_edge = 1e300;
-  for (std::size_t v = 0; v < surface.n_vertices(); ++v)
-    max_move = std::max(max_move, meshes::norm(surface_displacement[v]));
+  // The number of increments follows the largest displacement relative to the surface
+  // edges at the moving vertices (a sliver far from the worn region does not count).
+  double ratio = 0;
   for (const auto& t : surface.triangles)
-    for (int k = 0; k < 3; ++k)
-      min_edge = std::min(min_edge,
-                          meshes::norm(surface.vertices[t[(k + 1) % 3]] - surface.vertices[t[k]]));
-  const int n_sub = std::clamp(int(std::ceil(max_move / (0.25 * min_edge))), 1, 50);
+    for (int k = 0; k < 3; ++k) {
+      const auto a = t[k], b = t[(k + 1) % 3];
+      const double move =
+          std::max(meshes::norm(surface_displacement[a]), meshes::norm(surface_displacement[b]));
+      if (move > 0)
+        ratio = std::max(ratio, move / meshes::norm(surface.vertices[b] - surface.vertices[a]));
+    }
+  const int n_sub = std::clamp(int(std::ceil(ratio / 0.25)), 1, 50);
   unsigned int iterations = 0;
   for (int sub = 0; sub < n_sub; ++sub)
     iterations += laplace_step(tria, boundary, on_boundary, 1.0 / n_sub);

@@ -25,6 +25,21 @@ struct Recession {
 Recession compute_recession(const meshes::SurfaceMesh& surface,
                             const std::vector<double>& removed_volume);
 
+/// A uniform offset of the wear face along its inward vertex normals (outward for a negative
+/// scale) that brings the enclosed volume to `target_volume`: gives back the volume a
+/// remeshing cut off as chords across curved regions. removed_volume = current - target.
+Recession volume_restoring_offset(const meshes::SurfaceMesh& surface, double target_volume);
+
+/// Tangential relaxation of a worn region: every vertex with `moving[v]` whose faces all
+/// carry one wearing label moves by `weight` times the tangential part (normal component
+/// removed, area-weighted vertex normal) of the offset to the mean of its edge neighbours.
+/// Recession along normals squeezes the triangles of a receding tip together; relaxing them
+/// keeps the surface fit for mesh motion and remeshing. Label boundaries and the unworn
+/// surface stay put. Returns the displacement per vertex [m].
+std::vector<meshes::Vec3> tangential_relaxation(const meshes::SurfaceMesh& surface,
+                                                const std::vector<char>& moving,
+                                                double weight = 0.5);
+
 struct VolumeQuality {
   double min_scaled_jacobian = 1; ///< [-] 1 for the regular tetrahedron, <= 0 inverted
   double min_dihedral_deg = 180;  ///< [deg]
@@ -33,7 +48,9 @@ struct VolumeQuality {
   std::size_t n_inverted = 0;     ///< cells with non-positive volume
   long worst_cell = -1;           ///< cell of the smallest scaled Jacobian
 };
-VolumeQuality volume_quality(const dealii::Triangulation<3>& tria);
+/// With `per_cell`, also the scaled Jacobian of every active cell (by active cell index).
+VolumeQuality volume_quality(const dealii::Triangulation<3>& tria,
+                             std::vector<double>* per_cell = nullptr);
 
 struct MotionReport {
   unsigned int iterations = 0; ///< CG iterations, all components and sub-steps
@@ -45,9 +62,9 @@ struct MotionReport {
 /// Moves the boundary vertices of `tria` by the surface displacement (through the map of
 /// the surface it was computed on) and the interior vertices by a vector Laplace problem
 /// with stiffness 1 / cell volume (small cells move rigidly), P1 on the current mesh, every
-/// other boundary vertex fixed; in increments of at most a quarter of the smallest surface
-/// edge, each solved on the mesh the previous one produced. Returns the new surface (same topology,
-/// new revision).
+/// other boundary vertex fixed; in increments that move no vertex by more than a quarter of
+/// the surface edges at it (at most 50), each solved on the mesh the previous one produced.
+/// Returns the new surface (same topology, new revision).
 meshes::SurfaceMesh move_mesh(dealii::Triangulation<3>& tria, const BoundaryFaceMap& map,
                               const std::vector<meshes::Vec3>& surface_displacement,
                               MotionReport* report = nullptr);

@@ -2,6 +2,7 @@
 // clamped face, a cantilever fin against Timoshenko beam theory, bad input.
 #include "fem/boundary_face_map.h"
 #include "fem/elasticity.h"
+#include "fem/volume_output.h"
 
 #include <catch2/catch.hpp>
 
@@ -68,6 +69,20 @@ TEST_CASE("elasticity patch test: uniform strain is exact with P1 and P2", "[fem
       CHECK(solver.principal_stresses()[2][c] == Approx(sigma[0][0]).epsilon(1e-8));
     }
     CHECK(r.max_displacement == Approx(e * 0.01).epsilon(1e-8));
+    // The volume output carries the same fields: vertex displacement (0, 0, e z), cell
+    // von Mises stress.
+    const auto grid = volume_grid(tria, &solver);
+    REQUIRE(grid.point_data.size() == 1);
+    const auto& u = grid.point_data[0].values;
+    for (std::size_t v = 0; v < grid.points.size(); ++v) {
+      CHECK(std::abs(u[3 * v]) < 1e-8 * e * 0.01);
+      CHECK(std::abs(u[3 * v + 1]) < 1e-8 * e * 0.01);
+      CHECK(u[3 * v + 2] == Approx(e * grid.points[v].z).margin(1e-8 * e * 0.01));
+    }
+    for (const auto& a : grid.cell_data)
+      if (a.name == "von Mises")
+        for (const double x : a.values)
+          CHECK(x == Approx(vm).epsilon(1e-8));
     // The clamp carries exactly the applied load.
     CHECK(std::abs(r.reaction_force.z + r.applied_force.z) < 1e-8 * std::abs(r.applied_force.z));
   }

@@ -1,0 +1,58 @@
+#pragma once
+// Remeshing the worn sample: a new tetrahedral mesh of the volume bounded by the current
+// (worn) boundary triangulation, rebuilt with gmsh from the discrete surface.
+#include "meshes/geometry_parameters.h"
+#include "meshes/surface_mesh.h"
+
+#include <map>
+#include <string>
+
+namespace wear::fem {
+
+struct RemeshParameters {
+  /// Mesh sizes and grading of the new mesh (mesh_size, mesh_size_bottom, thickness,
+  /// curvature_refinement are used), as for the unworn sample.
+  meshes::SampleGeometry sizes;
+  /// Edges between faces whose normals differ by more than this are kept as sharp edges;
+  /// label boundaries are always kept (the sample's true sharp edges are 90 deg box edges
+  /// and label boundaries; 40 deg failed on worn element tips). If gmsh fails, the remesh
+  /// is retried at 20 deg more. [deg]
+  double feature_angle_deg = 60;
+  /// Largest gap between a new face and the curved input surface the size field aims at:
+  /// curved regions get edges of sqrt(8 tolerance / curvature), down to mesh_size / 4. [m]
+  double chord_tolerance = 0.02e-3;
+  /// gmsh Mesh.Algorithm of the first attempt (6 frontal-Delaunay, 5 Delaunay, 1 MeshAdapt).
+  int surface_algorithm = 6;
+};
+
+struct RemeshReport {
+  std::size_t n_tetrahedra = 0;
+  std::size_t n_faces_before = 0, n_faces_after = 0;
+  std::size_t n_patches = 0;         ///< discrete surfaces gmsh reparametrised
+  std::size_t n_mixed_faces = 0;     ///< input faces in a patch of another label (0 expected)
+  double volume_before = 0;          ///< [m^3] enclosed by the input surface
+  double volume_after = 0;           ///< [m^3] sum of the new tetrahedra
+  double volume_restored = 0;        ///< [m^3] after WornSample's volume-restoring offset
+  double surface_distance = 0;       ///< [m] largest distance of new surface points to the old
+  std::map<int, double> area_before; ///< [m^2] per label
+  std::map<int, double> area_after;  ///< [m^2] per label
+  int surface_algorithm = 0;         ///< gmsh Mesh.Algorithm that succeeded (6 or 5)
+  double feature_angle_deg = 0;      ///< [deg] the angle that succeeded
+  std::string failed_attempts;       ///< gmsh's errors of the attempts before, if any
+  double seconds = 0;
+};
+
+/// Meshes the volume enclosed by `worn` (closed, outward, labelled, in the sample frame) and
+/// writes it to `msh_path` (gmsh 4.1, physical groups as generate_sample writes them, so
+/// read_sample_mesh reads it). The input faces of each label form separate discrete
+/// surfaces, split further at feature edges and into patches gmsh can reparametrise; every
+/// new face inherits its patch's label. Returns the new boundary surface with revision
+/// worn.revision() + 1. Throws when the surface is not closed, gmsh fails, or a label is lost.
+meshes::SurfaceMesh remesh_sample(const meshes::SurfaceMesh& worn, const RemeshParameters& p,
+                                  const std::string& msh_path, RemeshReport* report = nullptr);
+
+/// Writes a labelled surface as a gmsh 4.1 `.msh` (one discrete surface and physical group
+/// per label) that meshes::read_msh_surface reads back, e.g. a surface remeshing failed on.
+void write_surface_msh(const meshes::SurfaceMesh& surface, const std::string& path);
+
+} // namespace wear::fem

@@ -1,0 +1,176 @@
+// One wear stage on the sample's volume mesh.
+//
+// Per increment: the worn region is first relaxed tangentially (tangential_relaxation: the
+// triangles of a receding tip would otherwise be squeezed into slivers), then the recession of the
+// removed volume (compute_recession, volume-exact) is tried on the surface first; if the moved
+// surface would hold a degenerate, inverted (normal turned by more than 90 deg) or
+// self-intersecting face, the stage is split in two and tried again, because an offset along vertex
+// normals folds where the depth exceeds the local radius of curvature, and smaller steps on the
+// updated surface follow the receding front instead. The interior follows (move_mesh); if a cell
+// inverts or the smallest scaled Jacobian drops below the threshold, the moved surface is remeshed
+// (remesh_sample) and the enclosed volume the new chords cut off is given back by a uniform normal
+// offset of the wear face, so volume is conserved across remeshing to round-off of the secant (the
+// wear record is the volume, not the chord geometry). Accumulated fields follow the faces while the
+// topology is kept and are transferred (FaceTransfer: extensive per label, exactly; intensive by
+// area) across a remesh.
+#include "fem/worn_sample.h"
+
+#include "fem/sample_triangulation.h"
+#include "meshes/face_transfer.h"
+#include "meshes/mesh_quality.h"
+
+#include <filesystem>
+#include <stdexcept>
+
+namespace wear::fem {
+
+WornSample::WornSample(const std::string& msh_path, const WornSampleParameters& p) : p_(p) {
+  tria_ = std::make_unique<dealii::Triangulation<3>>();
+  read_sample_mesh(msh_path, *tria_);
+  set_surface(extract_boundary_surface(*tria_));
+}
+
+WornSample::WornSample(const std::string& msh_path, const meshes::SurfaceMesh& surface,
+                       const WornSampleParameters& p)
+    : p_(p) {
+  tria_ = std::make_unique<dealii::Triangulation<3>>();
+  read_sample_mesh(msh_path, *tria_);
+  set_surface(surface);
+}
+
+void WornSample::set_surface(const meshes::SurfaceMesh& surface) {
+  map_ = std::make_unique<BoundaryFaceMap>(*tria_, surface);
+  removed_ =
+      meshes::FaceField<double>("removed volume", "m^3", meshes::Extensivity::extensive, surface);
+  depth_ = meshes::FaceField<double>("wear depth", "m", meshes::Extensivity::intensive, surface);
+}
+
+WearStageReport WornSample::apply_wear(const meshes::FaceField<double>& removed) {
+  removed.check_matches(surface());
+  if (!removed.extensive())
+    throw std::invalid_argument("wear stage: the field '" + removed.name() +
+                                "' is intensive; removed volume per face [m^3] is expected");
+  WearStageReport r;
+  const double volume_before = mesh_volume(*tria_);
+  meshes::FaceField<double> remaining = removed;
+  for (std::size_t f = 0; f < remaining.size(); ++f) {
+    if (!meshes::label::wears(surface().face_labels[f]))
+      remaining[f] = 0; // sides and bottom do not recede
+    r.removed_volume += remaining[f];
+  }
+  int n_left = 1, halvings = 0;
+  while (n_left > 0) {
+    const auto& s = surface();
+    std::vector<double> part = remaining.values();
+    for (auto& v : part)
+      v /= n_left;
+    // Relax the worn region tangentially, then recede the relaxed surface by what remains
+    // of the increment's volume, so the enclosed volume still drops by exactly sum(part).
+    std::vector<char> worn_vertex(s.n_vertices(), 0);
+    double part_sum = 0;
+    for (std::size_t f = 0; f < part.size(); ++f)
+      if (part[f] > 0) {
+        part_sum += part[f];
+        for (const auto v : s.triangles[f])
+          worn_vertex[v] = 1;
+      }
+    std::vector<meshes::Vec3> displacement = tangential_relaxation(s, worn_vertex);
+    meshes::SurfaceMesh candidate = s;
+    for (std::size_t v = 0; v < candidate.n_vertices(); ++v)
+      candidate.vertices[v] += displacement[v];
+    const double relaxation_loss = meshes::enclosed_volume(s) - meshes::enclosed_volume(candidate);
+    std::vector<double> recede = part;
+    if (part_sum > 0)
+      for (auto& v : recede)
+        v *= std::max(0.0, 1 - relaxation_loss / part_sum);
+    const auto rec = compute_recession(candidate, recede);
+    for (std::size_t v = 0; v < candidate.n_vertices(); ++v) {
+      candidate.vertices[v] += rec.displacement[v];
+      displacement[v] += rec.displacement[v];
+    }
+    const auto normals = meshes::face_normals(s);
+    const auto sq = meshes::surface_quality(candidate, &normals);
+    if (!sq.valid()) {
+      if (halvings == p_.max_halvings)
+        throw std::runtime_error(
+            "wear stage: the worn surface folds at face " + std::to_string(sq.first_bad_face) +
+            " (label " + meshes::label::name(s.face_labels[sq.first_bad_face]) + ") even in " +
+            std::to_string(n_left) + " increments; reduce the wear per stage");
+      n_left *= 2;
+      ++halvings;
+      continue;
+    }
+    const auto area = meshes::face_areas(s);
+    for (std::size_t f = 0; f < part.size(); ++f) {
+      removed_[f] += part[f];
+      depth_[f] += part[f] / area[f];
+      remaining[f] -= part[f];
+    }
+    MotionReport motion;
+    auto moved = move_mesh(*tria_, *map_, displacement, &motion);
+    r.motion_seconds += motion.seconds;
+    ++r.increments;
+    --n_left;
+    if (motion.quality.n_inverted > 0 ||
+        motion.quality.min_scaled_jacobian < p_.remesh_min_scaled_jacobian) {
+      // The moved triangulation is discarded: only its surface (valid, checked above) is used.
+      remaining.follow(moved);
+      r.last_remesh = remesh_from(moved);
+      ++r.n_remeshes;
+      r.remesh_seconds += r.last_remesh.seconds;
+      remaining = meshes::FaceTransfer(moved, surface()).apply(remaining);
+    } else {
+      map_->follow(*tria_, std::move(moved));
+      removed_.follow(surface());
+      depth_.follow(surface());
+      remaining.follow(surface());
+    }
+  }
+  r.volume_change = volume_before - mesh_volume(*tria_);
+  r.quality = volume_quality(*tria_);
+  return r;
+}
+
+RemeshReport WornSample::remesh() {
+  return remesh_from(surface());
+}
+
+RemeshReport WornSample::remesh_from(const meshes::SurfaceMesh& worn) {
+  std::filesystem::create_directories(p_.mesh_directory);
+  const std::string path =
+      p_.mesh_directory + "/sample-r" + std::to_string(worn.revision() + 1) + ".msh";
+  RemeshReport report;
+  remesh_sample(worn, p_.remesh, path, &report);
+  auto tria = std::make_unique<dealii::Triangulation<3>>();
+  read_sample_mesh(path, *tria);
+  // The surface is taken from the triangulation as read (the .msh text need not round-trip
+  // gmsh's doubles bit for bit).
+  auto fresh = extract_boundary_surface(*tria);
+  for (std::size_t f = 0; f < fresh.n_faces(); ++f)
+    if (fresh.face_labels[f] == 0)
+      throw std::runtime_error("remeshing: '" + path + "' holds a boundary face without a label");
+  fresh.set_revision(worn.revision() + 1);
+  auto map = std::make_unique<BoundaryFaceMap>(*tria, fresh);
+  // Give back the volume the chords cut off.
+  const double target = meshes::enclosed_volume(worn);
+  const auto offset = volume_restoring_offset(fresh, target);
+  MotionReport motion;
+  auto restored = move_mesh(*tria, *map, offset.displacement, &motion);
+  map->follow(*tria, std::move(restored));
+  // Carry the accumulated fields (they are on `worn`'s faces when it is the current surface
+  // or its moved copy).
+  meshes::FaceField<double> removed = removed_, depth = depth_;
+  removed.follow(worn);
+  depth.follow(worn);
+  const meshes::FaceTransfer transfer(worn, map->surface());
+  removed_ = transfer.apply(removed);
+  depth_ = transfer.apply(depth);
+  tria_ = std::move(tria);
+  map_ = std::move(map);
+  ++n_remeshes_;
+  report.volume_restored = mesh_volume(*tria_);
+  report.seconds += motion.seconds;
+  return report;
+}
+
+} // namespace wear::fem

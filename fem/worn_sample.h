@@ -1,0 +1,76 @@
+#pragma once
+// The sample as it wears: its tetrahedral mesh, boundary surface and face map, advanced by
+// one stage of removed volume at a time, moved or remeshed so that no inverted or degenerate
+// cell is ever passed on, with the accumulated wear carried across remeshes.
+#include "fem/boundary_face_map.h"
+#include "fem/mesh_motion.h"
+#include "fem/remesher.h"
+#include "meshes/face_field.h"
+
+#include <deal.II/grid/tria.h>
+
+#include <memory>
+#include <string>
+
+namespace wear::fem {
+
+struct WornSampleParameters {
+  /// Remesh when the smallest scaled Jacobian after mesh motion falls below this (and
+  /// whenever a cell inverts). [-]
+  double remesh_min_scaled_jacobian = 0.01;
+  RemeshParameters remesh;
+  std::string mesh_directory = "."; ///< where remeshed .msh files are written
+  /// A stage whose recession would fold the surface is applied in up to 2^this increments.
+  int max_halvings = 5;
+};
+
+struct WearStageReport {
+  double removed_volume = 0; ///< [m^3] requested on the wearing faces
+  double volume_change = 0;  ///< [m^3] mesh volume before minus after
+  int increments = 0;        ///< recession steps the stage was applied in
+  int n_remeshes = 0;
+  RemeshReport last_remesh; ///< valid when n_remeshes > 0
+  VolumeQuality quality;    ///< of the mesh handed on
+  double motion_seconds = 0, remesh_seconds = 0;
+};
+
+class WornSample {
+public:
+  /// Reads the sample mesh; its boundary surface comes from the triangulation.
+  WornSample(const std::string& msh_path, const WornSampleParameters& p);
+  /// Reads the sample mesh and maps `surface` (the same triangles, e.g. from
+  /// meshes::read_msh_surface, so per-face fields keep their indices) onto it.
+  WornSample(const std::string& msh_path, const meshes::SurfaceMesh& surface,
+             const WornSampleParameters& p);
+
+  const dealii::Triangulation<3>& triangulation() const { return *tria_; }
+  const meshes::SurfaceMesh& surface() const { return map_->surface(); }
+  const BoundaryFaceMap& face_map() const { return *map_; }
+  /// Accumulated removed volume per face [m^3] (extensive).
+  const meshes::FaceField<double>& removed_volume() const { return removed_; }
+  /// Accumulated wear depth per face [m] (intensive: sum of stage volume / face area).
+  const meshes::FaceField<double>& wear_depth() const { return depth_; }
+  int n_remeshes() const { return n_remeshes_; }
+
+  /// Applies one stage of removed volume per face (extensive, on the current surface):
+  /// recession, mesh motion, and remeshing when the moved mesh holds an inverted or poor
+  /// cell. A stage that would fold the surface (depth beyond the local radius of curvature)
+  /// is split into increments, each on the surface the previous one produced. Throws when
+  /// the field belongs to another revision, or the surface folds even at the finest split.
+  WearStageReport apply_wear(const meshes::FaceField<double>& removed);
+
+  /// Remeshes now (e.g. on request) and restores the enclosed volume lost to chords.
+  RemeshReport remesh();
+
+private:
+  void set_surface(const meshes::SurfaceMesh& surface);
+  RemeshReport remesh_from(const meshes::SurfaceMesh& surface);
+
+  WornSampleParameters p_;
+  std::unique_ptr<dealii::Triangulation<3>> tria_;
+  std::unique_ptr<BoundaryFaceMap> map_;
+  meshes::FaceField<double> removed_, depth_;
+  int n_remeshes_ = 0;
+};
+
+} // namespace wear::fem
