@@ -3,6 +3,7 @@
 // N x timed steps / wall time of the timed loop; the median over repeats is reported last.
 #include "coupling/bench_command.h"
 
+#include "coupling/bench_fem.h"
 #include "dem/benchmark.h"
 
 #include <omp.h>
@@ -33,8 +34,11 @@ std::uint64_t to_count(const std::string& flag, const std::string& v) {
 } // namespace
 
 int run_bench_command(const std::vector<std::string>& args, std::ostream& out) {
+  if (!args.empty() && args[0] == "fem")
+    return run_bench_fem({args.begin() + 1, args.end()}, out);
   if (args.empty() || args[0] != "dem")
-    throw std::invalid_argument("wearsim bench: only 'wearsim bench dem [options]' exists");
+    throw std::invalid_argument("wearsim bench: 'wearsim bench dem [options]' or "
+                                "'wearsim bench fem [options]'");
   dem::BenchmarkOptions o;
   std::vector<int> thread_list;
   for (std::size_t k = 1; k < args.size(); k += 2) {

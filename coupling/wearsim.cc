@@ -5,6 +5,8 @@
 #include "coupling/dem_command.h"
 #include "coupling/mesh_command.h"
 
+#include <deal.II/base/mpi.h>
+
 #include <cstring>
 #include <exception>
 #include <iostream>
@@ -21,6 +23,9 @@ void usage(std::ostream& out) {
          "  bench dem [--workload annulus|sector5k|sector20k|sector45k|sample45k]\n"
          "            [--threads N[,M..]] [--settle N] [--warm N] [--steps N] [--repeats N]\n"
          "                           DEM benchmark; last line: particle_steps_per_second <value>\n"
+         "  bench fem [--mesh-size H] [--degrees 1,2] [--output DIR]\n"
+         "                           FEM benchmark on the reference convex sample: stress\n"
+         "                           solves, mesh motion, remeshing\n"
          "  --print-parameters       list every case-file parameter with default and meaning\n"
          "  --help                   this text\n";
 }
@@ -29,6 +34,8 @@ void usage(std::ostream& out) {
 
 int main(int argc, char** argv) {
   using namespace wear::coupling;
+  // MPI for deal.II's Trilinos solvers (one process; threads through TBB and OpenMP).
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, dealii::numbers::invalid_unsigned_int);
   if (argc < 2) {
     usage(std::cerr);
     return 2;
