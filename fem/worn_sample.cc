@@ -91,11 +91,15 @@ WearStageReport WornSample::apply_wear(const meshes::FaceField<double>& removed)
     const auto normals = meshes::face_normals(s);
     const auto sq = meshes::surface_quality(candidate, &normals);
     if (!sq.valid()) {
-      if (halvings == p_.max_halvings)
-        throw std::runtime_error(
-            "wear stage: the worn surface folds at face " + std::to_string(sq.first_bad_face) +
-            " (label " + meshes::label::name(s.face_labels[sq.first_bad_face]) + ") even in " +
-            std::to_string(n_left) + " increments; reduce the wear per stage");
+      if (halvings == p_.max_halvings) {
+        const std::string where =
+            sq.first_bad_face < 0
+                ? std::string("")
+                : " at face " + std::to_string(sq.first_bad_face) + " (label " +
+                      meshes::label::name(s.face_labels[std::size_t(sq.first_bad_face)]) + ")";
+        throw std::runtime_error("wear stage: the worn surface folds" + where + " even in " +
+                                 std::to_string(n_left) + " increments; reduce the wear per stage");
+      }
       n_left *= 2;
       ++halvings;
       continue;
