@@ -1,6 +1,8 @@
 // Recession and mesh motion: a uniformly worn top face stays flat and the volume drops by
 // exactly the removed volume; a convex element losing 30 % of its height inverts cells and
-// the quality check reports it; quality measures of known tetrahedra.
+// the quality check reports it (in one step, without WornSample's increments and remeshing);
+// quality measures of known tetrahedra; tangential relaxation stays in a flat face and keeps
+// label boundaries; the volume-restoring offset hits its target.
 #include "fem/boundary_face_map.h"
 #include "fem/mesh_motion.h"
 #include "fem/sample_triangulation.h"
@@ -137,4 +139,69 @@ TEST_CASE("tetrahedron quality measures", "[fem][motion]") {
   CHECK(q.max_dihedral_deg == Approx(90).epsilon(1e-9));
   CHECK_THROWS_WITH(compute_recession(extract_boundary_surface(tria), {1.0}),
                     Catch::Contains("face volumes"));
+}
+
+TEST_CASE("tangential relaxation stays in a flat face and keeps label boundaries",
+          "[fem][motion]") {
+  // A jittered flat top face (label base) with one corner region relabelled C11: relaxed
+  // vertices stay in the plane z = c, vertices on the base/C11 boundary and on the box edges
+  // do not move, and the relaxation evens out the jitter.
+  dealii::Triangulation<3> tria;
+  const double a = 0.06, b = 0.04, c = 0.01;
+  make_box(tria, a, b, c);
+  auto surface = extract_boundary_surface(tria);
+  const auto centroid = wear::meshes::face_centroids(surface);
+  for (std::size_t f = 0; f < surface.n_faces(); ++f)
+    if (surface.face_labels[f] == 3 && centroid[f].x < 0.015 && centroid[f].y < 0.015)
+      surface.face_labels[f] = wear::meshes::label::convex_element(1, 1);
+  std::vector<char> on_top(surface.n_vertices(), 0);
+  for (std::size_t v = 0; v < surface.n_vertices(); ++v)
+    on_top[v] = surface.vertices[v].z > c * (1 - 1e-9);
+  const auto flat = surface.vertices;
+  for (std::size_t v = 0; v < surface.n_vertices(); ++v) // jitter in the plane
+    if (on_top[v])
+      surface.vertices[v] += Vec3{1e-3 * std::sin(1e3 * double(v)), 1e-3 * std::cos(7e2 * v), 0};
+  const auto d = tangential_relaxation(surface, on_top);
+  double before = 0, after = 0;
+  std::size_t n_moved = 0;
+  for (std::size_t v = 0; v < surface.n_vertices(); ++v) {
+    CHECK(std::abs(d[v].z) < 1e-15);
+    if (wear::meshes::norm(d[v]) > 0)
+      ++n_moved;
+    if (!on_top[v])
+      CHECK(wear::meshes::norm(d[v]) == 0);
+    before += wear::meshes::norm(surface.vertices[v] - flat[v]);
+    after += wear::meshes::norm(surface.vertices[v] + d[v] - flat[v]);
+  }
+  // Boundary vertices (edges of the top face, the base/C11 line) have faces of two labels.
+  const auto faces = wear::meshes::vertex_faces(surface);
+  for (std::size_t v = 0; v < surface.n_vertices(); ++v) {
+    bool mixed = false;
+    for (auto i = faces.offsets[v]; i < faces.offsets[v + 1]; ++i)
+      mixed |=
+          surface.face_labels[faces.faces[i]] != surface.face_labels[faces.faces[faces.offsets[v]]];
+    if (mixed)
+      CHECK(wear::meshes::norm(d[v]) == 0);
+  }
+  CHECK(n_moved > 0);
+  CHECK(after < before);
+}
+
+TEST_CASE("volume-restoring offset reaches the target volume", "[fem][motion]") {
+  dealii::Triangulation<3> tria;
+  const double a = 0.06, b = 0.04, c = 0.01;
+  make_box(tria, a, b, c);
+  const auto surface = extract_boundary_surface(tria);
+  const double v0 = wear::meshes::enclosed_volume(surface);
+  for (const double target : {v0 * (1 + 1e-3), v0 * (1 - 1e-3)}) {
+    const auto r = volume_restoring_offset(surface, target);
+    auto moved = surface;
+    for (std::size_t v = 0; v < moved.n_vertices(); ++v)
+      moved.vertices[v] += r.displacement[v];
+    CHECK(wear::meshes::enclosed_volume(moved) == Approx(target).epsilon(1e-12));
+    // A flat top moves uniformly: by (target - v0) / (a b) along +z.
+    for (std::size_t v = 0; v < moved.n_vertices(); ++v)
+      if (surface.vertices[v].z > c * (1 - 1e-9))
+        CHECK(r.displacement[v].z == Approx((target - v0) / (a * b)).epsilon(1e-6));
+  }
 }
