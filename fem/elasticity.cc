@@ -182,7 +182,6 @@ void ElasticitySolver::solve(ElasticityResult& r) {
   data.higher_order_elements = fe_.degree > 1;
   data.smoother_sweeps = 2;
   data.aggregation_threshold = 0.02;
-  DoFTools::extract_constant_modes(dof_handler_, ComponentMask(3, true), data.constant_modes);
   // ML's near null space: the six rigid-body modes (three translations, three rotations
   // about the centroid of the DoFs) rather than only the translations; the rotations cut
   // the CG iterations of the clamped sample markedly, most for P2.

@@ -27,7 +27,9 @@ namespace {
 constexpr double pi = 3.14159265358979323846;
 
 // Adds the triangles of `worn` as one discrete surface per label; element tag = face + 1.
-void add_discrete_surfaces(const meshes::SurfaceMesh& worn) {
+// Returns the label of each surface entity.
+std::map<int, int> add_discrete_surfaces(const meshes::SurfaceMesh& worn) {
+  std::map<int, int> label_of;
   const auto labels = worn.labels();
   std::vector<std::size_t> node_tags(worn.n_vertices());
   std::vector<double> coords(3 * worn.n_vertices());
@@ -40,6 +42,7 @@ void add_discrete_surfaces(const meshes::SurfaceMesh& worn) {
   for (std::size_t l = 0; l < labels.size(); ++l) {
     const int tag = static_cast<int>(l) + 1;
     gmsh::model::addDiscreteEntity(2, tag);
+    label_of[tag] = labels[l];
     if (l == 0)
       gmsh::model::mesh::addNodes(2, tag, node_tags, coords);
     std::vector<std::size_t> elements, nodes;
@@ -51,17 +54,16 @@ void add_discrete_surfaces(const meshes::SurfaceMesh& worn) {
       }
     gmsh::model::mesh::addElementsByType(tag, 2, elements, nodes);
   }
+  return label_of;
 }
 
 } // namespace
 
 void write_surface_msh(const meshes::SurfaceMesh& m, const std::string& path) {
   meshes::GmshSession session("surface");
-  add_discrete_surfaces(m);
-  const auto labels = m.labels();
-  for (std::size_t l = 0; l < labels.size(); ++l) {
-    gmsh::model::addPhysicalGroup(2, {static_cast<int>(l) + 1}, labels[l]);
-    gmsh::model::setPhysicalName(2, labels[l], meshes::label::name(labels[l]));
+  for (const auto& [tag, label] : add_discrete_surfaces(m)) {
+    gmsh::model::addPhysicalGroup(2, {tag}, label);
+    gmsh::model::setPhysicalName(2, label, meshes::label::name(label));
   }
   meshes::gmsh_write_msh(path);
 }
@@ -149,15 +151,10 @@ meshes::SurfaceMesh mesh_discrete_volume(const meshes::SurfaceMesh& worn, const 
                                          int algorithm, double feature_angle_deg,
                                          const std::string& msh_path, RemeshReport& r) {
   meshes::GmshSession session("remesh");
-  add_discrete_surfaces(worn);
-  std::map<int, int> label_of;
-  if (algorithm == keep_surface) {
-    // The surface triangles stay; only the volume is meshed anew (entity l + 1 = label l).
-    const auto labels = worn.labels();
-    for (std::size_t l = 0; l < labels.size(); ++l)
-      label_of[int(l) + 1] = labels[l];
-    r.n_mixed_faces = 0;
-  } else {
+  // With keep_surface the input entities stay and only the volume is meshed anew.
+  auto label_of = add_discrete_surfaces(worn);
+  r.n_mixed_faces = 0;
+  if (algorithm != keep_surface) {
     gmsh::model::mesh::classifySurfaces(feature_angle_deg * pi / 180, true, true, pi);
     label_of = patch_labels(worn, &r.n_mixed_faces);
     gmsh::model::mesh::createGeometry();

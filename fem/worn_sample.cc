@@ -16,10 +16,10 @@
 #include "fem/worn_sample.h"
 
 #include "fem/sample_triangulation.h"
+#include "meshes/atomic_file.h"
 #include "meshes/face_transfer.h"
 #include "meshes/mesh_quality.h"
 
-#include <filesystem>
 #include <stdexcept>
 
 namespace wear::fem {
@@ -140,7 +140,7 @@ RemeshReport WornSample::remesh() {
 }
 
 RemeshReport WornSample::remesh_from(const meshes::SurfaceMesh& worn) {
-  std::filesystem::create_directories(p_.mesh_directory);
+  meshes::ensure_directory(p_.mesh_directory);
   const std::string path =
       p_.mesh_directory + "/sample-r" + std::to_string(worn.revision() + 1) + ".msh";
   RemeshReport report;
