@@ -8,7 +8,7 @@
 // phase is timed on its own; the stress solve is timed as setup + assembly + AMG-CG.
 #include "coupling/bench_fem.h"
 
-#include "coupling/volume_history.h"
+#include "coupling/grid_history.h"
 #include "fem/elasticity.h"
 #include "fem/volume_output.h"
 #include "fem/worn_sample.h"
@@ -88,7 +88,7 @@ int run_bench_fem(const std::vector<std::string>& args, std::ostream& out) {
       removed[f] = 20e-6 * normal[f].z * normal[f].z * area[f];
     }
 
-  VolumeHistory history(dir);
+  GridHistory history(dir);
   for (const auto degree : degrees) {
     fem::ElasticityParameters ep;
     ep.degree = degree;

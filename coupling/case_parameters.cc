@@ -164,6 +164,63 @@ void visit(CaseParameters& c, Visitor&& v) {
   v.real("Amplification", c.deformation.amplification,
          "[-] Declared factor on the removed volume applied to the nodes (1: physical).");
   v.leave();
+  v.enter("Coupling");
+  {
+    auto& k = c.coupling;
+    v.text("Schedule", k.schedule,
+           "Stages of `wearsim run`, in order, as 'N scheme' items separated by commas, e.g. "
+           "'6 dem-only, 10 staged'. Schemes: 'staged' (DEM on the current surface, wear per "
+           "face, FEM stress under the stage-averaged face loads, recession, mesh motion or "
+           "remeshing, the new surface back to the DEM with the bed kept); 'reference' (the "
+           "node-moving method inside the DEM, no FEM: shows where a fixed mesh distorts; runs "
+           "alone); 'dem-only' (no geometry change: settling, steady state).");
+    v.integer("Revolutions per stage", k.revolutions_per_stage, 1, 100000,
+              "DEM revolutions per stage (one revolution = one pass through the sector).");
+    v.real("Amplification", k.amplification,
+           "[-] Declared wear-amplification factor on the removed volume of every stage (1: "
+           "physical); recorded in every output. In `wearsim run` it also replaces "
+           "Deformation/Amplification for the reference scheme.");
+    v.real("Maximum depth fraction", k.max_depth_fraction,
+           "[-] Largest wear depth one stage may remove from a face, as a fraction of that "
+           "face's longest edge; a stage asking for more stops the run (lower the "
+           "amplification or the revolutions per stage).");
+    v.real("Push tolerance", k.push_tolerance,
+           "[-] After a geometry update, particles the new surface overlaps by more than this "
+           "fraction of their radius are pushed out to zero overlap (and counted).");
+    v.boolean("Checkpoints", k.checkpoints,
+              "Write checkpoint.h5 after every stage (atomically) so `wearsim run --resume` "
+              "can continue a killed run bit for bit. Not for the reference scheme.");
+    v.enter("Stress-informed wear");
+    auto& si = k.stress_informed;
+    v.boolean("Enabled", si.enabled,
+              "Hypothesis to test, off by default: scale the wear coefficient per face by "
+              "1 + Sensitivity (sigma_vM / Reference stress)^Exponent, sigma_vM the von Mises "
+              "stress of the face's cell in the previous stage.");
+    v.real("Sensitivity", si.sensitivity, "[-] Scale of the stress term.");
+    v.real("Reference stress", si.reference_stress,
+           "[Pa] Stress that doubles the coefficient "
+           "at Sensitivity 1.");
+    v.real("Exponent", si.exponent, "[-] Exponent of the stress ratio.");
+    v.leave();
+  }
+  v.leave();
+  v.enter("FEM");
+  {
+    auto& f = c.fem;
+    auto& e = f.elasticity;
+    v.real("Youngs modulus", e.youngs_modulus, "[Pa] Sample material (PE1000: 700 MPa).");
+    v.real("Poisson ratio", e.poisson_ratio, "[-] Sample material (PE1000: 0.40).");
+    v.real("Yield stress", e.yield_stress, "[Pa] For the safety factor (PE1000: about 20 MPa).");
+    v.unsigned_integer("Degree", e.degree, 1, 2, "Polynomial degree of the simplex elements.");
+    v.real("Solver tolerance", e.relative_tolerance, "[-] Relative residual of the AMG-CG solve.");
+    v.real("Remesh scaled Jacobian", f.remesh_min_scaled_jacobian,
+           "[-] Remesh when mesh motion leaves a cell below this scaled Jacobian (or inverted).");
+    v.real("Feature angle", f.feature_angle_deg,
+           "[deg] Edges sharper than this are kept as edges when remeshing the worn surface.");
+    v.real("Chord tolerance", f.chord_tolerance,
+           "[m] Largest gap between the remeshed and the worn surface the size field aims at.");
+  }
+  v.leave();
   v.enter("Output");
   v.text("Directory", o.directory, "Results folder; created if missing.");
   v.leave();
@@ -196,6 +253,10 @@ struct Declare {
     prm.declare_entry(n, to_text(x), Patterns::Double(), doc);
   }
   void integer(const std::string& n, int& x, int lo, int hi, const std::string& doc) {
+    prm.declare_entry(n, std::to_string(x), Patterns::Integer(lo, hi), doc);
+  }
+  void unsigned_integer(const std::string& n, unsigned int& x, int lo, int hi,
+                        const std::string& doc) {
     prm.declare_entry(n, std::to_string(x), Patterns::Integer(lo, hi), doc);
   }
   void boolean(const std::string& n, bool& x, const std::string& doc) {
@@ -231,6 +292,9 @@ struct Parse {
   void integer(const std::string& n, int& x, int, int, const std::string&) {
     x = static_cast<int>(prm.get_integer(n));
   }
+  void unsigned_integer(const std::string& n, unsigned int& x, int, int, const std::string&) {
+    x = static_cast<unsigned int>(prm.get_integer(n));
+  }
   void boolean(const std::string& n, bool& x, const std::string&) { x = prm.get_bool(n); }
   void choice(const std::string& n, bool& x, const std::string& yes, const std::string&,
               const std::string&) {
@@ -257,6 +321,9 @@ struct Store {
   void leave() { prm.leave_subsection(); }
   void real(const std::string& n, double& x, const std::string&) { prm.set(n, x); }
   void integer(const std::string& n, int& x, int, int, const std::string&) {
+    prm.set(n, static_cast<long int>(x));
+  }
+  void unsigned_integer(const std::string& n, unsigned int& x, int, int, const std::string&) {
     prm.set(n, static_cast<long int>(x));
   }
   void boolean(const std::string& n, bool& x, const std::string&) { prm.set(n, x); }
@@ -319,23 +386,30 @@ CaseParameters read_case(const std::string& path) {
     meshes::validate(p.geometry);
     dem::validate(p.dem);
     dem::make_wear_law(p.wear_law);
+    validate(p.coupling, p.fem);
   } catch (const std::invalid_argument& e) {
     throw std::runtime_error("case file '" + path + "': " + e.what());
   }
   return p;
 }
 
-void write_resolved_parameters(const CaseParameters& p, const std::string& path) {
+std::string resolved_parameters(const CaseParameters& p) {
   ParameterHandler prm;
   declare_parameters(prm);
   CaseParameters copy = p;
   visit(copy, Store{prm});
+  std::ostringstream out;
+  prm.print_parameters(out, ParameterHandler::PRM);
+  return out.str();
+}
+
+void write_resolved_parameters(const CaseParameters& p, const std::string& path) {
+  const std::string text = resolved_parameters(p);
   meshes::write_atomically(path, [&](std::ostream& out) {
     out << "# Fully resolved parameters";
     if (!p.case_file.empty())
       out << " of " << p.case_file;
-    out << "\n";
-    prm.print_parameters(out, ParameterHandler::PRM);
+    out << "\n" << text;
   });
 }
 

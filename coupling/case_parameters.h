@@ -1,6 +1,7 @@
 #pragma once
 // The case file: a deal.II ParameterHandler `.prm` with one subsection per concern. Each
 // subsection fills a plain struct owned by its module (meshes/ has no deal.II dependency).
+#include "coupling/coupling_parameters.h"
 #include "dem/reference_deformation.h"
 #include "dem/wear_law.h"
 #include "dem/wear_tester.h"
@@ -21,6 +22,8 @@ struct CaseParameters {
   dem::TesterDemParameters dem;
   dem::WearLawParameters wear_law;
   dem::ReferenceDeformationParameters deformation;
+  CouplingParameters coupling;
+  FemParameters fem;
   OutputParameters output;
   std::string case_file; ///< path the parameters were read from ("" for defaults)
 };
@@ -31,6 +34,9 @@ void declare_parameters(dealii::ParameterHandler& prm);
 /// Reads a case file. Unknown or misspelled parameters, malformed values and physically
 /// impossible values are errors naming the parameter and the file.
 CaseParameters read_case(const std::string& path);
+
+/// The fully resolved parameters (every value, defaults included) in PRM form.
+std::string resolved_parameters(const CaseParameters& p);
 
 /// Writes the fully resolved parameters of a case (every value, defaults included) as .prm.
 void write_resolved_parameters(const CaseParameters& p, const std::string& path);

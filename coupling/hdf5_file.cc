@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
@@ -103,6 +104,102 @@ void Hdf5File::commit() {
     std::remove(tmp_.c_str());
     check(false, path_, "rename it into place (" + ec.message() + ")");
   }
+}
+
+Hdf5Reader::Hdf5Reader(std::string path) : path_(std::move(path)) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  if (!std::filesystem::exists(path_))
+    throw std::runtime_error("HDF5 file '" + path_ + "' does not exist");
+  file_ = H5Fopen(path_.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  check(file_ >= 0, path_, "open it (not an HDF5 file, or damaged)");
+}
+
+Hdf5Reader::~Hdf5Reader() {
+  if (file_ >= 0)
+    H5Fclose(file_);
+}
+
+bool Hdf5Reader::exists(const std::string& name) const {
+  // Each link on the path must exist before the next is asked for.
+  std::size_t pos = 0;
+  while ((pos = name.find('/', pos + 1)) != std::string::npos)
+    if (H5Lexists(file_, name.substr(0, pos).c_str(), H5P_DEFAULT) <= 0)
+      return false;
+  return H5Lexists(file_, name.c_str(), H5P_DEFAULT) > 0;
+}
+
+std::vector<std::size_t> Hdf5Reader::dims(const std::string& name) const {
+  const hid_t set = H5Dopen2(file_, name.c_str(), H5P_DEFAULT);
+  check(set >= 0, path_, "find the dataset '" + name + "'");
+  const hid_t space = H5Dget_space(set);
+  const int rank = H5Sget_simple_extent_ndims(space);
+  std::vector<hsize_t> d(std::max(rank, 0));
+  if (rank > 0)
+    H5Sget_simple_extent_dims(space, d.data(), nullptr);
+  H5Sclose(space);
+  H5Dclose(set);
+  check(rank >= 0, path_, "read the shape of '" + name + "'");
+  return {d.begin(), d.end()};
+}
+
+void Hdf5Reader::read_raw(const std::string& name, hid_t type, void* data, std::size_t n) const {
+  const hid_t set = H5Dopen2(file_, name.c_str(), H5P_DEFAULT);
+  check(set >= 0, path_, "find the dataset '" + name + "'");
+  const herr_t status = n ? H5Dread(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) : 0;
+  H5Dclose(set);
+  check(status >= 0, path_, "read the dataset '" + name + "' (damaged file?)");
+}
+
+namespace {
+std::size_t n_values(const std::vector<std::size_t>& d) {
+  std::size_t n = 1;
+  for (auto x : d)
+    n *= x;
+  return n;
+}
+} // namespace
+
+std::vector<double> Hdf5Reader::doubles(const std::string& name) const {
+  std::vector<double> v(n_values(dims(name)));
+  read_raw(name, H5T_NATIVE_DOUBLE, v.data(), v.size());
+  return v;
+}
+
+std::vector<std::int64_t> Hdf5Reader::int64s(const std::string& name) const {
+  std::vector<std::int64_t> v(n_values(dims(name)));
+  read_raw(name, H5T_NATIVE_INT64, v.data(), v.size());
+  return v;
+}
+
+std::vector<int> Hdf5Reader::ints(const std::string& name) const {
+  std::vector<int> v(n_values(dims(name)));
+  read_raw(name, H5T_NATIVE_INT, v.data(), v.size());
+  return v;
+}
+
+double Hdf5Reader::attribute(const std::string& object, const std::string& name) const {
+  const hid_t a = H5Aopen_by_name(file_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT);
+  check(a >= 0, path_, "find the attribute '" + name + "' of '" + object + "'");
+  double v = 0;
+  const herr_t status = H5Aread(a, H5T_NATIVE_DOUBLE, &v);
+  H5Aclose(a);
+  check(status >= 0, path_, "read the attribute '" + name + "' of '" + object + "'");
+  return v;
+}
+
+std::string Hdf5Reader::text_attribute(const std::string& object, const std::string& name) const {
+  const hid_t a = H5Aopen_by_name(file_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT);
+  check(a >= 0, path_, "find the attribute '" + name + "' of '" + object + "'");
+  const hid_t type = H5Aget_type(a);
+  const std::size_t size = H5Tget_size(type);
+  std::string v(size, '\0');
+  const herr_t status = H5Aread(a, type, v.data());
+  H5Tclose(type);
+  H5Aclose(a);
+  check(status >= 0, path_, "read the attribute '" + name + "' of '" + object + "'");
+  while (!v.empty() && v.back() == '\0')
+    v.pop_back();
+  return v;
 }
 
 } // namespace wear::coupling

@@ -38,4 +38,28 @@ private:
   hid_t file_ = -1;
 };
 
+/// Reads what Hdf5File wrote. Every failure (missing file, not HDF5, missing dataset, wrong
+/// size) throws naming the file and the dataset.
+class Hdf5Reader {
+public:
+  explicit Hdf5Reader(std::string path);
+  ~Hdf5Reader();
+  Hdf5Reader(const Hdf5Reader&) = delete;
+  Hdf5Reader& operator=(const Hdf5Reader&) = delete;
+
+  bool exists(const std::string& name) const;
+  std::vector<std::size_t> dims(const std::string& name) const;
+  std::vector<double> doubles(const std::string& name) const;
+  std::vector<std::int64_t> int64s(const std::string& name) const;
+  std::vector<int> ints(const std::string& name) const;
+  double attribute(const std::string& object, const std::string& name) const;
+  std::string text_attribute(const std::string& object, const std::string& name) const;
+  const std::string& path() const { return path_; }
+
+private:
+  void read_raw(const std::string& name, hid_t type, void* data, std::size_t n) const;
+  std::string path_;
+  hid_t file_ = -1;
+};
+
 } // namespace wear::coupling

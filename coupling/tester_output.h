@@ -5,10 +5,18 @@
 #include "dem/tester_evaluation.h"
 #include "dem/wear_tester.h"
 
+#include <ostream>
 #include <string>
 #include <vector>
 
 namespace wear::coupling {
+
+/// The per-revolution columns of summary.csv (no line end), shared by `wearsim dem` and
+/// `wearsim run`; units in the column names.
+void write_summary_header(std::ostream& out, int n_columns, const std::vector<int>& element_labels);
+/// One revolution's row of those columns (no line end).
+void write_summary_row(std::ostream& out, const dem::RevolutionRecord& r,
+                       const std::vector<int>& element_labels);
 
 class TesterOutput {
 public:

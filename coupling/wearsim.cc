@@ -2,6 +2,8 @@
 // error reaches the user as one message naming the file or parameter, with exit code 1.
 #include "coupling/bench_command.h"
 #include "coupling/case_parameters.h"
+#include "coupling/compare_command.h"
+#include "coupling/coupled_run.h"
 #include "coupling/dem_command.h"
 #include "coupling/mesh_command.h"
 
@@ -20,6 +22,13 @@ void usage(std::ostream& out) {
          "  mesh <case.prm>          generate the sample (.msh/.stl/.vtu) and the tester walls\n"
          "  dem <case.prm>           the wear tester in DEM: fill, settle, revolutions with wear\n"
          "                           evaluations; writes history.h5/.xdmf and summary.csv\n"
+         "  run [--resume] <case.prm> the coupled DEM-FEM wear run of the case's "
+         "Coupling/Schedule\n"
+         "                           (staged, reference or dem-only stages); writes summary.csv,\n"
+         "                           stages.csv, history.h5/.xdmf, checkpoint.h5; --resume\n"
+         "                           continues a killed run from its last checkpoint\n"
+         "  compare <runA> <runB>    two runs side by side: wear and its reduction, per column,\n"
+         "                           peak von Mises and safety factor per stage\n"
          "  bench dem [--workload annulus|sector5k|sector20k|sector45k|sample45k]\n"
          "            [--threads N[,M..]] [--settle N] [--warm N] [--steps N] [--repeats N]\n"
          "                           DEM benchmark; last line: particle_steps_per_second <value>\n"
@@ -66,6 +75,10 @@ int main(int argc, char** argv) {
       run_dem_command(read_case(argv[2]), std::cout);
       return 0;
     }
+    if (cmd == "run")
+      return run_run_command({argv + 2, argv + argc}, std::cout);
+    if (cmd == "compare")
+      return run_compare_command({argv + 2, argv + argc}, std::cout);
     if (cmd == "bench")
       return run_bench_command({argv + 2, argv + argc}, std::cout);
     std::cerr << "wearsim: unknown command '" << cmd << "'\n";

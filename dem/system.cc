@@ -273,6 +273,19 @@ void System::set_wall_vertices(int w, const std::vector<Vec3>& vertices) {
   }
 }
 
+void System::replace_wall_mesh(int w, const meshes::SurfaceMesh& mesh) {
+  const MeshWall& old = walls_.at(w);
+  MeshWall wall(mesh, old.material(), old.motion(), old.wearing(), old.name());
+  walls_[w] = std::move(wall);
+  if (!set_up_)
+    return;
+  walls_[w].build_grid(r_max_ + skin_);
+  for (auto& t : wear_acc_)
+    if (walls_[w].wearing())
+      t[w].assign(8 * walls_[w].n_faces() + 8, 0.0);
+  rebuild();
+}
+
 WearIntegrals System::wear_integrals(int w) const {
   const auto& wall = walls_.at(w);
   if (!wall.wearing())

@@ -42,6 +42,26 @@ struct WearIntegrals {
   Vec3 total_impulse;
 };
 
+/// Everything that decides how a set-up System continues: the real particles in the engine's
+/// order, the pair list with its tangential histories, the wall-contact slots and the clock.
+/// Exported after a stage and imported into a System set up with the same particles, walls
+/// and thread count, it continues the run bit for bit (checkpoints).
+struct SystemState {
+  std::vector<Vec3> position, velocity, angular_velocity; ///< [m], [m/s], [rad/s]
+  std::vector<Vec3> force, torque;                        ///< [N], [N m] of the last step
+  std::vector<double> radius, mass, inertia;              ///< [m], [kg], [kg m^2]
+  std::vector<int> material;
+  std::vector<std::int64_t> id;
+  std::vector<std::uint32_t> ghost_owner;    ///< real particle behind each ghost slot
+  std::vector<std::uint32_t> pair_i, pair_j; ///< listed pairs (j >= n: ghost slot j - n)
+  std::vector<Vec3> pair_history;            ///< [m] tangential overlap per listed pair
+  std::vector<std::uint32_t> wall_particles; ///< particles owning wall-contact slots
+  std::vector<Vec3> slot_normal, slot_delta; ///< [-], [m] per slot
+  std::vector<std::int32_t> slot_wall;       ///< wall of each slot (-1: free)
+  double time = 0;                           ///< [s]
+  std::uint64_t n_steps = 0, n_rebuilds = 0;
+};
+
 struct Energy {
   double kinetic = 0, rotational = 0, potential = 0, elastic = 0; ///< [J]
   double total() const { return kinetic + rotational + potential + elastic; }
@@ -86,6 +106,17 @@ public:
   /// Moves the vertices of wall w (same topology, e.g. a worn surface) and rebuilds the
   /// contact candidates; contact histories are kept.
   void set_wall_vertices(int w, const std::vector<Vec3>& vertices);
+
+  /// Replaces the mesh of wall w (new topology allowed, e.g. a remeshed worn surface); its
+  /// material, motion, wear flag and name stay. The wall's wear integrals restart at zero.
+  void replace_wall_mesh(int w, const meshes::SurfaceMesh& mesh);
+
+  /// The state that decides the continuation (see SystemState).
+  SystemState export_state() const;
+  /// Takes over a state exported from a System with the same particles (radii, materials),
+  /// walls and thread count, after setup(); rebuilds the lists from it. Forces are taken as
+  /// stored, not recomputed, so tangential histories are not advanced twice.
+  void import_state(const SystemState& state);
 
   /// Window integrals of a wearing wall (summed over threads in a fixed order).
   WearIntegrals wear_integrals(int wall) const;

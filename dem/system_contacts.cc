@@ -86,6 +86,9 @@ void System::rebuild() {
         p.position[i] = rotate_z(p.position[i], cs, sn);
         p.velocity[i] = rotate_z(p.velocity[i], cs, sn);
         p.angular_velocity[i] = rotate_z(p.angular_velocity[i], cs, sn);
+        // Forces too: after import_state() they are used for the next half-kick as stored.
+        p.force[i] = rotate_z(p.force[i], cs, sn);
+        p.torque[i] = rotate_z(p.torque[i], cs, sn);
         const std::int32_t q = slot_q_of_id_[p.id[i]];
         for (int k = 0; q >= 0 && k < wall_slots; ++k) {
           WallSlot& sl = slots_[wall_slots * q + k];

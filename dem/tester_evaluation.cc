@@ -87,18 +87,22 @@ TesterEvaluation::TesterEvaluation(const meshes::SurfaceMesh& sample,
   // Column midlines along the flow from the pattern (also for the plain sample).
   meshes::SampleGeometry pattern = geometry;
   pattern.convex = true;
-  std::vector<double> column_y;
   for (const auto& e : meshes::element_sites(pattern)) {
-    if (e.column > int(column_y.size()))
-      column_y.resize(e.column, 0);
-    column_y[e.column - 1] = e.y;
+    if (e.column > int(column_y_.size()))
+      column_y_.resize(e.column, 0);
+    column_y_[e.column - 1] = e.y;
   }
-  n_columns_ = int(column_y.size());
+  n_columns_ = int(column_y_.size());
+  set_surface(sample);
+}
+
+void TesterEvaluation::set_surface(const meshes::SurfaceMesh& sample) {
   const auto centroids = meshes::face_centroids(sample);
   const std::size_t nf = sample.n_faces();
   face_column_.assign(nf, 0);
   face_label_ = sample.face_labels;
-  wears_.resize(nf);
+  wears_.assign(nf, 0);
+  // Labels seen before stay (an element worn away still has its column in the records).
   for (std::size_t f = 0; f < nf; ++f) {
     const int l = sample.face_labels[f];
     wears_[f] = meshes::label::wears(l);
@@ -108,12 +112,13 @@ TesterEvaluation::TesterEvaluation(const meshes::SurfaceMesh& sample,
         element_labels_.push_back(l);
     } else if (l == meshes::label::base) {
       int c = 1;
-      while (c < n_columns_ && centroids[f].y > 0.5 * (column_y[c - 1] + column_y[c]))
+      while (c < n_columns_ && centroids[f].y > 0.5 * (column_y_[c - 1] + column_y_[c]))
         ++c;
       face_column_[f] = c;
     }
   }
   std::sort(element_labels_.begin(), element_labels_.end());
+  height_.clear();
 }
 
 void TesterEvaluation::update_height_map(const meshes::SurfaceMesh& placed) {

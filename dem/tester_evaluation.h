@@ -68,6 +68,10 @@ public:
                    const meshes::SamplePlacement& placement, double layer_diameter,
                    double steady_threshold, int steady_revolutions);
 
+  /// Takes a new sample surface (sample frame; e.g. remeshed): per-face columns and labels
+  /// are derived anew, the revolution history is kept.
+  void set_surface(const meshes::SurfaceMesh& sample);
+
   int n_columns() const { return n_columns_; }
   const std::vector<int>& element_labels() const { return element_labels_; }
   /// Column (1-based) of each face, 0 for sides and bottom.
@@ -94,6 +98,7 @@ private:
   double layer_diameter_, steady_threshold_;
   int steady_revolutions_;
   int n_columns_ = 0;
+  std::vector<double> column_y_; ///< [m] column midlines along the flow, sample frame
   std::vector<int> face_column_, face_label_, element_labels_;
   std::vector<char> wears_;
   // Height of the wear surface over the footprint, sample frame (rebuilt per revision).

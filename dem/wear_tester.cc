@@ -12,6 +12,7 @@
 #include "dem/wear_tester.h"
 
 #include "meshes/sample_generator.h"
+#include "meshes/surface_locator.h"
 #include "meshes/tester_walls.h"
 
 #include <omp.h>
@@ -189,13 +190,7 @@ const RevolutionRecord&
 WearTester::run_revolution(const std::function<void(const TesterProgress&)>& progress) {
   if (steps_per_revolution_ == 0)
     throw std::logic_error("WearTester::run_revolution before fill_and_settle");
-  if (!rotating_) {
-    WallMotion rotation;
-    rotation.angular_velocity = dem_.rotation_rate_deg * pi / 180;
-    for (int w : rotating_walls_)
-      system_.set_wall_motion(w, rotation);
-    rotating_ = true;
-  }
+  start_rotation();
   system_.reset_wear_integrals();
   evaluation_->begin_revolution(system_.time());
   const std::uint64_t n = steps_per_revolution_;
@@ -264,6 +259,87 @@ WearTester::run_revolution(const std::function<void(const TesterProgress&)>& pro
   }
   ++revolution_;
   return r;
+}
+
+} // namespace wear::dem
+
+namespace wear::dem {
+
+void WearTester::start_rotation() {
+  if (rotating_)
+    return;
+  WallMotion rotation;
+  rotation.angular_velocity = dem_.rotation_rate_deg * pi / 180;
+  for (int w : rotating_walls_)
+    system_.set_wall_motion(w, rotation);
+  rotating_ = true;
+}
+
+int WearTester::set_sample_surface(const meshes::SurfaceMesh& sample, double push_tolerance) {
+  if (deformation_)
+    throw std::logic_error("WearTester: the sample surface cannot be replaced while the "
+                           "reference deformation moves its nodes");
+  const auto placed = meshes::place_in_tester(sample, geometry_.sample, geometry_.placement);
+  int n_pushed = 0;
+  auto& p = system_.particles;
+  if (p.n_real > 0) {
+    // A receding surface moves away from the bed; only where the new surface lies outside
+    // the old one can it enclose particles: remeshing chords, the volume-restoring offset,
+    // and tangential relaxation on a convex cap (a tangential move leaves a curved surface
+    // outwards).
+    const meshes::SurfaceLocator locator(placed);
+    const auto normals = meshes::face_normals(placed);
+    const auto box = meshes::bounding_box(placed);
+    double r_max = 0;
+    for (std::size_t i = 0; i < p.n_real; ++i)
+      r_max = std::max(r_max, p.radius[i]);
+    for (std::size_t i = 0; i < p.n_real; ++i) {
+      const Vec3& x = p.position[i];
+      if (x.x < box.min.x - r_max || x.y < box.min.y - r_max || x.z < box.min.z - r_max ||
+          x.x > box.max.x + r_max || x.y > box.max.y + r_max || x.z > box.max.z + r_max)
+        continue;
+      const auto near = locator.nearest(x);
+      if (near.face < 0)
+        continue;
+      const Vec3& n = normals[std::size_t(near.face)];
+      const double side = meshes::dot(x - near.point, n);
+      const double r = p.radius[i];
+      const double overlap = side >= 0 ? r - near.distance : r + near.distance;
+      if (overlap <= push_tolerance * r)
+        continue;
+      const Vec3 out = side > 0 && near.distance > 0 ? (x - near.point) / near.distance : n;
+      p.position[i] = near.point + out * r;
+      ++n_pushed;
+    }
+  }
+  system_.replace_wall_mesh(sample_wall_, placed);
+  evaluation_->set_surface(sample);
+  cumulative_removed_.assign(placed.n_faces(), 0);
+  last_removed_.clear();
+  last_integrals_ = {};
+  return n_pushed;
+}
+
+void WearTester::restore(const SystemState& state, int revolutions_done,
+                         const std::vector<RevolutionRecord>& records) {
+  if (system_.particles.n_real == 0) {
+    auto& p = system_.particles;
+    for (std::size_t i = 0; i < state.position.size(); ++i) {
+      p.add(state.position[i], state.velocity[i], state.radius[i], dem_.particle.density,
+            state.material[i]);
+      p.mass.back() = state.mass[i];
+      p.inertia.back() = state.inertia[i];
+      p.id.back() = state.id[i];
+    }
+    omp_set_num_threads(dem_.n_threads > 0 ? dem_.n_threads : omp_get_num_procs());
+    system_.setup();
+    steps_per_revolution_ = std::uint64_t(std::llround(revolution_time_ / system_.time_step()));
+  }
+  if (revolutions_done > 0)
+    start_rotation();
+  system_.import_state(state);
+  evaluation_->history() = records;
+  revolution_ = revolutions_done;
 }
 
 } // namespace wear::dem

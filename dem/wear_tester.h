@@ -74,11 +74,24 @@ public:
   const RevolutionRecord&
   run_revolution(const std::function<void(const TesterProgress&)>& progress = {});
 
+  /// Replaces the sample surface (sample frame, e.g. worn and remeshed by the FEM; face
+  /// order defines the face fields from now on). Particles that the new surface overlaps by
+  /// more than `push_tolerance` of their radius are moved out along the surface normal to
+  /// zero overlap; returns how many. Per-face sums restart on the new faces.
+  int set_sample_surface(const meshes::SurfaceMesh& sample, double push_tolerance = 0.01);
+
+  /// Continues a run from a checkpoint instead of fill_and_settle(): sets the system up with
+  /// the state's particles and takes over the state, the revolution count and the evaluation
+  /// records. The surface must be set first (set_sample_surface) when it changed.
+  void restore(const SystemState& state, int revolutions_done,
+               const std::vector<RevolutionRecord>& records);
+
   System& system() { return system_; }
   const System& system() const { return system_; }
   int sample_wall() const { return sample_wall_; }
   const meshes::SurfaceMesh& sample_mesh() const { return system_.wall(sample_wall_).mesh(); }
   const TesterEvaluation& evaluation() const { return *evaluation_; }
+  TesterEvaluation& evaluation() { return *evaluation_; }
   const WearLaw& wear_law() const { return *law_; }
   const ReferenceDeformation* deformation() const { return deformation_.get(); }
   /// Integrals and removed volume per face [m^3] of the last completed revolution.
@@ -106,6 +119,7 @@ private:
   std::uint64_t steps_per_revolution_ = 0;
   int revolution_ = 0;
   bool rotating_ = false;
+  void start_rotation();
 };
 
 /// Throws std::invalid_argument naming "DEM/<parameter>" for a non-physical value.

@@ -20,6 +20,11 @@
 #include "meshes/face_transfer.h"
 #include "meshes/mesh_quality.h"
 
+#include <deal.II/grid/tria_description.h>
+
+#include <algorithm>
+#include <array>
+#include <map>
 #include <stdexcept>
 
 namespace wear::fem {
@@ -36,6 +41,77 @@ WornSample::WornSample(const std::string& msh_path, const meshes::SurfaceMesh& s
   tria_ = std::make_unique<dealii::Triangulation<3>>();
   read_sample_mesh(msh_path, *tria_);
   set_surface(surface);
+}
+
+WornSample::WornSample(const WornSampleState& st, const WornSampleParameters& p) : p_(p) {
+  const std::size_t nv = st.vertices.size() / 3, nc = st.tetrahedra.size() / 4;
+  if (st.vertices.size() != 3 * nv || st.tetrahedra.size() != 4 * nc || nc == 0 ||
+      st.boundary_faces.size() != 3 * st.boundary_ids.size())
+    throw std::runtime_error("worn sample state: mesh arrays of inconsistent sizes");
+  std::vector<dealii::Point<3>> points(nv);
+  for (std::size_t v = 0; v < nv; ++v)
+    points[v] =
+        dealii::Point<3>(st.vertices[3 * v], st.vertices[3 * v + 1], st.vertices[3 * v + 2]);
+  std::vector<dealii::CellData<3>> cells(nc, dealii::CellData<3>(4));
+  for (std::size_t c = 0; c < nc; ++c)
+    for (unsigned int k = 0; k < 4; ++k) {
+      const auto v = st.tetrahedra[4 * c + k];
+      if (v < 0 || std::size_t(v) >= nv)
+        throw std::runtime_error("worn sample state: tetrahedron " + std::to_string(c) +
+                                 " refers to a missing vertex");
+      cells[c].vertices[k] = unsigned(v);
+    }
+  tria_ = std::make_unique<dealii::Triangulation<3>>();
+  tria_->create_triangulation(points, cells, dealii::SubCellData());
+  using Key = std::array<std::int64_t, 3>;
+  std::map<Key, int> id_of;
+  for (std::size_t f = 0; f < st.boundary_ids.size(); ++f) {
+    Key k{st.boundary_faces[3 * f], st.boundary_faces[3 * f + 1], st.boundary_faces[3 * f + 2]};
+    std::sort(k.begin(), k.end());
+    id_of[k] = st.boundary_ids[f];
+  }
+  for (const auto& cell : tria_->active_cell_iterators())
+    for (const auto f : cell->face_indices())
+      if (cell->face(f)->at_boundary()) {
+        Key k{cell->face(f)->vertex_index(0), cell->face(f)->vertex_index(1),
+              cell->face(f)->vertex_index(2)};
+        std::sort(k.begin(), k.end());
+        const auto it = id_of.find(k);
+        if (it == id_of.end())
+          throw std::runtime_error("worn sample state: a boundary face has no label");
+        cell->face(f)->set_boundary_id(dealii::types::boundary_id(it->second));
+      }
+  map_ = std::make_unique<BoundaryFaceMap>(*tria_, st.surface);
+  removed_ = meshes::FaceField<double>("removed volume", "m^3", meshes::Extensivity::extensive,
+                                       st.surface);
+  depth_ = meshes::FaceField<double>("wear depth", "m", meshes::Extensivity::intensive, st.surface);
+  if (st.removed_volume.size() != removed_.size() || st.wear_depth.size() != depth_.size())
+    throw std::runtime_error("worn sample state: face fields do not match the surface");
+  removed_.values() = st.removed_volume;
+  depth_.values() = st.wear_depth;
+  n_remeshes_ = st.n_remeshes;
+}
+
+WornSampleState WornSample::state() const {
+  WornSampleState st;
+  for (const auto& v : tria_->get_vertices())
+    for (int d = 0; d < 3; ++d)
+      st.vertices.push_back(v[d]);
+  for (const auto& cell : tria_->active_cell_iterators()) {
+    for (unsigned int k = 0; k < 4; ++k)
+      st.tetrahedra.push_back(cell->vertex_index(k));
+    for (const auto f : cell->face_indices())
+      if (cell->face(f)->at_boundary()) {
+        for (unsigned int k = 0; k < 3; ++k)
+          st.boundary_faces.push_back(cell->face(f)->vertex_index(k));
+        st.boundary_ids.push_back(int(cell->face(f)->boundary_id()));
+      }
+  }
+  st.surface = surface();
+  st.removed_volume = removed_.values();
+  st.wear_depth = depth_.values();
+  st.n_remeshes = n_remeshes_;
+  return st;
 }
 
 void WornSample::set_surface(const meshes::SurfaceMesh& surface) {

@@ -9,8 +9,10 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace wear::fem {
 
@@ -34,6 +36,18 @@ struct WearStageReport {
   double motion_seconds = 0, remesh_seconds = 0;
 };
 
+/// A worn sample as plain arrays, for checkpoints: the volume mesh, its boundary surface
+/// (with the revision the face fields refer to) and the accumulated fields.
+struct WornSampleState {
+  std::vector<double> vertices;                   ///< [m] n x 3, sample frame
+  std::vector<std::int64_t> tetrahedra;           ///< n x 4 vertex indices
+  std::vector<std::int64_t> boundary_faces;       ///< n x 3 vertex indices
+  std::vector<int> boundary_ids;                  ///< label of each boundary face
+  meshes::SurfaceMesh surface;                    ///< face order of the fields below
+  std::vector<double> removed_volume, wear_depth; ///< [m^3], [m] per surface face
+  int n_remeshes = 0;
+};
+
 class WornSample {
 public:
   /// Reads the sample mesh; its boundary surface comes from the triangulation.
@@ -42,6 +56,10 @@ public:
   /// meshes::read_msh_surface, so per-face fields keep their indices) onto it.
   WornSample(const std::string& msh_path, const meshes::SurfaceMesh& surface,
              const WornSampleParameters& p);
+
+  /// Rebuilds a sample from its state (state()); bit for bit the same mesh and fields.
+  WornSample(const WornSampleState& state, const WornSampleParameters& p);
+  WornSampleState state() const;
 
   const dealii::Triangulation<3>& triangulation() const { return *tria_; }
   const meshes::SurfaceMesh& surface() const { return map_->surface(); }

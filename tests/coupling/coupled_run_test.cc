@@ -1,0 +1,188 @@
+// `wearsim run` on a small tester (30-degree sector, s = 4, shallow bed, coarse convex
+// sample, one revolution per stage, wear amplified 20 times so the geometry visibly changes):
+// - the FEM mesh update removes what the amplified wear law asks, within 0.5 % every stage;
+// - the stage-averaged load presses the wear faces down (frame transform of the impulses);
+// - a run killed after a staged stage and resumed equals the uninterrupted run bit for bit;
+// - bad input (too much wear per stage, a damaged checkpoint, an unwritable folder) stops
+//   with a message naming the parameter or file, and never overwrites a good checkpoint.
+// The [long] test drives a large amplification past the node-moving method's distortion
+// limit and checks that the staged scheme goes on to three times that wear depth.
+#include "coupling/checkpoint.h"
+#include "coupling/coupled_run.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+using namespace wear::coupling;
+
+namespace {
+CaseParameters small_case(const std::string& dir, const std::string& schedule,
+                          double amplification) {
+  CaseParameters p;
+  p.geometry.sample.convex = true;
+  p.geometry.sample.mesh_size = 3e-3;
+  p.geometry.sample.mesh_size_bottom = 5e-3;
+  p.geometry.sample.curvature_refinement = false;
+  p.geometry.placement.angle_deg = 15;
+  p.geometry.tester.sector_angle_deg = 30;
+  p.geometry.tester.consolidator = false;
+  p.geometry.tester.wall_height = 0.2;
+  p.dem.fill_height = 0.055;
+  p.dem.settle_time = 0.15;
+  p.dem.time_step_fraction = 0.35;
+  p.dem.samples_per_revolution = 5;
+  p.dem.n_threads = 2;
+  p.coupling.schedule = schedule;
+  p.coupling.amplification = amplification;
+  p.output.directory = dir;
+  return p;
+}
+
+std::string run_case(const CaseParameters& p, const RunOptions& o = {false, false, 0}) {
+  std::ostringstream log;
+  CoupledRun run(p, log, o);
+  run.run();
+  return log.str();
+}
+
+std::string error_of(const CaseParameters& p, const RunOptions& o = {false, false, 0}) {
+  try {
+    run_case(p, o);
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string file_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+} // namespace
+
+TEST_CASE("wearsim run: staged stages remove the amplified wear and resume bit for bit",
+          "[coupling][run]") {
+  const std::string a = "coupled_run_a", b = "coupled_run_b";
+  std::filesystem::remove_all(a);
+  std::filesystem::remove_all(b);
+  const std::string schedule = "1 dem-only, 2 staged";
+  // The stress-informed law is on (scale 1 at 0.1 MPa), so the per-face stress crosses the
+  // stage boundary, and the checkpoint, as the next stage's wear factor.
+  const auto with_stress_law = [&](const std::string& dir) {
+    auto p = small_case(dir, schedule, 20);
+    p.coupling.stress_informed = {true, 1.0, 1e5, 1.0};
+    return p;
+  };
+  const auto pa = with_stress_law(a);
+  const std::string log = run_case(pa);
+  INFO(log);
+  for (const char* f : {"summary.csv", "stages.csv", "history.h5", "history.xdmf", "checkpoint.h5",
+                        "parameters.prm", "surface/stage_0003.vtu", "volume/stage_0003.h5",
+                        "volume/stage_0003.vtu"})
+    CHECK(std::filesystem::file_size(a + "/" + f) > 0);
+  const auto ca = read_checkpoint(a + "/checkpoint.h5");
+  REQUIRE(ca.stages.size() == 3);
+  REQUIRE(ca.revolutions.size() == 3);
+  CHECK(ca.stages[0].applied_volume == 0);
+  for (const auto& s : ca.stages) {
+    INFO("stage " << s.stage);
+    CHECK(s.dem_wear_volume > 0);
+    CHECK(std::isfinite(s.dem_wear_volume));
+    if (s.stage == 1)
+      continue;
+    // Archard volume x amplification x stress factor reaches the geometry: no stress before
+    // the first staged stage (factor 1), then 1 + sigma_vM / 0.1 MPa from the stage before.
+    if (s.stage == 2) {
+      CHECK(s.mean_stress_factor == 1);
+      CHECK(s.applied_volume == Approx(20 * s.dem_wear_volume).epsilon(1e-12));
+    } else {
+      const double max_factor = 1 + ca.stages[std::size_t(s.stage - 2)].max_von_mises / 1e5;
+      CHECK(s.mean_stress_factor > 1);
+      CHECK(s.mean_stress_factor < max_factor);
+      CHECK(s.applied_volume > 20 * s.dem_wear_volume);
+      CHECK(s.applied_volume < 20 * s.dem_wear_volume * max_factor);
+    }
+    // ... and the FEM mesh loses that volume (0.5 %).
+    CHECK(std::abs(s.geometry_volume_change - s.applied_volume) < 5e-3 * s.applied_volume);
+    CHECK(s.min_scaled_jacobian > 0);
+    CHECK(s.max_von_mises > 0);
+    // The impulses reach the FEM in the sample frame: the bed presses the wear faces down
+    // (z up), nearly along their normals (2 degree incline; element flanks are steeper).
+    CHECK(s.wear_face_normal_force > 0);
+    CHECK(-s.wear_face_force_z > 0.6 * s.wear_face_normal_force);
+    CHECK(-s.wear_face_force_z < 1.05 * s.wear_face_normal_force);
+  }
+  CHECK(ca.stages[2].cumulative_applied ==
+        Approx(ca.stages[1].applied_volume + ca.stages[2].applied_volume));
+  // The FEM sample's accumulated removed volume is what the stages applied.
+  double removed = 0;
+  for (double v : ca.sample.removed_volume)
+    removed += v;
+  CHECK(removed == Approx(ca.stages[2].cumulative_applied).epsilon(1e-9));
+
+  // Killed after the first staged stage, then resumed.
+  const auto pb = with_stress_law(b);
+  run_case(pb, {false, false, 2});
+  CHECK(read_checkpoint(b + "/checkpoint.h5").stages_done == 2);
+  const std::string resumed = run_case(pb, {true, false, 0});
+  CHECK(resumed.find("resumed after stage 2") != std::string::npos);
+  const auto cb = read_checkpoint(b + "/checkpoint.h5");
+  REQUIRE(cb.stages_done == 3);
+  CHECK(cb.dem.position == ca.dem.position);
+  CHECK(cb.dem.velocity == ca.dem.velocity);
+  CHECK(cb.dem.angular_velocity == ca.dem.angular_velocity);
+  CHECK(cb.dem.pair_history == ca.dem.pair_history);
+  CHECK(cb.sample.vertices == ca.sample.vertices);
+  CHECK(cb.sample.removed_volume == ca.sample.removed_volume);
+  CHECK(cb.face_von_mises == ca.face_von_mises);
+  for (std::size_t k = 0; k < 3; ++k) {
+    CHECK(cb.stages[k].applied_volume == ca.stages[k].applied_volume);
+    CHECK(cb.stages[k].geometry_volume_change == ca.stages[k].geometry_volume_change);
+    CHECK(cb.stages[k].max_von_mises == ca.stages[k].max_von_mises);
+    CHECK(cb.revolutions[k].wear_volume == ca.revolutions[k].wear_volume);
+  }
+  CHECK(file_text(b + "/summary.csv").size() > 0);
+
+  // Resuming with another case is refused.
+  auto other = pb;
+  other.coupling.amplification = 30;
+  CHECK_THAT(error_of(other, {true, false, 0}),
+             Catch::Matchers::Contains("the case differs from the one checkpoint"));
+}
+
+TEST_CASE("wearsim run: bad input stops clearly and keeps the last good checkpoint",
+          "[coupling][run]") {
+  const std::string dir = "coupled_run_bad";
+  std::filesystem::remove_all(dir);
+  // 10^5 times the wear removes far more than half a 3 mm edge in one stage.
+  const auto p = small_case(dir, "1 staged", 1e5);
+  const std::string e = error_of(p);
+  CHECK_THAT(e, Catch::Matchers::Contains("Coupling/Maximum depth fraction") &&
+                    Catch::Matchers::Contains("Coupling/Amplification"));
+  // The stage-0 checkpoint (the settled bed) is intact and still resumable.
+  const std::string before = file_text(dir + "/checkpoint.h5");
+  CHECK(read_checkpoint(dir + "/checkpoint.h5").stages_done == 0);
+
+  // A damaged checkpoint is named and left as it is.
+  {
+    std::ofstream damaged(dir + "/checkpoint.h5", std::ios::binary | std::ios::trunc);
+    damaged << before.substr(0, before.size() / 2);
+  }
+  const std::string damaged = file_text(dir + "/checkpoint.h5");
+  const std::string e2 = error_of(small_case(dir, "1 staged", 1), {true, false, 0});
+  CHECK_THAT(e2, Catch::Matchers::Contains("checkpoint.h5"));
+  CHECK(file_text(dir + "/checkpoint.h5") == damaged);
+
+  // An output folder that cannot be written.
+  CHECK_THAT(error_of(small_case("/proc/wearsim-cannot-write", "1 staged", 1)),
+             Catch::Matchers::Contains("Output/Directory"));
+  // A schedule that is not one.
+  CHECK_THAT(error_of(small_case(dir, "2 stagd", 1)),
+             Catch::Matchers::Contains("Coupling/Schedule"));
+  CHECK_THAT(error_of(small_case(dir, "1 reference, 1 staged", 1)),
+             Catch::Matchers::Contains("Coupling/Schedule"));
+}
