@@ -181,9 +181,10 @@ void visit(CaseParameters& c, Visitor&& v) {
            "physical); recorded in every output. In `wearsim run` it also replaces "
            "Deformation/Amplification for the reference scheme.");
     v.real("Maximum depth fraction", k.max_depth_fraction,
-           "[-] Largest wear depth one stage may remove from a face, as a fraction of that "
-           "face's longest edge; a stage asking for more stops the run (lower the "
-           "amplification or the revolutions per stage).");
+           "[-] Largest recession one stage may ask at a surface vertex (removed volume over "
+           "area of the wear faces around it), as a fraction of the longest edge there; a "
+           "stage asking for more stops the run (lower the amplification or the revolutions "
+           "per stage).");
     v.real("Push tolerance", k.push_tolerance,
            "[-] After a geometry update, particles the new surface overlaps by more than this "
            "fraction of their radius are pushed out to zero overlap (and counted).");

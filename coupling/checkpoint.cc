@@ -57,6 +57,7 @@ void visit(StageRecord& r, V& v) {
   v("tetrahedra", r.n_tetrahedra);
   v("surface_faces", r.n_surface_faces);
   v("pushed_particles", r.n_pushed);
+  v("max_push_m", r.max_push);
   v("min_scaled_jacobian", r.min_scaled_jacobian);
   v("max_von_mises_Pa", r.max_von_mises);
   v("safety_factor", r.safety_factor);

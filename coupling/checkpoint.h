@@ -28,6 +28,7 @@ struct StageRecord {
   double mean_stress_factor = 1;     ///< [-] area-weighted stress-informed factor on wear faces
   int increments = 0, n_remeshes = 0, total_remeshes = 0;
   int n_tetrahedra = 0, n_surface_faces = 0, n_pushed = 0;
+  double max_push = 0;            ///< [m] largest displacement of a pushed particle
   double min_scaled_jacobian = 0; ///< [-] of the mesh handed on
   double max_von_mises = 0;       ///< [Pa] under the stage-averaged loads (0: not solved)
   double safety_factor = 0;       ///< [-] yield / max von Mises

@@ -6,8 +6,9 @@
 //   2. Wear: removed volume dV_f = A_amp * s(sigma_f) * V_f on the wear faces, with the
 //      declared amplification A_amp and, for the stress-informed law, the factor
 //      s = 1 + c (sigma_vM,f / sigma_ref)^m from the previous stage's stress (else 1). A
-//      stage whose depth dV_f / area_f exceeds the allowed fraction of the face's longest
-//      edge is refused before anything changes.
+//      stage whose recession depth at a vertex, sum(dV_f) / sum(A_f) over the wear faces
+//      around it, exceeds the allowed fraction of the longest edge there is refused before
+//      anything changes.
 //   3. FEM: elastic stress of the current (pre-update) sample under the stage-averaged face
 //      forces F_f = I_f / T_stage (sample frame, clamped bottom).
 //   4. Geometry: volume-exact recession of the worn faces, mesh motion, remeshing when the
@@ -51,12 +52,49 @@ std::string format(const char* f, double a) {
   return b;
 }
 
-double longest_edge(const meshes::SurfaceMesh& m, std::size_t f) {
-  const auto& t = m.triangles[f];
-  double e = 0;
-  for (int k = 0; k < 3; ++k)
-    e = std::max(e, meshes::norm(m.vertices[t[k]] - m.vertices[t[(k + 1) % 3]]));
-  return e;
+// The depth the geometry recedes by at each vertex, sum(dV_f) / sum(A_f) over the wear
+// faces around it (the area-weighted node recession of meshes/recession), as a fraction of
+// the longest edge at the vertex. A per-face depth dV_f / A_f would be noise on small faces.
+struct DepthCheck {
+  double max_depth = 0;    ///< [m]
+  double max_fraction = 0; ///< [-]
+  long vertex = -1;        ///< where the fraction is largest
+  double depth_there = 0;  ///< [m]
+  int label = 0;           ///< a wear label at that vertex
+};
+
+DepthCheck vertex_depths(const meshes::SurfaceMesh& m, const std::vector<double>& removed,
+                         const std::vector<double>& area) {
+  const std::size_t nv = m.n_vertices();
+  std::vector<double> volume(nv, 0), around(nv, 0), edge(nv, 0);
+  std::vector<int> label(nv, 0);
+  for (std::size_t f = 0; f < m.n_faces(); ++f) {
+    if (!meshes::label::wears(m.face_labels[f]))
+      continue;
+    const auto& t = m.triangles[f];
+    for (int k = 0; k < 3; ++k) {
+      volume[t[k]] += removed[f];
+      around[t[k]] += area[f];
+      label[t[k]] = m.face_labels[f];
+      const double e = meshes::norm(m.vertices[t[k]] - m.vertices[t[(k + 1) % 3]]);
+      edge[t[k]] = std::max(edge[t[k]], e);
+      edge[t[(k + 1) % 3]] = std::max(edge[t[(k + 1) % 3]], e);
+    }
+  }
+  DepthCheck c;
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (around[v] <= 0)
+      continue;
+    const double depth = volume[v] / around[v];
+    c.max_depth = std::max(c.max_depth, depth);
+    if (depth / edge[v] > c.max_fraction) {
+      c.max_fraction = depth / edge[v];
+      c.vertex = long(v);
+      c.depth_there = depth;
+      c.label = label[v];
+    }
+  }
+  return c;
 }
 
 constexpr double never = std::numeric_limits<double>::infinity();
@@ -163,9 +201,12 @@ void CoupledRun::setup() {
 void CoupledRun::run() {
   setup();
   log_ << "stage scheme     revs   wear[mm^3]  applied[mm^3]  change[mm^3]  remesh  min-SJ   "
-          "max-vM[MPa]  pushed  time[s]\n";
+          "max-vM[MPa]  pushed  by[mm]  time[s]\n";
   int done_now = 0;
+  const auto start = std::chrono::steady_clock::now();
   for (std::size_t k = stages_.size(); k < plan_.size(); ++k) {
+    if (done_now > 0)
+      stage_wall_ = seconds_since(start) / done_now;
     StageRecord r;
     r.stage = int(k) + 1;
     r.scheme = plan_[k];
@@ -184,7 +225,8 @@ void CoupledRun::run() {
       break;
     }
     checkpoint();
-    if (options_.stop_after > 0 && ++done_now >= options_.stop_after && k + 1 < plan_.size()) {
+    ++done_now;
+    if (options_.stop_after > 0 && done_now >= options_.stop_after && k + 1 < plan_.size()) {
       log_ << "stopped after stage " << r.stage << " as asked; continue with --resume\n";
       return;
     }
@@ -208,12 +250,22 @@ void CoupledRun::run_dem(StageRecord& r) {
   const int n_rev = p_.coupling.revolutions_per_stage;
   for (int q = 0; q < n_rev; ++q) {
     const auto& rec = tester_->run_revolution([&](const dem::TesterProgress& pr) {
-      if (live)
-        std::fprintf(stderr,
-                     "\rstage %d/%zu %s: revolution %d (%d of %d) %5.1f %%  %.2e "
-                     "particle-steps/s   ",
-                     r.stage, plan_.size(), scheme_name(Scheme(r.scheme)).c_str(), pr.revolution,
-                     q + 1, n_rev, 100 * pr.fraction, pr.particle_steps_per_second);
+      if (!live)
+        return;
+      // Time left: this stage's DEM from its rate so far, later stages at the mean wall time
+      // of the stages finished in this invocation (or this stage's DEM estimate before one).
+      const double dem_left =
+          ((n_rev - q) - pr.fraction) * double(tester_->steps_per_revolution()) *
+          double(tester_->system().particles.n_real) / std::max(1.0, pr.particle_steps_per_second);
+      const double per_stage = stage_wall_ > 0
+                                   ? stage_wall_
+                                   : dem_left / std::max(1e-9, 1.0 - (q + pr.fraction) / n_rev);
+      const double left = dem_left + per_stage * double(plan_.size() - std::size_t(r.stage));
+      std::fprintf(stderr,
+                   "\rstage %d/%zu %s: revolution %d (%d of %d) %5.1f %%  %.2e particle-steps/s  "
+                   "time left %.0f min   ",
+                   r.stage, plan_.size(), scheme_name(Scheme(r.scheme)).c_str(), pr.revolution,
+                   q + 1, n_rev, 100 * pr.fraction, pr.particle_steps_per_second, left / 60);
     });
     const auto& wi = tester_->last_integrals();
     const auto& removed = tester_->last_removed_volume();
@@ -222,12 +274,14 @@ void CoupledRun::run_dem(StageRecord& r) {
       stage_normal_impulse_[f] += wi.normal_impulse[f];
       stage_impulse_[f] += meshes::tester_to_sample(wi.impulse[f], g.sample, g.placement) - origin;
     }
-    if (Scheme(r.scheme) == Scheme::reference) {
-      const double before = stages_.empty() ? 0 : stages_.back().cumulative_applied;
-      r.applied_volume = rec.applied_volume - before;
+    if (Scheme(r.scheme) == Scheme::reference) { // the records are cumulative
+      const auto& history = tester_->evaluation().history();
+      const dem::RevolutionRecord* before =
+          r.first_revolution > 1 ? &history[std::size_t(r.first_revolution - 2)] : nullptr;
+      r.applied_volume = rec.applied_volume - (before ? before->applied_volume : 0);
       r.cumulative_applied = rec.applied_volume;
       r.geometry_volume_change =
-          rec.enclosed_volume_loss - (stages_.empty() ? 0 : stages_.back().geometry_volume_change);
+          rec.enclosed_volume_loss - (before ? before->enclosed_volume_loss : 0);
       r.distortion = rec.distortion;
     }
   }
@@ -249,7 +303,6 @@ meshes::FaceField<double> CoupledRun::compute_wear(StageRecord& r) {
   meshes::FaceField<double> removed("removed volume", "m^3", meshes::Extensivity::extensive,
                                     surface);
   double factor_area = 0, wear_area = 0;
-  long worst = -1;
   for (std::size_t f = 0; f < nf; ++f) {
     if (!meshes::label::wears(surface.face_labels[f]))
       continue;
@@ -258,14 +311,10 @@ meshes::FaceField<double> CoupledRun::compute_wear(StageRecord& r) {
     r.dem_wear_volume += stage_removed_[f];
     factor_area += s * area[f];
     wear_area += area[f];
-    const double depth = removed[f] / area[f];
-    const double fraction = depth / longest_edge(surface, f);
-    if (fraction > r.max_depth_fraction) {
-      r.max_depth_fraction = fraction;
-      worst = long(f);
-    }
-    r.max_depth = std::max(r.max_depth, depth);
   }
+  const DepthCheck depth = vertex_depths(surface, removed.values(), area);
+  r.max_depth = depth.max_depth;
+  r.max_depth_fraction = depth.max_fraction;
   r.mean_stress_factor = wear_area > 0 ? factor_area / wear_area : 1;
   stage_applied_ = removed;
   if (Scheme(r.scheme) == Scheme::staged) {
@@ -274,10 +323,9 @@ meshes::FaceField<double> CoupledRun::compute_wear(StageRecord& r) {
         (stages_.empty() ? 0 : stages_.back().cumulative_applied) + r.applied_volume;
     if (r.max_depth_fraction > p_.coupling.max_depth_fraction)
       throw std::runtime_error(
-          "stage " + std::to_string(r.stage) + " would remove " +
-          format("%.4g", 1e3 * removed[std::size_t(worst)] / area[std::size_t(worst)]) +
-          " mm from face " + std::to_string(worst) + " (" +
-          meshes::label::name(surface.face_labels[std::size_t(worst)]) + "), " +
+          "stage " + std::to_string(r.stage) + " would recede the surface by " +
+          format("%.4g", 1e3 * depth.depth_there) + " mm at vertex " +
+          std::to_string(depth.vertex) + " (" + meshes::label::name(depth.label) + "), " +
           format("%.3g", r.max_depth_fraction) +
           " of its longest edge; Coupling/Maximum depth fraction allows " +
           format("%.3g", p_.coupling.max_depth_fraction) + ". Lower Coupling/Amplification (now " +
@@ -350,7 +398,9 @@ void CoupledRun::update_geometry(const meshes::FaceField<double>& removed, Stage
   face_von_mises_ = vm.values();
   stage_applied_ = applied;
   dem_cumulative_.assign(after.n_faces(), 0); // used only by runs without a FEM sample
-  r.n_pushed = tester_->set_sample_surface(after, p_.coupling.push_tolerance);
+  const auto pushed = tester_->set_sample_surface(after, p_.coupling.push_tolerance);
+  r.n_pushed = pushed.n_pushed;
+  r.max_push = pushed.max_distance;
 }
 
 void CoupledRun::output_results(StageRecord& r) {
@@ -364,8 +414,11 @@ void CoupledRun::output_results(StageRecord& r) {
   }
   const auto area = meshes::face_areas(surface);
   std::vector<double> cumulative = sample_ ? sample_->removed_volume().values() : dem_cumulative_;
-  if (Scheme(r.scheme) == Scheme::reference)
+  if (Scheme(r.scheme) == Scheme::reference) { // the declared (amplified) volume
     cumulative = tester_->cumulative_removed_volume();
+    for (auto& v : cumulative)
+      v *= r.amplification;
+  }
   std::vector<double> depth(surface.n_faces()), stage(stage_applied_.values());
   if (sample_)
     depth = sample_->wear_depth().values();
@@ -424,10 +477,11 @@ void CoupledRun::restore(const Checkpoint& c) {
 void CoupledRun::print_stage(const StageRecord& r) const {
   char line[256];
   std::snprintf(line, sizeof line,
-                "%5d %-9s %3d-%-3d %11.4f %14.4f %13.4f %7d %7.3f %12.3f %7d %8.1f%s\n", r.stage,
-                scheme_name(Scheme(r.scheme)).c_str(), r.first_revolution, r.last_revolution,
-                r.dem_wear_volume * 1e9, r.applied_volume * 1e9, r.geometry_volume_change * 1e9,
-                r.n_remeshes, r.min_scaled_jacobian, r.max_von_mises * 1e-6, r.n_pushed,
+                "%5d %-9s %3d-%-3d %11.4f %14.4f %13.4f %7d %7.3f %12.3f %7d %8.3f %8.1f%s\n",
+                r.stage, scheme_name(Scheme(r.scheme)).c_str(), r.first_revolution,
+                r.last_revolution, r.dem_wear_volume * 1e9, r.applied_volume * 1e9,
+                r.geometry_volume_change * 1e9, r.n_remeshes, r.min_scaled_jacobian,
+                r.max_von_mises * 1e-6, r.n_pushed, r.max_push * 1e3,
                 r.dem_seconds + r.wear_seconds + r.fem_solve_seconds + r.motion_seconds +
                     r.remesh_seconds + r.output_seconds,
                 r.distortion.empty() ? "" : "  DISTORTED");

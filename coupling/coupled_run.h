@@ -66,6 +66,7 @@ private:
   meshes::FaceField<double> stage_applied_;                  ///< [m^3] asked of the geometry
   std::vector<double> stage_von_mises_; ///< [Pa] per face, this stage's loads (pre-update)
   std::vector<double> face_von_mises_;  ///< [Pa] per face of the current surface (last stage)
+  double stage_wall_ = 0;               ///< [s] mean wall time of the stages run so far
   std::vector<double> dem_cumulative_;  ///< [m^3] wear-law volume per face (no FEM sample)
 };
 

@@ -275,12 +275,13 @@ void WearTester::start_rotation() {
   rotating_ = true;
 }
 
-int WearTester::set_sample_surface(const meshes::SurfaceMesh& sample, double push_tolerance) {
+WearTester::PushReport WearTester::set_sample_surface(const meshes::SurfaceMesh& sample,
+                                                      double push_tolerance) {
   if (deformation_)
     throw std::logic_error("WearTester: the sample surface cannot be replaced while the "
                            "reference deformation moves its nodes");
   const auto placed = meshes::place_in_tester(sample, geometry_.sample, geometry_.placement);
-  int n_pushed = 0;
+  PushReport report;
   auto& p = system_.particles;
   if (p.n_real > 0) {
     // A receding surface moves away from the bed; only where the new surface lies outside
@@ -301,15 +302,19 @@ int WearTester::set_sample_surface(const meshes::SurfaceMesh& sample, double pus
       const auto near = locator.nearest(x);
       if (near.face < 0)
         continue;
-      const Vec3& n = normals[std::size_t(near.face)];
-      const double side = meshes::dot(x - near.point, n);
+      // Bed particles lie outside the sample, and one stage moves the surface by far less
+      // than a radius, so the centre is still outside: push along closest point -> centre.
+      // (The face normal's sign is no test of side at a convex edge or vertex.)
       const double r = p.radius[i];
-      const double overlap = side >= 0 ? r - near.distance : r + near.distance;
+      const double overlap = r - near.distance;
       if (overlap <= push_tolerance * r)
         continue;
-      const Vec3 out = side > 0 && near.distance > 0 ? (x - near.point) / near.distance : n;
-      p.position[i] = near.point + out * r;
-      ++n_pushed;
+      const Vec3 out =
+          near.distance > 0 ? (x - near.point) / near.distance : normals[std::size_t(near.face)];
+      const Vec3 moved = near.point + out * r;
+      report.max_distance = std::max(report.max_distance, meshes::norm(moved - x));
+      p.position[i] = moved;
+      ++report.n_pushed;
     }
   }
   system_.replace_wall_mesh(sample_wall_, placed);
@@ -317,7 +322,7 @@ int WearTester::set_sample_surface(const meshes::SurfaceMesh& sample, double pus
   cumulative_removed_.assign(placed.n_faces(), 0);
   last_removed_.clear();
   last_integrals_ = {};
-  return n_pushed;
+  return report;
 }
 
 void WearTester::restore(const SystemState& state, int revolutions_done,

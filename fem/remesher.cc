@@ -19,6 +19,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <set>
 #include <stdexcept>
 
 namespace wear::fem {
@@ -157,6 +158,14 @@ meshes::SurfaceMesh mesh_discrete_volume(const meshes::SurfaceMesh& worn, const 
   if (algorithm != keep_surface) {
     gmsh::model::mesh::classifySurfaces(feature_angle_deg * pi / 180, true, true, pi);
     label_of = patch_labels(worn, &r.n_mixed_faces);
+    // A small worn region can end up inside a neighbour's patch and lose its label in the
+    // vote; fail this attempt so the next one (finally: keep the worn triangles) is tried.
+    std::set<int> kept;
+    for (const auto& [tag, label] : label_of)
+      kept.insert(label);
+    for (const int label : worn.labels())
+      if (!kept.count(label))
+        throw std::runtime_error("no patch kept label '" + meshes::label::name(label) + "'");
     gmsh::model::mesh::createGeometry();
   }
   gmsh::vectorpair surfaces;

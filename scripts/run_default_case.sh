@@ -1,9 +1,18 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds, and runs the default case.
+# Installs what is missing, builds, and runs the default case: cases/quick (plain vs convex
+# sample, coupled DEM-FEM stages at s = 4 in a 30-degree sector), then compares the two runs
+# and writes the plots.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install_deps.sh
 mkdir -p build
 bash scripts/build.sh
-./build/wearsim mesh cases/reference/convex.prm
-echo "open output/reference-convex/sample.vtu in ParaView to look at the labelled sample"
+./build/wearsim run cases/quick/plain.prm
+./build/wearsim run cases/quick/convex.prm
+./build/wearsim compare output/quick-plain output/quick-convex
+/usr/bin/python3 coupling/plot_run.py output/quick-plain output/quick-convex
+/usr/bin/python3 coupling/plot_run.py --compare output/quick-plain output/quick-convex \
+  --output output/quick-compare
+echo
+echo "plots: output/quick-plain/plots/, output/quick-convex/plots/, output/quick-compare/compare.png"
+echo "ParaView: output/quick-convex/history.xdmf (sample surface and volume per stage)"

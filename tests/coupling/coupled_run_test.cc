@@ -8,10 +8,14 @@
 // The [long] test drives a large amplification past the node-moving method's distortion
 // limit and checks that the staged scheme goes on to three times that wear depth.
 #include "coupling/checkpoint.h"
+#include "coupling/compare_command.h"
 #include "coupling/coupled_run.h"
+#include "coupling/hdf5_file.h"
+#include "small_tester.h"
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -22,23 +26,10 @@ using namespace wear::coupling;
 namespace {
 CaseParameters small_case(const std::string& dir, const std::string& schedule,
                           double amplification) {
-  CaseParameters p;
-  p.geometry.sample.convex = true;
-  p.geometry.sample.mesh_size = 3e-3;
+  CaseParameters p = small_tester_case(dir, true);
   p.geometry.sample.mesh_size_bottom = 5e-3;
-  p.geometry.sample.curvature_refinement = false;
-  p.geometry.placement.angle_deg = 15;
-  p.geometry.tester.sector_angle_deg = 30;
-  p.geometry.tester.consolidator = false;
-  p.geometry.tester.wall_height = 0.2;
-  p.dem.fill_height = 0.055;
-  p.dem.settle_time = 0.15;
-  p.dem.time_step_fraction = 0.35;
-  p.dem.samples_per_revolution = 5;
-  p.dem.n_threads = 2;
   p.coupling.schedule = schedule;
   p.coupling.amplification = amplification;
-  p.output.directory = dir;
   return p;
 }
 
@@ -147,6 +138,17 @@ TEST_CASE("wearsim run: staged stages remove the amplified wear and resume bit f
   }
   CHECK(file_text(b + "/summary.csv").size() > 0);
 
+  // wearsim compare: two identical runs, no reduction anywhere.
+  std::ostringstream table;
+  run_compare_command({a, b}, table);
+  INFO(table.str());
+  CHECK(table.str().find("DEM wear, all revolutions [mm^3]") != std::string::npos);
+  CHECK(table.str().find("column 5 wear [mm^3]") != std::string::npos);
+  CHECK(table.str().find("+0.0 %") != std::string::npos);
+  CHECK(table.str().find("-0.0 %") == std::string::npos);
+  CHECK_THROWS_WITH(run_compare_command({a, "no_such_run"}, table),
+                    Catch::Contains("no_such_run/history.h5"));
+
   // Resuming with another case is refused.
   auto other = pb;
   other.coupling.amplification = 30;
@@ -185,4 +187,81 @@ TEST_CASE("wearsim run: bad input stops clearly and keeps the last good checkpoi
              Catch::Matchers::Contains("Coupling/Schedule"));
   CHECK_THAT(error_of(small_case(dir, "1 reference, 1 staged", 1)),
              Catch::Matchers::Contains("Coupling/Schedule"));
+}
+
+TEST_CASE("wearsim run: past the node-moving method's distortion limit the staged scheme goes on",
+          "[coupling][run][long]") {
+  // The same tester, amplification (100) and cadence for both schemes: the reference method
+  // moves the DEM's surface nodes once per revolution, the staged scheme updates the FEM
+  // sample once per revolution. The reference method's first distorted surface ends its run.
+  const double amplification = 100;
+  auto ref = small_case("coupled_run_reference", "40 reference", amplification);
+  ref.deformation.update_interval = 100000000; // capped at one revolution
+  std::filesystem::remove_all(ref.output.directory);
+  const std::string ref_log = run_case(ref);
+  INFO(ref_log);
+  REQUIRE(ref_log.find("distorted the surface in stage") != std::string::npos);
+  const double distorted_at = Hdf5Reader(ref.output.directory + "/history.h5")
+                                  .doubles("/stages/cumulative_applied_m3")
+                                  .back(); // [m^3] applied when it distorted
+
+  // The staged scheme remeshes and keeps every mesh valid to three times that volume, i.e.
+  // three times the mean wear depth. A stage may recede a vertex by up to two edge lengths
+  // there (the refined tips of worn elements have short edges).
+  auto staged = small_case("coupled_run_staged", "90 staged", amplification);
+  staged.coupling.max_depth_fraction = 2.0;
+  std::filesystem::remove_all(staged.output.directory);
+  std::ostringstream log;
+  CoupledRun run(staged, log, {false, false, 0});
+  run.run();
+  INFO(log.str());
+  const auto& stages = run.stages();
+  REQUIRE(!stages.empty());
+  for (const auto& s : stages) {
+    INFO("stage " << s.stage);
+    CHECK(s.min_scaled_jacobian > 0); // no inverted or flat cell handed on
+    CHECK(std::abs(s.geometry_volume_change - s.applied_volume) < 5e-3 * s.applied_volume);
+  }
+  CHECK(stages.back().total_remeshes > 0);
+  CHECK(stages.back().cumulative_applied > 3 * distorted_at);
+}
+
+TEST_CASE("the quick case, shortened, gives a complete summary with finite positive wear",
+          "[coupling][run][cases]") {
+  for (const std::string kind : {"plain", "convex"}) {
+    auto p = read_case(WEAR_SOURCE_DIR "/cases/quick/" + kind + ".prm");
+    p.coupling.schedule = "1 dem-only, 1 staged";
+    p.dem.settle_time = 0.15;
+    p.output.directory = "quick_" + kind;
+    std::filesystem::remove_all(p.output.directory);
+    INFO(kind << "\n" << run_case(p));
+    std::ifstream in(p.output.directory + "/summary.csv");
+    std::string header, row;
+    std::getline(in, header);
+    int n_rows = 0;
+    std::vector<std::string> names;
+    {
+      std::stringstream h(header);
+      for (std::string c; std::getline(h, c, ',');)
+        names.push_back(c);
+    }
+    for (const char* c : {"wear_volume_m3", "wear_volume_cumulative_m3", "column1_wear_m3",
+                          "normal_force_mean_N", "bottom_speed_mean_m_s", "cv_speed", "stage",
+                          "scheme", "amplification", "max_von_mises_Pa", "pushed_particles"})
+      CHECK(std::find(names.begin(), names.end(), c) != names.end());
+    if (kind == "convex")
+      CHECK(std::find(names.begin(), names.end(), "C33_wear_m3") != names.end());
+    while (std::getline(in, row)) {
+      ++n_rows;
+      std::stringstream r(row);
+      std::string cell;
+      for (std::size_t k = 0; k < names.size() && std::getline(r, cell, ','); ++k)
+        if (names[k] == "wear_volume_m3" || names[k] == "wear_volume_cumulative_m3") {
+          const double v = std::stod(cell);
+          CHECK(std::isfinite(v));
+          CHECK(v > 0);
+        }
+    }
+    CHECK(n_rows == 2);
+  }
 }

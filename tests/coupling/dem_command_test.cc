@@ -2,6 +2,7 @@
 // plain sample, one pass of the sector): the output files exist, every summary column is
 // there and finite, wear is positive, and the face sets add up to the per-contact total.
 #include "coupling/dem_command.h"
+#include "small_tester.h"
 
 #include <catch2/catch.hpp>
 
@@ -40,23 +41,10 @@ std::vector<std::map<std::string, std::string>> read_csv(const std::string& path
 }
 
 CaseParameters small_case(const std::string& dir, bool convex) {
-  CaseParameters p;
-  p.geometry.sample.convex = convex;
-  p.geometry.sample.mesh_size = 3e-3;
-  p.geometry.sample.curvature_refinement = false;
-  p.geometry.placement.angle_deg = 15;
-  p.geometry.tester.sector_angle_deg = 30;
-  p.geometry.tester.consolidator = false;
-  p.geometry.tester.wall_height = 0.2;
-  p.dem.fill_height = 0.055;
-  p.dem.settle_time = 0.15;
-  p.dem.time_step_fraction = 0.35;
+  CaseParameters p = small_tester_case(dir, convex);
   p.dem.revolutions = 1;
-  p.dem.samples_per_revolution = 5;
-  p.dem.n_threads = 2;
   p.deformation.enabled = true; // the reference method, physical wear (amplification 1)
   p.deformation.update_interval = 1000;
-  p.output.directory = dir;
   return p;
 }
 } // namespace
