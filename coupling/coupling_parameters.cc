@@ -80,8 +80,8 @@ void validate(const CouplingParameters& c, const FemParameters& f) {
   require(c.revolutions_per_stage >= 1, "Coupling/Revolutions per stage", "must be at least 1");
   require(c.amplification > 0 && std::isfinite(c.amplification), "Coupling/Amplification",
           "must be positive");
-  require(c.max_depth_fraction > 0 && c.max_depth_fraction <= 2, "Coupling/Maximum depth fraction",
-          "must lie in (0, 2]");
+  require(c.max_depth_fraction > 0 && c.max_depth_fraction <= 10, "Coupling/Maximum depth fraction",
+          "must lie in (0, 10]");
   require(c.push_tolerance >= 0 && c.push_tolerance < 0.5, "Coupling/Push tolerance",
           "must lie in [0, 0.5)");
   const auto& s = c.stress_informed;

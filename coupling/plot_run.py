@@ -55,6 +55,9 @@ def fits(x, y):
 
 
 def save(fig, path):
+    for ax in fig.axes:
+        if ax.get_xlabel() in ("revolution", "stage"):
+            ax.xaxis.get_major_locator().set_params(integer=True)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
@@ -139,7 +142,6 @@ def plot_stages(stages, out):
             axes[1].axvline(st[k], color="gray", alpha=0.3)
     for ax in axes:
         ax.set_xlabel("stage")
-        ax.xaxis.get_major_locator().set_params(integer=True)
         ax.grid(alpha=0.3)
     save(fig, os.path.join(out, "stages.png"))
 

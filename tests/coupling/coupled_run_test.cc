@@ -206,10 +206,12 @@ TEST_CASE("wearsim run: past the node-moving method's distortion limit the stage
                                   .back(); // [m^3] applied when it distorted
 
   // The staged scheme remeshes and keeps every mesh valid to three times that volume, i.e.
-  // three times the mean wear depth. A stage may recede a vertex by up to two edge lengths
-  // there (the refined tips of worn elements have short edges).
+  // three times the mean wear depth. Wear gathers at the sharpening leading tip of an
+  // element, which the remesher refines (0.6 mm edges at stage 17), so the cap per stage is
+  // set loose here (10 edge lengths); the wear stage splits itself where the surface would
+  // fold.
   auto staged = small_case("coupled_run_staged", "90 staged", amplification);
-  staged.coupling.max_depth_fraction = 2.0;
+  staged.coupling.max_depth_fraction = 10.0;
   std::filesystem::remove_all(staged.output.directory);
   std::ostringstream log;
   CoupledRun run(staged, log, {false, false, 0});
