@@ -413,12 +413,13 @@ void CoupledRun::output_results(StageRecord& r) {
       surface.vertices[v] = meshes::tester_to_sample(moved.vertices[v], g.sample, g.placement);
   }
   const auto area = meshes::face_areas(surface);
-  std::vector<double> cumulative = sample_ ? sample_->removed_volume().values() : dem_cumulative_;
+  std::vector<double> cumulative;
   if (Scheme(r.scheme) == Scheme::reference) { // the declared (amplified) volume
     cumulative = tester_->cumulative_removed_volume();
     for (auto& v : cumulative)
       v *= r.amplification;
-  }
+  } else
+    cumulative = sample_ ? sample_->removed_volume().values() : dem_cumulative_;
   std::vector<double> depth(surface.n_faces()), stage(stage_applied_.values());
   if (sample_)
     depth = sample_->wear_depth().values();
@@ -431,9 +432,8 @@ void CoupledRun::output_results(StageRecord& r) {
   if (Scheme(r.scheme) == Scheme::staged)
     fields.push_back({"von Mises", 1, face_von_mises_});
   output_->add_surface(r.stage, r.time, surface, fields);
-  if (!sample_) {
+  if (!sample_)
     r.n_surface_faces = int(surface.n_faces());
-  }
   r.output_seconds += seconds_since(t0);
   stages_.push_back(r);
   output_->write_tables(tester_->evaluation().history(), stages_, tester_->evaluation().n_columns(),

@@ -119,15 +119,6 @@ Hdf5Reader::~Hdf5Reader() {
     H5Fclose(file_);
 }
 
-bool Hdf5Reader::exists(const std::string& name) const {
-  // Each link on the path must exist before the next is asked for.
-  std::size_t pos = 0;
-  while ((pos = name.find('/', pos + 1)) != std::string::npos)
-    if (H5Lexists(file_, name.substr(0, pos).c_str(), H5P_DEFAULT) <= 0)
-      return false;
-  return H5Lexists(file_, name.c_str(), H5P_DEFAULT) > 0;
-}
-
 std::vector<std::size_t> Hdf5Reader::dims(const std::string& name) const {
   const hid_t set = H5Dopen2(file_, name.c_str(), H5P_DEFAULT);
   check(set >= 0, path_, "find the dataset '" + name + "'");

@@ -84,14 +84,17 @@ void RunOutput::write_tables(const std::vector<dem::RevolutionRecord>& revolutio
     }
   });
   const auto columns = stage_columns();
+  std::vector<std::vector<double>> packed;
+  for (const auto& s : stages)
+    packed.push_back(pack(s));
   meshes::write_atomically(stages_path(), [&](std::ostream& c) {
     for (const auto& name : columns)
       c << name << ",";
     c << "scheme_name,distortion\n" << std::setprecision(10);
-    for (const auto& s : stages) {
-      for (double v : pack(s))
+    for (std::size_t k = 0; k < stages.size(); ++k) {
+      for (double v : packed[k])
         c << v << ",";
-      c << scheme_name(Scheme(s.scheme)) << ",\"" << s.distortion << "\"\n";
+      c << scheme_name(Scheme(stages[k].scheme)) << ",\"" << stages[k].distortion << "\"\n";
     }
   });
   Hdf5File h5(h5_path());
@@ -128,8 +131,8 @@ void RunOutput::write_tables(const std::vector<dem::RevolutionRecord>& revolutio
   h5.write("/revolutions/element_labels", element_labels, {element_labels.size()});
   for (std::size_t k = 0; k < columns.size(); ++k) {
     std::vector<double> v;
-    for (const auto& s : stages)
-      v.push_back(pack(s)[k]);
+    for (const auto& row : packed)
+      v.push_back(row[k]);
     h5.write("/stages/" + columns[k], v, {stages.size()});
   }
   h5.commit();

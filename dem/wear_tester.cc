@@ -161,8 +161,7 @@ FillReport WearTester::fill_and_settle(const std::function<void(const TesterProg
     };
     return base;
   };
-  // gmsh may have lowered OpenMP's default thread count: set it explicitly.
-  omp_set_num_threads(dem_.n_threads > 0 ? dem_.n_threads : omp_get_num_procs());
+  use_thread_count();
   const double area = 0.5 * Th * (ro * ro - ri * ri);
   const auto wall_start = std::chrono::steady_clock::now();
   const auto report = fill_to_height(
@@ -261,9 +260,10 @@ WearTester::run_revolution(const std::function<void(const TesterProgress&)>& pro
   return r;
 }
 
-} // namespace wear::dem
-
-namespace wear::dem {
+void WearTester::use_thread_count() {
+  // gmsh may have lowered OpenMP's default thread count: set it explicitly.
+  omp_set_num_threads(dem_.n_threads > 0 ? dem_.n_threads : omp_get_num_procs());
+}
 
 void WearTester::start_rotation() {
   if (rotating_)
@@ -336,7 +336,7 @@ void WearTester::restore(const SystemState& state, int revolutions_done,
       p.inertia.back() = state.inertia[i];
       p.id.back() = state.id[i];
     }
-    omp_set_num_threads(dem_.n_threads > 0 ? dem_.n_threads : omp_get_num_procs());
+    use_thread_count();
     system_.setup();
     steps_per_revolution_ = std::uint64_t(std::llround(revolution_time_ / system_.time_step()));
   }

@@ -124,6 +124,7 @@ private:
   int revolution_ = 0;
   bool rotating_ = false;
   void start_rotation();
+  void use_thread_count(); ///< DEM/Threads, or all cores, for the engine's loops
 };
 
 /// Throws std::invalid_argument naming "DEM/<parameter>" for a non-physical value.

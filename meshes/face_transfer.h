@@ -68,31 +68,29 @@ FaceField<T> FaceTransfer::apply(const FaceField<T>& field) const {
   // Conservation of each label's sum. A non-negative scalar field (a removed volume) is
   // scaled per label, which keeps every face non-negative; otherwise the per-label residual
   // goes back by area.
+  std::map<int, T> residual; // the label's sum before, then minus its sum after
+  for (std::size_t f = 0; f < from_.n_faces(); ++f)
+    residual[label_of_sample(f)] += field[f];
   if constexpr (std::is_same_v<T, double>) {
     bool non_negative = true;
     for (std::size_t f = 0; f < from_.n_faces() && non_negative; ++f)
       non_negative = field[f] >= 0;
     if (non_negative) {
-      std::map<int, double> before, after;
-      for (std::size_t f = 0; f < from_.n_faces(); ++f)
-        before[label_of_sample(f)] += field[f];
+      std::map<int, double> after;
       for (std::size_t g = 0; g < to_.n_faces(); ++g)
         after[to_.face_labels[g]] += out[g];
       bool scalable = true;
-      for (const auto& [label, sum] : before)
+      for (const auto& [label, sum] : residual)
         scalable = scalable && (sum == 0 || after[label] > 0);
       if (scalable) {
         for (std::size_t g = 0; g < to_.n_faces(); ++g) {
           const double a = after[to_.face_labels[g]];
-          out[g] = a > 0 ? out[g] * (before[to_.face_labels[g]] / a) : 0.0;
+          out[g] = a > 0 ? out[g] * (residual[to_.face_labels[g]] / a) : 0.0;
         }
         return out;
       }
     }
   }
-  std::map<int, T> residual;
-  for (std::size_t f = 0; f < from_.n_faces(); ++f)
-    residual[label_of_sample(f)] += field[f];
   for (std::size_t g = 0; g < to_.n_faces(); ++g)
     residual[to_.face_labels[g]] -= out[g];
   for (std::size_t g = 0; g < to_.n_faces(); ++g) {
