@@ -1,6 +1,7 @@
 // wearsim: the command-line entry point. Dispatches to one command per concern; every
 // error reaches the user as one message naming the file or parameter, with exit code 1.
 #include "coupling/bench_command.h"
+#include "coupling/calibrate_command.h"
 #include "coupling/case_parameters.h"
 #include "coupling/compare_command.h"
 #include "coupling/coupled_run.h"
@@ -29,6 +30,11 @@ void usage(std::ostream& out) {
          "                           continues a killed run from its last checkpoint\n"
          "  compare <runA> <runB>    two runs side by side: wear and its reduction, per column,\n"
          "                           peak von Mises and safety factor per stage\n"
+         "  calibrate <run> --measured <volume, e.g. 35.2mm^3> --test-revolutions <n>\n"
+         "            [--from <revolution>]\n"
+         "                           scale the run's wear coefficient so its steady wear per\n"
+         "                           revolution equals the measured one; writes\n"
+         "                           <run>/calibration.prm\n"
          "  bench dem [--workload annulus|sector5k|sector20k|sector45k|sample45k]\n"
          "            [--threads N[,M..]] [--settle N] [--warm N] [--steps N] [--repeats N]\n"
          "                           DEM benchmark; last line: particle_steps_per_second <value>\n"
@@ -79,6 +85,8 @@ int main(int argc, char** argv) {
       return run_run_command({argv + 2, argv + argc}, std::cout);
     if (cmd == "compare")
       return run_compare_command({argv + 2, argv + argc}, std::cout);
+    if (cmd == "calibrate")
+      return run_calibrate_command({argv + 2, argv + argc}, std::cout);
     if (cmd == "bench")
       return run_bench_command({argv + 2, argv + argc}, std::cout);
     std::cerr << "wearsim: unknown command '" << cmd << "'\n";
