@@ -77,10 +77,10 @@ double number(const std::map<std::string, std::string>& row, const std::string& 
 }
 } // namespace
 
-Calibration calibrate(const std::string& run, double measured_volume, double test_revolutions,
+Calibration calibrate(const std::string& run, double measured_volume, double revolutions,
                       int from_revolution) {
-  if (!(test_revolutions > 0) || !std::isfinite(test_revolutions))
-    throw std::invalid_argument("calibrate: --test-revolutions must be a positive number");
+  if (!(revolutions > 0) || !std::isfinite(revolutions))
+    throw std::invalid_argument("calibrate: --revolutions must be a positive number");
   const CaseParameters p = read_case(run + "/parameters.prm");
   Calibration c;
   c.model = p.wear_law.model;
@@ -122,17 +122,17 @@ Calibration calibrate(const std::string& run, double measured_volume, double tes
   c.simulated_per_rev = sum / c.n_revolutions;
   if (!(c.simulated_per_rev > 0))
     throw std::runtime_error("calibrate: the run '" + run + "' wore nothing on the wear face");
-  c.measured_per_rev = measured_volume / test_revolutions;
+  c.measured_per_rev = measured_volume / revolutions;
   c.calibrated = c.coefficient * c.measured_per_rev / c.simulated_per_rev;
   return c;
 }
 
 int run_calibrate_command(const std::vector<std::string>& args, std::ostream& out) {
   std::string run, measured;
-  double test_revolutions = 0;
+  double revolutions = 0;
   int from = 0;
   const std::string usage = "usage: wearsim calibrate <run> --measured <volume with unit> "
-                            "--test-revolutions <n> [--from <revolution>]";
+                            "--revolutions <n> [--from <revolution>]";
   for (std::size_t k = 0; k < args.size(); ++k) {
     const auto value = [&]() -> std::string {
       if (k + 1 >= args.size())
@@ -141,13 +141,12 @@ int run_calibrate_command(const std::vector<std::string>& args, std::ostream& ou
     };
     if (args[k] == "--measured")
       measured = value();
-    else if (args[k] == "--test-revolutions") {
+    else if (args[k] == "--revolutions") {
       const std::string v = value();
       try {
-        test_revolutions = std::stod(v);
+        revolutions = std::stod(v);
       } catch (const std::exception&) {
-        throw std::invalid_argument("wearsim calibrate: --test-revolutions '" + v +
-                                    "' is not a number");
+        throw std::invalid_argument("wearsim calibrate: --revolutions '" + v + "' is not a number");
       }
     } else if (args[k] == "--from") {
       const std::string v = value();
@@ -164,10 +163,9 @@ int run_calibrate_command(const std::vector<std::string>& args, std::ostream& ou
       throw std::invalid_argument("wearsim calibrate: unexpected argument '" + args[k] + "'; " +
                                   usage);
   }
-  if (run.empty() || measured.empty() || test_revolutions == 0)
+  if (run.empty() || measured.empty() || revolutions == 0)
     throw std::invalid_argument("wearsim calibrate: " + usage);
-  const Calibration c =
-      calibrate(run, parse_volume(measured, "--measured"), test_revolutions, from);
+  const Calibration c = calibrate(run, parse_volume(measured, "--measured"), revolutions, from);
   char line[512];
   std::snprintf(line, sizeof line,
                 "run %s, wear law %s\n"
@@ -184,14 +182,14 @@ int run_calibrate_command(const std::vector<std::string>& args, std::ostream& ou
     std::snprintf(text, sizeof text,
                   "# wearsim calibrate: %s scaled so the steady wear per revolution of\n"
                   "# %s (%.9g m^3, mean of %d revolutions from %d) equals the measured\n"
-                  "# %.9g m^3 per revolution (%s over %g test revolutions).\n"
+                  "# %.9g m^3 per revolution (%s over %g simulated revolutions).\n"
                   "# Copy this subsection into a case file, or INCLUDE this file after it.\n"
                   "subsection Wear law\n"
                   "  set Model = %s\n"
                   "  set %s = %.9g\n"
                   "end\n",
                   c.coefficient_name.c_str(), run.c_str(), c.simulated_per_rev, c.n_revolutions,
-                  c.first_revolution, c.measured_per_rev, measured.c_str(), test_revolutions,
+                  c.first_revolution, c.measured_per_rev, measured.c_str(), revolutions,
                   c.model.c_str(), c.coefficient_name.c_str(), c.calibrated);
     f << text;
   });

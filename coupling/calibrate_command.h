@@ -1,6 +1,8 @@
 #pragma once
-// `wearsim calibrate <run> --measured <volume> --test-revolutions <n>`: scales the wear
-// coefficient of a finished run so its steady wear per revolution matches a measurement.
+// `wearsim calibrate <run> --measured <volume> --revolutions <n>`: scales the wear
+// coefficient of a finished run so its steady wear per revolution matches a measurement
+// that n simulated revolutions stand for (the reference study: 56 h of the laboratory test
+// = 2 revolutions, model.md section 4).
 #include <ostream>
 #include <string>
 #include <vector>
@@ -19,13 +21,13 @@ struct Calibration {
   int first_revolution = 0;     ///< first revolution averaged (after steady state)
   int n_revolutions = 0;        ///< revolutions averaged
   double simulated_per_rev = 0; ///< [m^3] mean wear-face wear per revolution
-  double measured_per_rev = 0;  ///< [m^3] measured volume / test revolutions
+  double measured_per_rev = 0;  ///< [m^3] measured volume / simulated revolutions
 };
 
 /// Reads <run>/summary.csv and <run>/parameters.prm. The revolutions averaged are those
 /// after the run's steady revolution, or from `from_revolution` when > 0; a run that never
 /// reached steady state is refused unless `from_revolution` is given.
-Calibration calibrate(const std::string& run, double measured_volume, double test_revolutions,
+Calibration calibrate(const std::string& run, double measured_volume, double revolutions,
                       int from_revolution = 0);
 
 /// Runs the command; writes <run>/calibration.prm (atomically) and prints the result.

@@ -54,6 +54,7 @@ void visit(StageRecord& r, V& v) {
   v("increments", r.increments);
   v("remeshes", r.n_remeshes);
   v("total_remeshes", r.total_remeshes);
+  v("spread_volume_m3", r.spread_volume);
   v("tetrahedra", r.n_tetrahedra);
   v("surface_faces", r.n_surface_faces);
   v("pushed_particles", r.n_pushed);

@@ -27,6 +27,7 @@ struct StageRecord {
   double max_depth_fraction = 0;     ///< [-] of that face's longest edge (largest over faces)
   double mean_stress_factor = 1;     ///< [-] area-weighted stress-informed factor on wear faces
   int increments = 0, n_remeshes = 0, total_remeshes = 0;
+  double spread_volume = 0; ///< [m^3] moved between faces where the recession would fold
   int n_tetrahedra = 0, n_surface_faces = 0, n_pushed = 0;
   double max_push = 0;            ///< [m] largest displacement of a pushed particle
   double min_scaled_jacobian = 0; ///< [-] of the mesh handed on

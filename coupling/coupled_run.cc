@@ -377,6 +377,7 @@ void CoupledRun::update_geometry(const meshes::FaceField<double>& removed, Stage
   r.increments = report.increments;
   r.n_remeshes = report.n_remeshes;
   r.total_remeshes = sample_->n_remeshes();
+  r.spread_volume = report.spread_volume;
   r.min_scaled_jacobian = report.quality.min_scaled_jacobian;
   r.motion_seconds = report.motion_seconds;
   r.remesh_seconds = report.remesh_seconds;

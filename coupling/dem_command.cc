@@ -104,6 +104,12 @@ void run_dem_command(const CaseParameters& p, std::ostream& log, const DemComman
         rec.particle_steps_per_second,
         rec.distortion.empty() ? "" : ("  DISTORTED: " + rec.distortion).c_str());
     log << line << std::flush;
+    const int after = p.dem.revolutions_after_steady;
+    if (after > 0 && rec.steady_revolution > 0 && r - rec.steady_revolution >= after) {
+      log << "stopped " << after << " revolution(s) after steady state (revolution "
+          << rec.steady_revolution << "), DEM/Revolutions after steady\n";
+      break;
+    }
   }
   const auto& last = tester.evaluation().history().back();
   std::snprintf(line, sizeof line,

@@ -12,7 +12,11 @@
 // canonical frame with it. Keys are stable ids, so the periodic spatial reordering of the
 // particle arrays (for cache locality) keeps every history. Wall histories are kept in fixed slots
 // per particle and matched by wall and contact normal (within about 25 degrees), so sliding across
-// triangle boundaries of a smooth or flat wall keeps the history.
+// triangle boundaries of a smooth or flat wall keeps the history. Contacts of one wall whose
+// normals lie within 25 degrees are merged into the deepest: on a finely tessellated concave
+// surface (a worn fillet) each triangle's interior is its own distance minimum, and counting
+// them all would stiffen the contact several times and overflow the slots; distinct contacts
+// (a particle in a corner between an element flank and the base) differ by more.
 //
 // Pair forces are accumulated per thread (thread 0 into the particles' own arrays) and
 // summed in thread order, so a run is bitwise reproducible for a given thread count.
@@ -31,6 +35,17 @@ namespace {
 inline Vec3 rotate_z(const Vec3& v, double c, double s) {
   return {c * v.x - s * v.y, s * v.x + c * v.y, v.z};
 }
+
+/// A particle-wall contact found on a candidate face, before merging.
+struct Candidate {
+  ClosestFeature feature;
+  Vec3 normal; ///< unit, wall to particle centre
+  double dist; ///< [m] centre to closest point
+  std::uint32_t wall, face;
+};
+constexpr int max_wall_candidates = 32;
+/// Contacts of one wall whose normals differ by less than 25 degrees are one contact.
+const double cos_merge_angle = std::cos(25.0 * 3.14159265358979323846 / 180.0);
 } // namespace
 
 void System::rebuild() {
@@ -369,7 +384,13 @@ void System::wall_forces() {
       bool taken[wall_slots] = {};
       int n_new = 0;
       Vec3 f_sum{}, t_sum{};
-      for (auto k = b; k < e; ++k) {
+      // Gather the owned contacts, then merge those of one wall whose normals lie within
+      // merge_angle: they are one contact with a finely tessellated concave surface (a worn
+      // fillet), where every triangle's interior is a local minimum of the distance.
+      Candidate found[max_wall_candidates];
+      int n_found = 0;
+      bool overflow = false;
+      for (auto k = b; k < e && !overflow; ++k) {
         const std::uint32_t w = wall_candidate_[k] >> 24, f = wall_candidate_[k] & 0xFFFFFFu;
         const MeshWall& wall = walls_[w];
         if (wall.plane_distance(f, x) >= r)
@@ -379,16 +400,32 @@ void System::wall_forces() {
         const double dist2 = meshes::norm2(d);
         if (dist2 >= r * r || dist2 == 0 || !wall.owns_contact(f, cf, x))
           continue;
-        if (n_new == wall_slots) {
-          if (error_particle_[thread] < 0 || long(i) < error_particle_[thread]) {
-            error_particle_[thread] = long(i);
-            error_kind_[thread] = 4;
-          }
+        if (n_found == max_wall_candidates) {
+          overflow = true;
           break;
         }
         const double dist = std::sqrt(dist2);
+        found[n_found++] = {cf, d / dist, dist, w, f};
+      }
+      for (int c = 0; c < n_found && !overflow; ++c) {
+        const Candidate& cand = found[c];
+        bool merged = false;
+        for (int o = 0; o < n_found && !merged; ++o)
+          merged = o != c && found[o].wall == cand.wall &&
+                   meshes::dot(found[o].normal, cand.normal) > cos_merge_angle &&
+                   (found[o].dist < cand.dist || (found[o].dist == cand.dist && o < c));
+        if (merged)
+          continue;
+        if (n_new == wall_slots) {
+          overflow = true;
+          break;
+        }
+        const std::uint32_t w = cand.wall, f = cand.face;
+        const MeshWall& wall = walls_[w];
+        const ClosestFeature& cf = cand.feature;
+        const double dist = cand.dist;
         ContactGeometry g;
-        g.normal = d / dist;
+        g.normal = cand.normal;
         g.overlap = r - dist;
         g.r_eff = r;
         g.m_eff = p.mass[i];
@@ -452,6 +489,10 @@ void System::wall_forces() {
           tot[4] += archard;
           tot[5] += work;
         }
+      }
+      if (overflow && (error_particle_[thread] < 0 || long(i) < error_particle_[thread])) {
+        error_particle_[thread] = long(i);
+        error_kind_[thread] = 4;
       }
       WallSlot* slot = &slots_[wall_slots * q];
       for (int s = 0; s < n_new; ++s)

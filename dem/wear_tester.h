@@ -34,16 +34,19 @@ struct TesterDemParameters {
   PairProperties particle_particle{0.5, 0.55, 0.20};
   PairProperties particle_wall{0.5, 0.30, 0.10}; ///< also particle-sample
   SizeDistribution psd{{2.0e-3, 2.65e-3, 3.35e-3}, {0.25, 0.5, 0.25}, 4};
-  double fill_height = 0.130;               ///< [m] settled bed height above the floor
-  double loose_factor = 2.5;                ///< [-] insertion region height / fill height
-  double assumed_packing = 0.49;            ///< [-] settled solid fraction that sets the count
-  double settle_time = 0.5;                 ///< [s] at most, walls at rest
-  double rotation_rate_deg = 90;            ///< [deg/s] of floor and cylinders
-  double time_step_fraction = 0.2;          ///< [-] of the Rayleigh time
-  double max_speed = 20;                    ///< [m/s] a faster particle stops the run
-  std::uint64_t seed = 20111;               ///< insertion
-  int n_threads = 0;                        ///< 0: all cores
-  int revolutions = 9;                      ///< one revolution = one pass through the sector
+  double fill_height = 0.130;      ///< [m] settled bed height above the floor
+  double loose_factor = 2.5;       ///< [-] insertion region height / fill height
+  double assumed_packing = 0.49;   ///< [-] settled solid fraction that sets the count
+  double settle_time = 0.5;        ///< [s] at most, walls at rest
+  double rotation_rate_deg = 90;   ///< [deg/s] of floor and cylinders
+  double time_step_fraction = 0.2; ///< [-] of the Rayleigh time
+  double max_speed = 20;           ///< [m/s] a faster particle stops the run
+  std::uint64_t seed = 20111;      ///< insertion
+  int n_threads = 0;               ///< 0: all cores
+  int revolutions = 9;             ///< one revolution = one pass through the sector
+  /// `wearsim dem` stops this many revolutions after the steady revolution (0: runs all
+  /// `revolutions`, which stay the maximum).
+  int revolutions_after_steady = 0;
   int samples_per_revolution = 10;          ///< evaluation samples (force, speeds, heights)
   double steady_threshold = 0.1;            ///< [-] coefficient of variation for steady state
   int steady_revolutions = 2;               ///< consecutive revolutions below the threshold

@@ -6,19 +6,23 @@
 // surface would hold a degenerate, inverted (normal turned by more than 90 deg) or
 // self-intersecting face, the stage is split in two and tried again, because an offset along vertex
 // normals folds where the depth exceeds the local radius of curvature, and smaller steps on the
-// updated surface follow the receding front instead. The interior follows (move_mesh); if a cell
-// inverts or the smallest scaled Jacobian drops below the threshold, the moved surface is remeshed
-// (remesh_sample) and the enclosed volume the new chords cut off is given back by a uniform normal
-// offset of the wear face, so volume is conserved across remeshing to round-off of the secant (the
-// wear record is the volume, not the chord geometry). Accumulated fields follow the faces while the
-// topology is kept and are transferred (FaceTransfer: extensive per label, exactly; intensive by
-// area) across a remesh.
+// updated surface follow the receding front instead. Where even small steps fold (a tip
+// sharpened by wear on one flank: the fronts of its two flanks meet), the remaining wear is
+// spread over the fold's neighbourhood (meshes::spread_removed_volume, total kept), so the tip
+// recedes as a whole instead of being cut into a sliver. The interior follows (move_mesh); if a
+// cell inverts or the smallest scaled Jacobian drops below the threshold, the moved surface is
+// remeshed (remesh_sample) and the enclosed volume the new chords cut off is given back by a
+// uniform normal offset of the wear face, so volume is conserved across remeshing to round-off of
+// the secant (the wear record is the volume, not the chord geometry). Accumulated fields follow the
+// faces while the topology is kept and are transferred (FaceTransfer: extensive per label, exactly;
+// intensive by area) across a remesh.
 #include "fem/worn_sample.h"
 
 #include "fem/sample_triangulation.h"
 #include "meshes/atomic_file.h"
 #include "meshes/face_transfer.h"
 #include "meshes/mesh_quality.h"
+#include "meshes/recession.h"
 
 #include <deal.II/grid/tria_description.h>
 
@@ -134,7 +138,7 @@ WearStageReport WornSample::apply_wear(const meshes::FaceField<double>& removed)
       remaining[f] = 0; // sides and bottom do not recede
     r.removed_volume += remaining[f];
   }
-  int n_left = 1, halvings = 0;
+  int n_left = 1, halvings = 0, spreadings = 0;
   while (n_left > 0) {
     const auto& s = surface();
     std::vector<double> part = remaining.values();
@@ -167,6 +171,15 @@ WearStageReport WornSample::apply_wear(const meshes::FaceField<double>& removed)
     const auto normals = meshes::face_normals(s);
     const auto sq = meshes::surface_quality(candidate, &normals);
     if (!sq.valid()) {
+      if (halvings >= p_.halvings_before_spreading && spreadings < p_.max_spreadings) {
+        std::vector<double> spread = remaining.values();
+        r.spread_volume += meshes::spread_removed_volume(s, spread, sq.bad_faces, 2 << spreadings);
+        for (std::size_t f = 0; f < spread.size(); ++f)
+          remaining[f] = spread[f];
+        ++spreadings;
+        ++r.n_spreadings;
+        continue;
+      }
       if (halvings == p_.max_halvings) {
         const std::string where =
             sq.first_bad_face < 0
@@ -180,6 +193,7 @@ WearStageReport WornSample::apply_wear(const meshes::FaceField<double>& removed)
       ++halvings;
       continue;
     }
+    spreadings = 0;
     const auto area = meshes::face_areas(s);
     for (std::size_t f = 0; f < part.size(); ++f) {
       removed_[f] += part[f];

@@ -24,6 +24,10 @@ struct WornSampleParameters {
   std::string mesh_directory = "."; ///< where remeshed .msh files are written
   /// A stage whose recession would fold the surface is applied in up to 2^this increments.
   int max_halvings = 5;
+  /// After this many halvings, a fold first spreads the stage's remaining wear around the
+  /// folding faces (meshes::spread_removed_volume over 2, 4, 8, ... rings) before halving on.
+  int halvings_before_spreading = 2;
+  int max_spreadings = 4; ///< spreading attempts per fold
 };
 
 struct WearStageReport {
@@ -31,6 +35,8 @@ struct WearStageReport {
   double volume_change = 0;  ///< [m^3] mesh volume before minus after
   int increments = 0;        ///< recession steps the stage was applied in
   int n_remeshes = 0;
+  int n_spreadings = 0;     ///< spreading steps taken where the recession folded
+  double spread_volume = 0; ///< [m^3] removed volume moved between faces by spreading
   RemeshReport last_remesh; ///< valid when n_remeshes > 0
   VolumeQuality quality;    ///< of the mesh handed on
   double motion_seconds = 0, remesh_seconds = 0;
@@ -73,8 +79,9 @@ public:
   /// Applies one stage of removed volume per face (extensive, on the current surface):
   /// recession, mesh motion, and remeshing when the moved mesh holds an inverted or poor
   /// cell. A stage that would fold the surface (depth beyond the local radius of curvature)
-  /// is split into increments, each on the surface the previous one produced. Throws when
-  /// the field belongs to another revision, or the surface folds even at the finest split.
+  /// is split into increments, each on the surface the previous one produced; where it
+  /// still folds, the wear is spread over the neighbourhood of the fold (the total is kept).
+  /// Throws when the field belongs to another revision, or the surface folds even then.
   WearStageReport apply_wear(const meshes::FaceField<double>& removed);
 
   /// Remeshes now (e.g. on request) and restores the enclosed volume lost to chords.

@@ -142,6 +142,7 @@ SurfaceQuality surface_quality(const SurfaceMesh& m, const std::vector<Vec3>* re
   const auto mark = [&](std::size_t f) {
     if (q.first_bad_face < 0)
       q.first_bad_face = long(f);
+    q.bad_faces.push_back(std::uint32_t(f));
   };
   for (std::size_t f = 0; f < m.n_faces(); ++f) {
     const auto& t = m.triangles[f];
@@ -172,8 +173,10 @@ SurfaceQuality surface_quality(const SurfaceMesh& m, const std::vector<Vec3>* re
   }
   const auto hits = find_self_intersections(m);
   q.n_self_intersections = hits.size();
-  if (!hits.empty())
-    mark(hits.front().first);
+  for (const auto& [i, j] : hits) {
+    mark(i);
+    mark(j);
+  }
   return q;
 }
 

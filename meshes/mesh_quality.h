@@ -16,6 +16,7 @@ struct SurfaceQuality {
   std::size_t n_inverted = 0;           ///< faces whose normal turned more than 90 deg
   std::size_t n_self_intersections = 0; ///< intersecting face pairs found
   long first_bad_face = -1;             ///< a degenerate, inverted or intersecting face, or -1
+  std::vector<std::uint32_t> bad_faces; ///< every such face (both of an intersecting pair)
   bool valid() const { return n_degenerate == 0 && n_inverted == 0 && n_self_intersections == 0; }
 };
 

@@ -13,4 +13,12 @@ namespace wear::meshes {
 std::vector<Vec3> area_weighted_recession(const SurfaceMesh& m,
                                           const std::vector<double>& removed_volume);
 
+/// Spreads removed volume [m^3 per face] around `seeds` (e.g. the faces where a recession
+/// folds): within `rings` vertex rings of a seed, over wearing faces only, the depth V_f / A_f
+/// diffuses between faces sharing an edge (rings^2 explicit steps, so about `rings` faces
+/// far). The total is kept to round-off and no face goes negative. Returns the volume moved
+/// between faces [m^3].
+double spread_removed_volume(const SurfaceMesh& m, std::vector<double>& removed_volume,
+                             const std::vector<std::uint32_t>& seeds, int rings);
+
 } // namespace wear::meshes

@@ -69,20 +69,19 @@ TEST_CASE("wearsim calibrate: the calibrated coefficient reproduces the measured
   CHECK(error_of([&] {
           std::ostringstream out;
           run_calibrate_command(
-              {p.output.directory, "--measured", "12", "--test-revolutions", "10", "--from", "1"},
-              out);
+              {p.output.directory, "--measured", "12", "--revolutions", "10", "--from", "1"}, out);
         }).find("needs a volume unit") != std::string::npos);
   CHECK(error_of([] {
           calibrate("no_such_run", 1e-9, 10, 1);
         }).find("no_such_run/parameters.prm") != std::string::npos);
 
-  // A "measured" 2.5 x the simulated wear per revolution over 40 test revolutions.
+  // A "measured" 2.5 x the simulated wear per revolution over 40 simulated revolutions.
   const double measured = 40 * 2.5 * simulated;
   std::ostringstream out;
   char volume[64];
   std::snprintf(volume, sizeof volume, "%.17g m^3", measured);
   REQUIRE(run_calibrate_command(
-              {p.output.directory, "--measured", volume, "--test-revolutions", "40", "--from", "1"},
+              {p.output.directory, "--measured", volume, "--revolutions", "40", "--from", "1"},
               out) == 0);
   INFO(out.str());
   const auto c = calibrate(p.output.directory, measured, 40, 1);

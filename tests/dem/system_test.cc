@@ -1,6 +1,7 @@
 // Engine-level checks: energy conservation, the cylindrical periodic sector, Coulomb
 // sliding on a rotating floor, determinism, and clear failures on bad input.
 #include "dem/snapshot.h"
+#include "meshes/structured_grid.h"
 #include "tests/dem/dem_fixtures.h"
 
 #include <catch2/catch.hpp>
@@ -278,4 +279,44 @@ TEST_CASE("filling to a bed height from a PSD, then settling", "[dem][filling]")
       worst = std::max(worst, (p.radius[i] + p.radius[j] - norm(p.position[i] - p.position[j])) /
                                   std::min(p.radius[i], p.radius[j]));
   CHECK(worst < 0.02);
+}
+
+TEST_CASE("a finely tessellated concave wall gives one Hertz contact", "[dem][walls]") {
+  // A sphere (r = 4 mm) pressed into a trough (R = 20 mm) of 0.5-degree chords: about a dozen
+  // chords' planes overlap it, each a distance minimum of its own. They are one contact with
+  // the smooth surface; the engine keeps the deepest (the chord under the centre), so the
+  // force is F = 4/3 E* sqrt(r) delta^1.5 of that chord, along its normal.
+  System s;
+  s.settings.gravity = {0, 0, 0};
+  const int g = add_gravel(s, 0.5, 0.5, 0.0);
+  const double R = 0.02, r = 4e-3, delta = 5e-5, d_theta = pi / 360;
+  const int n_u = 240; // -60 ... +60 degrees
+  const auto trough = [&](bool flip) {
+    return wear::meshes::structured_grid(
+        n_u, 20,
+        [&](double u, double v) {
+          const double th = (u - 0.5) * n_u * d_theta;
+          return Vec3{0.02 * v, R * std::sin(th), R - R * std::cos(th)};
+        },
+        flip, wear::meshes::label::wall);
+  };
+  auto mesh = trough(false);
+  if (dot(wear::meshes::face_normal_unnormalized(mesh, 0), Vec3{0, 0, 1}) < 0)
+    mesh = trough(true); // normals towards the axis, the side the particle is on
+  s.add_wall(MeshWall(mesh, g, {}, false, "trough"));
+  const double th_mid = 0.5 * d_theta; // middle of the chord just past the bottom
+  const Vec3 axis{0.0105, 0, R}, out{0, std::sin(th_mid), -std::cos(th_mid)};
+  const double chord_distance = R * std::cos(0.5 * d_theta); // axis to the chord's plane
+  s.particles.add(axis + out * (chord_distance - r + delta), {}, r, 2650, g);
+  int n_overlapping = 0; // chords whose plane cuts the sphere
+  for (int k = -n_u / 2; k < n_u / 2; ++k)
+    if (chord_distance - (chord_distance - r + delta) * std::cos((k + 0.5) * d_theta - th_mid) < r)
+      ++n_overlapping;
+  REQUIRE(n_overlapping > 6); // more than the engine's contact slots: merging is exercised
+  s.setup();
+  const double e_star = 5e7 / (2 * (1 - 0.25 * 0.25));
+  const double f_hertz = 4.0 / 3.0 * e_star * std::sqrt(r) * std::pow(delta, 1.5);
+  const Vec3 f = s.particles.force[0];
+  CHECK(norm(f) == Approx(f_hertz).epsilon(1e-9));
+  CHECK(dot(f, out) == Approx(-f_hertz).epsilon(1e-9));
 }

@@ -1,0 +1,81 @@
+// Spreading removed volume around a fold: the total is conserved to round-off, no face goes
+// negative, only wearing faces within the ring count receive volume, and a point load
+// diffuses into a neighbourhood whose size grows with the ring count.
+#include "meshes/recession.h"
+#include "meshes/structured_grid.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <numeric>
+
+using namespace wear::meshes;
+
+namespace {
+// A flat 20 x 20 mm plate, 20 x 20 quads; the strip x > 15 mm is a non-wearing side.
+SurfaceMesh plate() {
+  auto m = structured_grid(
+      20, 20,
+      [](double u, double v) {
+        return Vec3{0.02 * u, 0.02 * v, 0};
+      },
+      false, label::base);
+  const auto c = face_centroids(m);
+  for (std::size_t f = 0; f < m.n_faces(); ++f)
+    if (c[f].x > 0.015)
+      m.face_labels[f] = label::side;
+  return m;
+}
+} // namespace
+
+TEST_CASE("spreading removed volume keeps the total and stays local", "[meshes][recession]") {
+  const auto m = plate();
+  const auto centroid = face_centroids(m);
+  // All the volume on one face near the middle of the wearing part.
+  std::uint32_t seed = 0;
+  double best = 1e9;
+  for (std::size_t f = 0; f < m.n_faces(); ++f) {
+    const double d = norm(centroid[f] - Vec3{0.008, 0.01, 0});
+    if (label::wears(m.face_labels[f]) && d < best)
+      best = d, seed = std::uint32_t(f);
+  }
+  const double total = 1e-9; // [m^3]
+  double previous_peak = 2 * total;
+  for (const int rings : {2, 4, 8}) {
+    std::vector<double> v(m.n_faces(), 0);
+    v[seed] = total;
+    const double moved = spread_removed_volume(m, v, {seed}, rings);
+    const double sum = std::accumulate(v.begin(), v.end(), 0.0);
+    CHECK(std::abs(sum - total) < 1e-12 * total);
+    double peak = 0, reach = 0;
+    for (std::size_t f = 0; f < m.n_faces(); ++f) {
+      CHECK(v[f] >= 0);
+      if (v[f] > 0) {
+        CHECK(label::wears(m.face_labels[f])); // nothing onto the side strip
+        // faces are 1 mm; k vertex rings reach at most about k + 1 face widths away
+        reach = std::max(reach, norm(centroid[f] - centroid[seed]));
+      }
+      peak = std::max(peak, v[f]);
+    }
+    CHECK(reach < (rings + 1.5) * 1.5e-3);
+    CHECK(reach > 0.5 * rings * 1e-3);
+    CHECK(peak < previous_peak); // a wider region flattens the load further
+    // every other face started empty, so what moved is what left the seed
+    CHECK(moved == Approx(total - v[seed]).epsilon(1e-9));
+    previous_peak = peak;
+  }
+}
+
+TEST_CASE("spreading leaves a uniform depth unchanged", "[meshes][recession]") {
+  const auto m = plate();
+  const auto area = face_areas(m);
+  std::vector<double> v(m.n_faces(), 0);
+  for (std::size_t f = 0; f < m.n_faces(); ++f)
+    if (label::wears(m.face_labels[f]))
+      v[f] = 2e-4 * area[f]; // 0.2 mm everywhere on the wear face
+  auto spread = v;
+  const double moved = spread_removed_volume(m, spread, {0, 1, 2}, 8);
+  CHECK(moved < 1e-12 * std::accumulate(v.begin(), v.end(), 0.0));
+  for (std::size_t f = 0; f < m.n_faces(); ++f)
+    CHECK(spread[f] == Approx(v[f]).epsilon(1e-12).margin(1e-30));
+}
