@@ -2,7 +2,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 using namespace wear::coupling;
@@ -25,6 +27,21 @@ TEST_CASE("reference case files parse and validate", "[coupling][parameters]") {
   CHECK(c.dem.psd.scaling_factor == 4);
   CHECK(c.dem.particle_wall.friction == 0.30);
   CHECK(c.wear_law.archard_coefficient == 5e-9);
+}
+
+TEST_CASE("every case file under cases/ parses, validates and writes its own folder",
+          "[coupling][parameters]") {
+  std::set<std::string> directories;
+  int n_files = 0;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(WEAR_SOURCE_DIR "/cases")) {
+    if (e.path().extension() != ".prm")
+      continue;
+    INFO(e.path().string());
+    ++n_files;
+    const auto c = read_case(e.path().string());
+    CHECK(directories.insert(c.output.directory).second); // no two cases share an output
+  }
+  CHECK(n_files >= 20);
 }
 
 TEST_CASE("resolved parameters round-trip", "[coupling][parameters]") {
