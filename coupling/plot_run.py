@@ -216,7 +216,57 @@ def plot_profiles(run, elements, out):
         save(fig, os.path.join(out, f"profile_{name}.png"))
 
 
-def plot_run(run, elements):
+def plot_wear_out(run, stages, out, hours_per_revolution):
+    """Removed volume and the height of every convex element (max z - min z of its surface)
+    against equivalent test hours: revolutions x amplification x hours per revolution
+    (the reference study's alpha: 2 revolutions = 56 h, so 28 h)."""
+    try:
+        import h5py
+    except ImportError:
+        return
+    files = sorted(glob.glob(os.path.join(run, "surface", "stage_*.h5")))
+    if not stages or len(files) < 2:
+        return
+    hours = {0: 0.0}
+    total = 0.0
+    for r in stages:
+        if r.get("scheme_name") != "dem-only":
+            n = float(r["last_revolution"]) - float(r["first_revolution"]) + 1
+            total += n * float(r["amplification"]) * hours_per_revolution
+        hours[int(float(r["stage"]))] = total
+    heights = {}  # label -> [(hours, height)]
+    for path in files:
+        stage = int(os.path.basename(path)[6:10])
+        if stage not in hours:
+            continue
+        with h5py.File(path, "r") as h5:
+            pts = h5["/points"][...]
+            tri = h5["/triangles"][...]
+            labels = h5["/cell/label"][...].ravel()
+        for lab in np.unique(labels):
+            if lab < 11 or lab > 99 or lab % 10 == 0:
+                continue
+            z = pts[np.unique(tri[labels == lab].ravel()), 2]
+            heights.setdefault(int(lab), []).append((hours[stage], (z.max() - z.min()) * 1e3))
+    if not heights:
+        return
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4))
+    st_hours = [hours[int(float(r["stage"]))] for r in stages]
+    axes[0].plot(st_hours, column(stages, "cumulative_applied_m3") * 1e9, "o-", ms=3)
+    axes[0].set_ylabel("volume removed from the sample [mm$^3$]")
+    colours = plt.cm.tab20(np.linspace(0, 1, len(heights)))
+    for c, (lab, hz) in zip(colours, sorted(heights.items())):
+        hz = np.array(hz)
+        axes[1].plot(hz[:, 0], hz[:, 1], "-", color=c, label=f"C{lab}")
+    axes[1].set_ylabel("element height (max z - min z) [mm]")
+    axes[1].legend(fontsize=6, ncol=3)
+    for ax in axes:
+        ax.set_xlabel(f"equivalent test hours ({hours_per_revolution:g} h per revolution x amplification)")
+        ax.grid(alpha=0.3)
+    save(fig, os.path.join(out, "wear_out.png"))
+
+
+def plot_run(run, elements, hours_per_revolution=28.0):
     out = os.path.join(run, "plots")
     os.makedirs(out, exist_ok=True)
     rows = read_csv(os.path.join(run, "summary.csv"))
@@ -228,6 +278,7 @@ def plot_run(run, elements):
     plot_flow(rows, out)
     plot_stages(stages, out)
     plot_profiles(run, elements, out)
+    plot_wear_out(run, stages, out, hours_per_revolution)
 
 
 def plot_compare(a, b, out):
@@ -265,14 +316,20 @@ def main():
     ap.add_argument("--compare", action="store_true", help="compare two runs")
     ap.add_argument("--elements", default="C13,C33,C53", help="convex elements to draw profiles of")
     ap.add_argument("--output", default=None, help="folder of the comparison plot")
+    ap.add_argument("--hours-per-revolution", type=float, default=28.0,
+                    help="test hours one simulated revolution stands for (wear_out.png); "
+                         "the reference study's alpha: 2 revolutions = 56 h")
     args = ap.parse_args()
+    if not args.hours_per_revolution > 0:
+        sys.exit("plot_run: --hours-per-revolution must be positive")
     if args.compare:
         if len(args.runs) != 2:
             sys.exit("plot_run: --compare takes two run folders")
         plot_compare(args.runs[0], args.runs[1], args.output or args.runs[1] + "/plots")
     else:
         for run in args.runs:
-            plot_run(run, [e.strip() for e in args.elements.split(",") if e.strip()])
+            plot_run(run, [e.strip() for e in args.elements.split(",") if e.strip()],
+                     args.hours_per_revolution)
 
 
 if __name__ == "__main__":
