@@ -132,7 +132,7 @@ find_self_intersections(const SurfaceMesh& m, std::size_t max_pairs) {
 }
 
 SurfaceQuality surface_quality(const SurfaceMesh& m, const std::vector<Vec3>* reference_normals,
-                               double relative_area_tolerance) {
+                               double relative_area_tolerance, double folded_edge_cos) {
   SurfaceQuality q;
   double mean_edge2 = 0;
   for (const auto& t : m.triangles)
@@ -169,6 +169,17 @@ SurfaceQuality surface_quality(const SurfaceMesh& m, const std::vector<Vec3>* re
     if (reference_normals && dot(n2, (*reference_normals)[f]) <= 0) {
       ++q.n_inverted;
       mark(f);
+    }
+  }
+  for (const auto& [edge, faces] : edge_faces(m)) {
+    if (faces.size() != 2)
+      continue;
+    const Vec3 a = face_normal_unnormalized(m, faces[0]), b = face_normal_unnormalized(m, faces[1]);
+    const double na = norm(a), nb = norm(b);
+    if (na > 0 && nb > 0 && dot(a, b) < folded_edge_cos * na * nb) {
+      ++q.n_folded_edges;
+      mark(faces[0]);
+      mark(faces[1]);
     }
   }
   const auto hits = find_self_intersections(m);

@@ -15,17 +15,23 @@ struct SurfaceQuality {
   std::size_t n_degenerate = 0;         ///< faces with area below degenerate_area
   std::size_t n_inverted = 0;           ///< faces whose normal turned more than 90 deg
   std::size_t n_self_intersections = 0; ///< intersecting face pairs found
+  std::size_t n_folded_edges = 0;       ///< edges whose two faces fold onto each other
   long first_bad_face = -1;             ///< a degenerate, inverted or intersecting face, or -1
   std::vector<std::uint32_t> bad_faces; ///< every such face (both of an intersecting pair)
-  bool valid() const { return n_degenerate == 0 && n_inverted == 0 && n_self_intersections == 0; }
+  bool valid() const {
+    return n_degenerate == 0 && n_inverted == 0 && n_self_intersections == 0 && n_folded_edges == 0;
+  }
 };
 
 /// `reference_normals` (one per face, e.g. the unworn normals) enables the inverted-face
-/// test; a face is degenerate when its area is below `relative_area_tolerance` times the
-/// squared mean edge length.
+/// test; an edge whose two faces' normals are nearly opposite (cos < folded_edge_cos) is a
+/// fold (the faces lie on each other: a flat fin that the self-intersection test, which
+/// skips faces sharing an edge, cannot see, and that no volume mesher accepts); a face is
+/// degenerate when its area is below `relative_area_tolerance` times the squared mean edge length.
 SurfaceQuality surface_quality(const SurfaceMesh& m,
                                const std::vector<Vec3>* reference_normals = nullptr,
-                               double relative_area_tolerance = 1e-10);
+                               double relative_area_tolerance = 1e-10,
+                               double folded_edge_cos = -0.95);
 
 /// Pairs of faces (i < j) that cross each other. Faces sharing an edge are never tested;
 /// faces sharing one vertex are tested with the edges that avoid the shared vertex.

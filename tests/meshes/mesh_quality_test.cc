@@ -67,3 +67,20 @@ TEST_CASE("self-intersection search scales (grid, not all pairs)", "[meshes][qua
   REQUIRE(w.floor.n_faces() > 50000);
   CHECK(find_self_intersections(w.floor).empty());
 }
+
+TEST_CASE("two faces folded flat onto each other over their edge are a fold", "[meshes][quality]") {
+  // Face 0 lies in z = 0 with normal +z; face 1 shares its edge (1, 2). Folded: its third
+  // vertex lies on face 0's side of the edge, so it covers face 0 with the opposite normal
+  // (the self-intersection test skips faces sharing an edge). Unfolded: it continues the plane.
+  for (const bool folded : {true, false}) {
+    SurfaceMesh m;
+    m.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, folded ? Vec3{0.3, 0.3, 0} : Vec3{1, 1, 0}};
+    m.triangles = {{0, 1, 2}, {2, 1, 3}};
+    m.face_labels = {label::base, label::side};
+    const auto q = surface_quality(m);
+    CHECK(q.n_folded_edges == (folded ? 1u : 0u));
+    CHECK(q.valid() == !folded);
+    if (folded)
+      CHECK(q.bad_faces.size() == 2);
+  }
+}
