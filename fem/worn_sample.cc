@@ -186,11 +186,17 @@ WearStageReport WornSample::apply_wear(const meshes::FaceField<double>& removed)
                 ? std::string("")
                 : " at face " + std::to_string(sq.first_bad_face) + " (label " +
                       meshes::label::name(s.face_labels[std::size_t(sq.first_bad_face)]) + ")";
-        throw std::runtime_error("wear stage: the worn surface folds" + where + " even in " +
-                                 std::to_string(n_left) + " increments; reduce the wear per stage");
+        // Tell apart a step that folds from a surface that already does (then no step helps).
+        const bool folded_before = !meshes::surface_quality(s).valid();
+        throw std::runtime_error(
+            "wear stage: the worn surface folds" + where + " even in " + std::to_string(n_left) +
+            " increments" +
+            (folded_before ? " (the surface before this increment already folds)" : "") +
+            "; reduce the wear per stage");
       }
       n_left *= 2;
       ++halvings;
+      spreadings = 0; // spread again at the smaller increment
       continue;
     }
     spreadings = 0;

@@ -25,9 +25,10 @@ struct WornSampleParameters {
   /// A stage whose recession would fold the surface is applied in up to 2^this increments.
   int max_halvings = 5;
   /// After this many halvings, a fold first spreads the stage's remaining wear around the
-  /// folding faces (meshes::spread_removed_volume over 2, 4, 8, ... rings) before halving on.
+  /// folding faces (meshes::spread_removed_volume over 2, 4, 8, ... rings) before halving on,
+  /// and again at every smaller increment.
   int halvings_before_spreading = 2;
-  int max_spreadings = 4; ///< spreading attempts per fold
+  int max_spreadings = 6; ///< spreading attempts per fold and increment size (2 ... 64 rings)
 };
 
 struct WearStageReport {
