@@ -172,10 +172,8 @@ WearStageReport WornSample::apply_wear(const meshes::FaceField<double>& removed)
     const auto sq = meshes::surface_quality(candidate, &normals);
     if (!sq.valid()) {
       if (halvings >= p_.halvings_before_spreading && spreadings < p_.max_spreadings) {
-        std::vector<double> spread = remaining.values();
-        r.spread_volume += meshes::spread_removed_volume(s, spread, sq.bad_faces, 2 << spreadings);
-        for (std::size_t f = 0; f < spread.size(); ++f)
-          remaining[f] = spread[f];
+        r.spread_volume +=
+            meshes::spread_removed_volume(s, remaining.values(), sq.bad_faces, 2 << spreadings);
         ++spreadings;
         ++r.n_spreadings;
         continue;
