@@ -16,6 +16,7 @@
 #include "fem/mesh_motion.h"
 
 #include "meshes/recession.h"
+#include "meshes/sliding_constraint.h"
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -81,7 +82,50 @@ double scale_to_volume_loss(const meshes::SurfaceMesh& surface, const std::vecto
   return s1;
 }
 
+// The area-weighted recession with the vertices the wear face shares with the unworn
+// surface kept on it: they slide down a flat side instead of leaving its plane.
+std::vector<Vec3> constrained_recession(const meshes::SurfaceMesh& surface,
+                                        const std::vector<double>& removed_volume) {
+  std::vector<Vec3> unit = meshes::area_weighted_recession(surface, removed_volume);
+  const auto constraint = meshes::sliding_constraints(surface);
+  for (std::size_t v = 0; v < unit.size(); ++v)
+    unit[v] = constraint[v].apply(unit[v]);
+  return unit;
+}
+
+// Per vertex, the mean of its edge neighbours minus its position; each interior edge is seen
+// from both of its faces, so every neighbour counts twice.
+std::vector<Vec3> neighbour_offsets(const meshes::SurfaceMesh& surface) {
+  const std::size_t nv = surface.n_vertices();
+  std::vector<Vec3> sum(nv);
+  std::vector<int> count(nv, 0);
+  for (const auto& t : surface.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const auto a = t[k], b = t[(k + 1) % 3];
+      sum[a] += surface.vertices[b];
+      sum[b] += surface.vertices[a];
+      ++count[a];
+      ++count[b];
+    }
+  for (std::size_t v = 0; v < nv; ++v)
+    sum[v] = count[v] > 0 ? sum[v] * (1.0 / count[v]) - surface.vertices[v] : Vec3{};
+  return sum;
+}
+
+// The first cell with a non-positive signed volume, or -1.
+long first_invalid_cell(const dealii::Triangulation<3>& tria) {
+  for (const auto& cell : tria.active_cell_iterators()) {
+    Vec3 v[4];
+    for (unsigned int k = 0; k < 4; ++k)
+      v[k] = point(cell->vertex(k));
+    if (!(signed_volume(v) > 0))
+      return long(cell->active_cell_index());
+  }
+  return -1;
+}
+
 // One sub-step of the interior motion: the boundary moves by `fraction` of its displacement.
+// The mesh must be valid (the stiffness 1 / |K| of a flat cell is infinite).
 unsigned int laplace_step(dealii::Triangulation<3>& tria, const std::vector<Vec3>& boundary,
                           const std::vector<char>& on_boundary, double fraction) {
   using namespace dealii;
@@ -168,7 +212,7 @@ Recession compute_recession(const meshes::SurfaceMesh& surface,
     if (meshes::label::wears(surface.face_labels[f]))
       r.removed_volume += removed_volume[f];
   }
-  const std::vector<Vec3> unit = meshes::area_weighted_recession(surface, removed_volume);
+  const std::vector<Vec3> unit = constrained_recession(surface, removed_volume);
   r.displacement.assign(nv, {});
   if (r.removed_volume == 0)
     return r;
@@ -181,7 +225,7 @@ Recession compute_recession(const meshes::SurfaceMesh& surface,
 Recession volume_restoring_offset(const meshes::SurfaceMesh& surface, double target_volume) {
   // Unit inward offset of the wear face: the recession of a depth of 1 m everywhere.
   std::vector<double> unit_depth = meshes::face_areas(surface);
-  const std::vector<Vec3> unit = meshes::area_weighted_recession(surface, unit_depth);
+  const std::vector<Vec3> unit = constrained_recession(surface, unit_depth);
   Recession r;
   r.removed_volume = meshes::enclosed_volume(surface) - target_volume;
   r.displacement.assign(surface.n_vertices(), {});
@@ -194,7 +238,8 @@ Recession volume_restoring_offset(const meshes::SurfaceMesh& surface, double tar
 }
 
 std::vector<Vec3> tangential_relaxation(const meshes::SurfaceMesh& surface,
-                                        const std::vector<char>& moving, double weight) {
+                                        const std::vector<char>& moving, double weight,
+                                        double spike_cos) {
   const std::size_t nv = surface.n_vertices();
   if (moving.size() != nv)
     throw std::invalid_argument("tangential relaxation: mask of the wrong size");
@@ -208,24 +253,42 @@ std::vector<Vec3> tangential_relaxation(const meshes::SurfaceMesh& surface,
         free[v] = 0;
       label[v] = l;
     }
-  std::vector<Vec3> sum(nv);
-  std::vector<int> count(nv, 0);
-  for (const auto& t : surface.triangles)
-    for (int k = 0; k < 3; ++k) {
-      // Each interior edge is seen from both of its faces, so every neighbour counts twice.
-      const auto a = t[k], b = t[(k + 1) % 3];
-      sum[a] += surface.vertices[b];
-      sum[b] += surface.vertices[a];
-      ++count[a];
-      ++count[b];
-    }
+  // A crease nearly folded flat inside one label is a spike that wear sharpened, not the
+  // element's shape (the tip of a coarse element turns its normals by less: cos -0.66 at
+  // 3 mm): its vertices take the full offset (normal part too), which cuts the spike; the
+  // caller gives the volume back in the recession.
+  std::vector<char> sharp(nv, 0);
+  const auto face_normal = meshes::face_normals(surface);
+  for (const auto& [edge, faces] : meshes::edge_faces(surface))
+    if (faces.size() == 2 && surface.face_labels[faces[0]] == surface.face_labels[faces[1]] &&
+        meshes::dot(face_normal[faces[0]], face_normal[faces[1]]) < spike_cos)
+      for (const auto f : faces)
+        for (const auto v : surface.triangles[f])
+          sharp[v] = 1;
+  const auto offset = neighbour_offsets(surface);
   const auto normal = meshes::vertex_normals(surface);
   std::vector<Vec3> out(nv);
   for (std::size_t v = 0; v < nv; ++v)
-    if (moving[v] && free[v] && count[v] > 0) {
-      const Vec3 d = sum[v] * (1.0 / count[v]) - surface.vertices[v];
-      out[v] = (d - normal[v] * meshes::dot(d, normal[v])) * weight;
+    if (moving[v] && free[v]) {
+      const Vec3& d = offset[v];
+      out[v] = (sharp[v] ? d : d - normal[v] * meshes::dot(d, normal[v])) * weight;
     }
+  return out;
+}
+
+std::vector<Vec3> unworn_relaxation(const meshes::SurfaceMesh& surface, double weight) {
+  const std::size_t nv = surface.n_vertices();
+  std::vector<char> unworn(nv, 1);
+  for (std::size_t f = 0; f < surface.n_faces(); ++f)
+    if (meshes::label::wears(surface.face_labels[f]))
+      for (const auto v : surface.triangles[f])
+        unworn[v] = 0;
+  const auto offset = neighbour_offsets(surface);
+  const auto constraint = meshes::sliding_constraints(surface);
+  std::vector<Vec3> out(nv);
+  for (std::size_t v = 0; v < nv; ++v)
+    if (unworn[v])
+      out[v] = constraint[v].apply(offset[v]) * weight;
   return out;
 }
 
@@ -316,9 +379,29 @@ meshes::SurfaceMesh move_mesh(dealii::Triangulation<3>& tria, const BoundaryFace
         ratio = std::max(ratio, move / meshes::norm(surface.vertices[b] - surface.vertices[a]));
     }
   const int n_sub = std::clamp(int(std::ceil(ratio / 0.25)), 1, 50);
+  if (const long bad = first_invalid_cell(tria); bad >= 0)
+    throw std::runtime_error("mesh motion: cell " + std::to_string(bad) +
+                             " is flat or inverted before the motion; the mesh must be valid");
   unsigned int iterations = 0;
-  for (int sub = 0; sub < n_sub; ++sub)
+  for (int sub = 0; sub < n_sub; ++sub) {
+    if (sub > 0 && first_invalid_cell(tria) >= 0) {
+      // A sub-step inverted or flattened a cell: the interior cannot follow further, so the
+      // boundary takes its remaining way directly and the caller sees the invalid cells
+      // (and remeshes from the moved surface).
+      std::vector<char> done(tria.n_vertices(), 0);
+      const double rest = double(n_sub - sub) / n_sub;
+      for (const auto& cell : tria.active_cell_iterators())
+        for (unsigned int k = 0; k < 4; ++k) {
+          const auto v = cell->vertex_index(k);
+          if (!done[v] && on_boundary[v])
+            for (unsigned int c = 0; c < 3; ++c)
+              cell->vertex(k)[c] += rest * boundary[v][c];
+          done[v] = 1;
+        }
+      break;
+    }
     iterations += laplace_step(tria, boundary, on_boundary, 1.0 / n_sub);
+  }
   meshes::SurfaceMesh out = surface;
   for (std::size_t v = 0; v < out.n_vertices(); ++v)
     out.vertices[v] += surface_displacement[v];

@@ -19,9 +19,10 @@ struct Recession {
 
 /// Per-vertex recession of the wear face (labels base and C<j><k>) along the inward
 /// area-weighted normal of the wearing faces around each vertex, by the area-weighted mean
-/// depth sum(V_f) / sum(A_f), then scaled (a few secant steps) so that the enclosed volume
-/// of the closed surface drops by exactly the removed volume. Throws for a field of the
-/// wrong size or a negative volume.
+/// depth sum(V_f) / sum(A_f), with the vertices it shares with the unworn surface kept on that
+/// surface (meshes::sliding_constraints: down a flat side, along a crease), then scaled (a few
+/// secant steps) so that the enclosed volume of the closed surface drops by exactly the removed
+/// volume. Throws for a field of the wrong size or a negative volume.
 Recession compute_recession(const meshes::SurfaceMesh& surface,
                             const std::vector<double>& removed_volume);
 
@@ -35,10 +36,22 @@ Recession volume_restoring_offset(const meshes::SurfaceMesh& surface, double tar
 /// removed, area-weighted vertex normal) of the offset to the mean of its edge neighbours.
 /// Recession along normals squeezes the triangles of a receding tip together; relaxing them
 /// keeps the surface fit for mesh motion and remeshing. Label boundaries and the unworn
-/// surface stay put. Returns the displacement per vertex [m].
+/// surface stay put. The vertices of an edge inside one label whose two faces' normals have
+/// a cosine below `spike_cos` (nearly folded flat: a spike that wear sharpened) take the
+/// full offset, normal part included, which cuts the spike (-2: never).
+/// Returns the displacement per vertex [m].
 std::vector<meshes::Vec3> tangential_relaxation(const meshes::SurfaceMesh& surface,
                                                 const std::vector<char>& moving,
-                                                double weight = 0.5);
+                                                double weight = 0.5, double spike_cos = -0.9);
+
+/// Relaxation of the unworn surface (sides, bottom) as the wear face recedes past it: every
+/// vertex whose faces all do not wear moves by `weight` times the offset to the mean of its edge
+/// neighbours, kept in its flat face group or along its crease (meshes::sliding_constraints),
+/// so the unworn shape and the enclosed volume stay as they are. Without it, the strip of side
+/// triangles under a receding wear face edge is squeezed until it folds. Returns the
+/// displacement per vertex [m].
+std::vector<meshes::Vec3> unworn_relaxation(const meshes::SurfaceMesh& surface,
+                                            double weight = 0.5);
 
 struct VolumeQuality {
   double min_scaled_jacobian = 1; ///< [-] 1 for the regular tetrahedron, <= 0 inverted

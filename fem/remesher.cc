@@ -12,11 +12,13 @@
 #include "fem/remesher.h"
 
 #include "meshes/gmsh_session.h"
+#include "meshes/planar_flip.h"
 #include "meshes/sample_generator.h"
 #include "meshes/surface_locator.h"
 
 #include <gmsh.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <set>
@@ -144,6 +146,34 @@ std::map<int, int> patch_labels(const meshes::SurfaceMesh& worn, std::size_t* n_
   }
   return label_of;
 }
+// Smallest 6 sqrt(2) |V| / l_max^3 over the tetrahedra of the current gmsh model (1 for the
+// regular tetrahedron, 0 flat).
+double smallest_tet_quality() {
+  std::vector<std::size_t> node_tags, elements, nodes;
+  std::vector<double> coords, param;
+  gmsh::model::mesh::getNodes(node_tags, coords, param, -1, -1, false, false);
+  std::map<std::size_t, std::size_t> index;
+  for (std::size_t i = 0; i < node_tags.size(); ++i)
+    index[node_tags[i]] = i;
+  gmsh::model::mesh::getElementsByType(4, elements, nodes, -1);
+  double smallest = 1;
+  for (std::size_t t = 0; t < elements.size(); ++t) {
+    meshes::Vec3 x[4];
+    for (int k = 0; k < 4; ++k) {
+      const auto i = index.at(nodes[4 * t + k]);
+      x[k] = {coords[3 * i], coords[3 * i + 1], coords[3 * i + 2]};
+    }
+    double l_max = 0;
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j)
+        l_max = std::max(l_max, meshes::norm(x[j] - x[i]));
+    const double six_v =
+        std::abs(meshes::dot(x[1] - x[0], meshes::cross(x[2] - x[0], x[3] - x[0])));
+    smallest = std::min(smallest, std::sqrt(2.0) * six_v / (l_max * l_max * l_max));
+  }
+  return smallest;
+}
+
 constexpr int keep_surface = 0; // attempt that keeps the input triangles, meshing the volume only
 
 // One attempt: the discrete model, its parametrisation and the volume mesh with the given
@@ -197,6 +227,10 @@ meshes::SurfaceMesh mesh_discrete_volume(const meshes::SurfaceMesh& worn, const 
   auto remeshed = meshes::gmsh_labelled_surface(&r.n_tetrahedra, &r.volume_after);
   if (r.n_tetrahedra == 0)
     throw std::runtime_error("gmsh produced no tetrahedra");
+  r.min_tet_quality = smallest_tet_quality();
+  if (!(r.min_tet_quality > 1e-8))
+    throw std::runtime_error("gmsh left a flat tetrahedron (quality " +
+                             std::to_string(r.min_tet_quality) + ")");
   // gmsh can leave a patch it failed on partly meshed and still fill the volume: only a
   // closed boundary that encloses the worn volume is accepted.
   const auto closed = meshes::check_closed(remeshed);
@@ -225,6 +259,10 @@ meshes::SurfaceMesh remesh_sample(const meshes::SurfaceMesh& worn, const RemeshP
     throw std::invalid_argument("FEM/Remeshing/feature angle must lie in (0, 90) deg, got " +
                                 std::to_string(p.feature_angle_deg));
   RemeshReport r;
+  // Relaxed flat sides hold non-Delaunay triangles, which a volume mesher that keeps them can
+  // only fill with flat tetrahedra; flipping them is exact (the same planes).
+  meshes::SurfaceMesh input = worn;
+  r.n_flat_flips = meshes::flip_flat_edges(input);
   r.n_faces_before = worn.n_faces();
   r.volume_before = meshes::enclosed_volume(worn);
   r.area_before = meshes::area_per_label(worn);
@@ -245,7 +283,7 @@ meshes::SurfaceMesh remesh_sample(const meshes::SurfaceMesh& worn, const RemeshP
   bool done = false;
   for (const auto& [algorithm, feature_angle] : attempts) {
     try {
-      remeshed = mesh_discrete_volume(worn, p, algorithm, feature_angle, msh_path, r);
+      remeshed = mesh_discrete_volume(input, p, algorithm, feature_angle, msh_path, r);
       r.surface_algorithm = algorithm;
       r.feature_angle_deg = feature_angle;
       r.failed_attempts = errors;
@@ -261,7 +299,7 @@ meshes::SurfaceMesh remesh_sample(const meshes::SurfaceMesh& worn, const RemeshP
   }
   if (!done) {
     const std::string dump = msh_path + ".failed-input.msh";
-    write_surface_msh(worn, dump);
+    write_surface_msh(input, dump);
     throw std::runtime_error("remeshing: gmsh failed to mesh the worn volume with every surface "
                              "algorithm:" +
                              errors + "; the input surface is in '" + dump + "'");

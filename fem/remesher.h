@@ -39,6 +39,8 @@ struct RemeshReport {
   int surface_algorithm = 0;         ///< gmsh Mesh.Algorithm that succeeded (6 or 5)
   double feature_angle_deg = 0;      ///< [deg] the angle that succeeded
   std::string failed_attempts;       ///< gmsh's errors of the attempts before, if any
+  std::size_t n_flat_flips = 0;      ///< Delaunay flips in flat regions of the input
+  double min_tet_quality = 0;        ///< [-] smallest 6 sqrt(2) |V| / l_max^3 (1 regular)
   double seconds = 0;
 };
 
@@ -46,7 +48,9 @@ struct RemeshReport {
 /// writes it to `msh_path` (gmsh 4.1, physical groups as generate_sample writes them, so
 /// read_sample_mesh reads it). The input faces of each label form separate discrete
 /// surfaces, split further at feature edges and into patches gmsh can reparametrise; every
-/// new face inherits its patch's label. Returns the new boundary surface with revision
+/// new face inherits its patch's label. Flat regions of the input are first re-triangulated
+/// by Delaunay flips (same surface), and an attempt leaving a flat tetrahedron (quality below
+/// 1e-8) fails like a gmsh error. Returns the new boundary surface with revision
 /// worn.revision() + 1. Throws when the surface is not closed, gmsh fails, or a label is lost.
 meshes::SurfaceMesh remesh_sample(const meshes::SurfaceMesh& worn, const RemeshParameters& p,
                                   const std::string& msh_path, RemeshReport* report = nullptr);

@@ -1,7 +1,9 @@
 // One wear stage on the sample's volume mesh.
 //
 // Per increment: the worn region is first relaxed tangentially (tangential_relaxation: the
-// triangles of a receding tip would otherwise be squeezed into slivers), then the recession of the
+// triangles of a receding tip would otherwise be squeezed into slivers), and so is the unworn
+// surface within its flat sides (unworn_relaxation: the side strip under the receding edge of
+// the wear face would fold), then the recession of the
 // removed volume (compute_recession, volume-exact) is tried on the surface first; if the moved
 // surface would hold a degenerate, inverted (normal turned by more than 90 deg) or
 // self-intersecting face, the stage is split in two and tried again, because an offset along vertex
@@ -23,6 +25,7 @@
 #include "meshes/face_transfer.h"
 #include "meshes/mesh_quality.h"
 #include "meshes/recession.h"
+#include "meshes/vtu_writer.h"
 
 #include <deal.II/grid/tria_description.h>
 
@@ -154,11 +157,23 @@ WearStageReport WornSample::apply_wear(const meshes::FaceField<double>& removed)
         for (const auto v : s.triangles[f])
           worn_vertex[v] = 1;
       }
-    std::vector<meshes::Vec3> displacement = tangential_relaxation(s, worn_vertex);
-    meshes::SurfaceMesh candidate = s;
-    for (std::size_t v = 0; v < candidate.n_vertices(); ++v)
-      candidate.vertices[v] += displacement[v];
-    const double relaxation_loss = meshes::enclosed_volume(s) - meshes::enclosed_volume(candidate);
+    const auto unworn = unworn_relaxation(s);
+    std::vector<meshes::Vec3> displacement;
+    meshes::SurfaceMesh candidate;
+    double relaxation_loss = 0;
+    // Cutting spikes must stay a small part of the increment (its volume is given back in
+    // the recession only up to the increment's own volume); otherwise relax tangentially only.
+    for (const double spike_cos : {-0.9, -2.0}) {
+      displacement = tangential_relaxation(s, worn_vertex, 0.5, spike_cos);
+      for (std::size_t v = 0; v < displacement.size(); ++v)
+        displacement[v] += unworn[v];
+      candidate = s;
+      for (std::size_t v = 0; v < candidate.n_vertices(); ++v)
+        candidate.vertices[v] += displacement[v];
+      relaxation_loss = meshes::enclosed_volume(s) - meshes::enclosed_volume(candidate);
+      if (std::abs(relaxation_loss) <= 0.25 * part_sum)
+        break;
+    }
     std::vector<double> recede = part;
     if (part_sum > 0)
       for (auto& v : recede)
@@ -186,11 +201,34 @@ WearStageReport WornSample::apply_wear(const meshes::FaceField<double>& removed)
                       meshes::label::name(s.face_labels[std::size_t(sq.first_bad_face)]) + ")";
         // Tell apart a step that folds from a surface that already does (then no step helps).
         const bool folded_before = !meshes::surface_quality(s).valid();
+        const std::string dump = write_failed_increment(s, candidate, sq.bad_faces);
+        // How thin the sample has worn (sample frame: the clamped bottom is the lowest face):
+        // a fold near a sample worn nearly through is the end of the sample, not of the scheme.
+        double bottom_z = -1e300, lowest = 1e300;
+        meshes::Vec3 at;
+        for (std::size_t f = 0; f < s.n_faces(); ++f)
+          for (const auto v : s.triangles[f]) {
+            if (s.face_labels[f] == meshes::label::bottom)
+              bottom_z = std::max(bottom_z, s.vertices[v].z);
+            else if (meshes::label::wears(s.face_labels[f]) && s.vertices[v].z < lowest) {
+              lowest = s.vertices[v].z;
+              at = s.vertices[v];
+            }
+          }
+        const std::string thickness =
+            lowest < 1e300 && bottom_z > -1e300
+                ? "; the wear face is " + std::to_string((lowest - bottom_z) * 1e3) +
+                      " mm above the clamped bottom at its lowest, at (" +
+                      std::to_string(at.x * 1e3) + ", " + std::to_string(at.y * 1e3) + ") mm"
+                : std::string();
         throw std::runtime_error(
             "wear stage: the worn surface folds" + where + " even in " + std::to_string(n_left) +
             " increments" +
             (folded_before ? " (the surface before this increment already folds)" : "") +
-            "; reduce the wear per stage");
+            thickness +
+            "; reduce the wear per stage (surface before and after the increment, bad faces "
+            "marked: " +
+            dump + ")");
       }
       n_left *= 2;
       ++halvings;
@@ -227,6 +265,20 @@ WearStageReport WornSample::apply_wear(const meshes::FaceField<double>& removed)
   r.volume_change = volume_before - mesh_volume(*tria_);
   r.quality = volume_quality(*tria_);
   return r;
+}
+
+std::string WornSample::write_failed_increment(const meshes::SurfaceMesh& before,
+                                               const meshes::SurfaceMesh& after,
+                                               const std::vector<std::uint32_t>& bad_faces) const {
+  meshes::ensure_directory(p_.mesh_directory);
+  meshes::FaceField<double> bad("bad face", "-", meshes::Extensivity::intensive, before);
+  for (const auto f : bad_faces)
+    bad[f] = 1;
+  const std::string stem = p_.mesh_directory + "/wear-failed-r" + std::to_string(before.revision());
+  meshes::write_vtu(before, stem + "-before.vtu", {&bad});
+  bad.follow(after);
+  meshes::write_vtu(after, stem + "-after.vtu", {&bad});
+  return stem + "-{before,after}.vtu";
 }
 
 RemeshReport WornSample::remesh() {

@@ -91,6 +91,11 @@ public:
 private:
   void set_surface(const meshes::SurfaceMesh& surface);
   RemeshReport remesh_from(const meshes::SurfaceMesh& surface);
+  /// Writes the surface before a failing increment and the folded candidate, bad faces
+  /// marked, for diagnosis; returns the paths.
+  std::string write_failed_increment(const meshes::SurfaceMesh& before,
+                                     const meshes::SurfaceMesh& after,
+                                     const std::vector<std::uint32_t>& bad_faces) const;
 
   WornSampleParameters p_;
   std::unique_ptr<dealii::Triangulation<3>> tria_;

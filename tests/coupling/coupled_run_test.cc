@@ -201,8 +201,8 @@ TEST_CASE("wearsim run: past the node-moving method's distortion limit the stage
   const std::string ref_log = run_case(ref);
   INFO(ref_log);
   REQUIRE(ref_log.find("distorted the surface in stage") != std::string::npos);
-  const auto ref_applied = Hdf5Reader(ref.output.directory + "/history.h5")
-                               .doubles("/stages/cumulative_applied_m3");
+  const auto ref_applied =
+      Hdf5Reader(ref.output.directory + "/history.h5").doubles("/stages/cumulative_applied_m3");
   const double distorted_at = ref_applied.back(); // [m^3] applied when it distorted
   // Both schemes remove about the same volume per stage (same DEM, same amplification), so
   // 3.5 times the reference's stages reach three times its volume with a margin.
@@ -213,16 +213,25 @@ TEST_CASE("wearsim run: past the node-moving method's distortion limit the stage
   // element, which the remesher refines (0.6 mm edges at stage 17), so the cap per stage is
   // set loose here (10 edge lengths); the wear stage splits itself where the surface would
   // fold, and spreads the wear around a tip that folds even so.
-  auto staged = small_case("coupled_run_staged", std::to_string(n_staged) + " staged",
-                           amplification);
+  auto staged =
+      small_case("coupled_run_staged", std::to_string(n_staged) + " staged", amplification);
   staged.coupling.max_depth_fraction = 10.0;
   std::filesystem::remove_all(staged.output.directory);
   std::ostringstream log;
   CoupledRun run(staged, log, {false, false, 0});
-  run.run();
-  INFO(log.str());
+  // The criterion is the volume reached with valid meshes; a stop after it (the schedule has a
+  // margin) is reported, not hidden.
+  std::string stopped = "no: the whole schedule ran";
+  try {
+    run.run();
+  } catch (const std::exception& e) {
+    stopped = e.what();
+  }
   const auto& stages = run.stages();
   REQUIRE(!stages.empty());
+  INFO(log.str() << "\nstopped early: " << stopped << "\nreached "
+                 << stages.back().cumulative_applied / distorted_at
+                 << " times the reference's distortion volume in " << stages.size() << " stages");
   for (const auto& s : stages) {
     INFO("stage " << s.stage);
     CHECK(s.min_scaled_jacobian > 0); // no inverted or flat cell handed on

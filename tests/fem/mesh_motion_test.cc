@@ -2,11 +2,14 @@
 // exactly the removed volume; a convex element losing 30 % of its height inverts cells and
 // the quality check reports it (in one step, without WornSample's increments and remeshing);
 // quality measures of known tetrahedra; tangential relaxation stays in a flat face and keeps
-// label boundaries; the volume-restoring offset hits its target.
+// label boundaries; the volume-restoring offset hits its target; the unworn sides stay flat
+// while the wear face recedes below their first row of vertices.
 #include "fem/boundary_face_map.h"
 #include "fem/mesh_motion.h"
 #include "fem/sample_triangulation.h"
+#include "meshes/mesh_quality.h"
 #include "meshes/sample_generator.h"
+#include "meshes/sliding_constraint.h"
 
 #include <catch2/catch.hpp>
 
@@ -185,6 +188,111 @@ TEST_CASE("tangential relaxation stays in a flat face and keeps label boundaries
   }
   CHECK(n_moved > 0);
   CHECK(after < before);
+}
+
+TEST_CASE("tangential relaxation cuts a spike folded nearly flat, and only that", "[fem][motion]") {
+  // A fan of six faces around the origin, one outer vertex folded back over its neighbour
+  // face and lifted 0.1 (their normals nearly opposite): the four vertices of that pair take
+  // the full offset to their neighbours' mean, normal part too; every other vertex moves as
+  // without the rule, tangentially.
+  wear::meshes::SurfaceMesh m;
+  m.vertices.push_back({0, 0, 0});
+  for (int k = 0; k < 6; ++k)
+    m.vertices.push_back({std::cos(k * M_PI / 3), std::sin(k * M_PI / 3), 0});
+  for (std::uint32_t k = 0; k < 6; ++k)
+    m.triangles.push_back({0, 1 + k, 1 + (k + 1) % 6});
+  m.face_labels.assign(6, 3);
+  m.vertices[3] = {0.6, 0.3, 0.1}; // over face (0, 1, 2), sharing edge 0-2 with it
+  const auto normal = wear::meshes::face_normals(m);
+  REQUIRE(wear::meshes::dot(normal[0], normal[1]) < -0.9);
+  const std::vector<char> all(m.n_vertices(), 1);
+  const auto with = tangential_relaxation(m, all), without = tangential_relaxation(m, all, 0.5, -2);
+  const auto vn = wear::meshes::vertex_normals(m);
+  double normal_part = 0;
+  for (std::uint32_t v = 0; v < m.n_vertices(); ++v) {
+    const bool sharp = v <= 3;
+    INFO("vertex " << v);
+    CHECK(std::abs(wear::meshes::dot(without[v], vn[v])) < 1e-15);
+    if (sharp)
+      normal_part = std::max(normal_part, std::abs(wear::meshes::dot(with[v], vn[v])));
+    else
+      CHECK(wear::meshes::norm(with[v] - without[v]) == 0);
+  }
+  CHECK(normal_part > 1e-3);
+}
+
+TEST_CASE("the unworn sides stay flat as the wear face recedes past their first row",
+          "[fem][motion]") {
+  // Box 60 x 40 x 10 mm, three rows of side vertices (3.3 mm apart). The top wears 1 mm deep at
+  // x = a and 5 mm at x = 0, in 10 increments, so the top slopes and its normals at the x = 0
+  // edge tilt: the vertices the top shares with the sides must slide down the side planes (an
+  // offset along the tilted normal would leave them), and the side strip under the x = 0 edge,
+  // whose top row is passed after about 7 increments, must stay a valid surface.
+  dealii::Triangulation<3> tria;
+  const double a = 0.06, b = 0.04, c = 0.01;
+  make_box(tria, a, b, c);
+  auto surface = extract_boundary_surface(tria);
+  using wear::meshes::SlidingConstraint;
+  const auto constraint = wear::meshes::sliding_constraints(surface);
+  const auto at = [&](double x, double y, double z) {
+    for (std::size_t v = 0; v < surface.n_vertices(); ++v)
+      if (wear::meshes::norm(surface.vertices[v] - Vec3{x, y, z}) < 1e-9)
+        return constraint[v];
+    FAIL("no vertex at " << x << " " << y << " " << z);
+    return SlidingConstraint{};
+  };
+  CHECK(at(a / 2, b / 2, c).n_free == 3); // on the wear face only
+  CHECK(at(0, b / 2, c / 3).n_free == 2); // inside a side
+  CHECK(std::abs(at(0, b / 2, c / 3).axis.x) == 1);
+  CHECK(at(0, b / 2, c).n_free == 2); // top edge: its side only
+  CHECK(at(0, 0, c / 3).n_free == 1); // vertical crease
+  CHECK(std::abs(at(0, 0, c / 3).axis.z) == Approx(1).epsilon(1e-15));
+  CHECK(at(0, 0, c).n_free == 1); // top corner: down the crease
+  CHECK(at(0, 0, 0).n_free == 0); // bottom corner
+
+  const double v0 = wear::meshes::enclosed_volume(surface);
+  double removed_total = 0;
+  const int n_steps = 10;
+  for (int step = 0; step < n_steps; ++step) {
+    const auto area = wear::meshes::face_areas(surface);
+    const auto centroid = wear::meshes::face_centroids(surface);
+    std::vector<double> removed(surface.n_faces(), 0);
+    for (std::size_t f = 0; f < surface.n_faces(); ++f)
+      if (surface.face_labels[f] == 3) {
+        removed[f] = (1e-3 + 4e-3 * (1 - centroid[f].x / a)) / n_steps * area[f];
+        removed_total += removed[f];
+      }
+    auto relaxed = surface;
+    const auto relax = unworn_relaxation(surface);
+    for (std::size_t v = 0; v < surface.n_vertices(); ++v)
+      relaxed.vertices[v] += relax[v];
+    CHECK(wear::meshes::enclosed_volume(relaxed) ==
+          Approx(wear::meshes::enclosed_volume(surface)).epsilon(1e-13));
+    const auto rec = compute_recession(relaxed, removed);
+    for (std::size_t v = 0; v < surface.n_vertices(); ++v)
+      surface.vertices[v] = relaxed.vertices[v] + rec.displacement[v];
+    surface.bump_revision();
+    INFO("increment " << step);
+    REQUIRE(wear::meshes::surface_quality(surface).valid());
+  }
+  CHECK(v0 - wear::meshes::enclosed_volume(surface) == Approx(removed_total).epsilon(1e-9));
+  // Every vertex of a side face is still in that side's plane, to round-off.
+  double off_plane = 0, lowest_top_edge = c;
+  for (std::size_t f = 0; f < surface.n_faces(); ++f)
+    if (surface.face_labels[f] == 2) {
+      const Vec3 n = wear::meshes::face_normal_unnormalized(surface, f);
+      const int axis = std::abs(n.x) > std::abs(n.y) ? 0 : 1;
+      const double plane = n[axis] > 0 ? (axis == 0 ? a : b) : 0;
+      for (const auto v : surface.triangles[f])
+        off_plane = std::max(off_plane, std::abs(surface.vertices[v][axis] - plane));
+    }
+  for (std::size_t f = 0; f < surface.n_faces(); ++f)
+    if (surface.face_labels[f] == 3)
+      for (const auto v : surface.triangles[f])
+        if (surface.vertices[v].x == 0)
+          lowest_top_edge = std::min(lowest_top_edge, surface.vertices[v].z);
+  CHECK(off_plane < 1e-15);
+  CHECK(lowest_top_edge < c * 2 / 3); // the top edge did pass the first row's height
 }
 
 TEST_CASE("volume-restoring offset reaches the target volume", "[fem][motion]") {
