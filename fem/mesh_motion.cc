@@ -112,6 +112,20 @@ std::vector<Vec3> neighbour_offsets(const meshes::SurfaceMesh& surface) {
   return sum;
 }
 
+// Adds factor * d[v] to every vertex v of the triangulation (each once, though cells share it).
+void displace_vertices(dealii::Triangulation<3>& tria, const std::vector<Vec3>& d, double factor) {
+  std::vector<char> done(tria.n_vertices(), 0);
+  for (const auto& cell : tria.active_cell_iterators())
+    for (unsigned int k = 0; k < 4; ++k) {
+      const auto v = cell->vertex_index(k);
+      if (done[v])
+        continue;
+      done[v] = 1;
+      for (unsigned int c = 0; c < 3; ++c)
+        cell->vertex(k)[c] += factor * d[v][c];
+    }
+}
+
 // The first cell with a non-positive signed volume, or -1.
 long first_invalid_cell(const dealii::Triangulation<3>& tria) {
   for (const auto& cell : tria.active_cell_iterators()) {
@@ -183,16 +197,7 @@ unsigned int laplace_step(dealii::Triangulation<3>& tria, const std::vector<Vec3
     for (types::global_dof_index i = 0; i < dof.n_dofs(); ++i)
       moved[vertex_of_dof[i]][c] = d(i);
   }
-  std::vector<char> done(tria.n_vertices(), 0);
-  for (const auto& cell : tria.active_cell_iterators())
-    for (unsigned int k = 0; k < 4; ++k) {
-      const auto v = cell->vertex_index(k);
-      if (done[v])
-        continue;
-      done[v] = 1;
-      for (unsigned int c = 0; c < 3; ++c)
-        cell->vertex(k)[c] += moved[v][c];
-    }
+  displace_vertices(tria, moved, 1.0);
   return iterations;
 }
 
@@ -388,16 +393,8 @@ meshes::SurfaceMesh move_mesh(dealii::Triangulation<3>& tria, const BoundaryFace
       // A sub-step inverted or flattened a cell: the interior cannot follow further, so the
       // boundary takes its remaining way directly and the caller sees the invalid cells
       // (and remeshes from the moved surface).
-      std::vector<char> done(tria.n_vertices(), 0);
-      const double rest = double(n_sub - sub) / n_sub;
-      for (const auto& cell : tria.active_cell_iterators())
-        for (unsigned int k = 0; k < 4; ++k) {
-          const auto v = cell->vertex_index(k);
-          if (!done[v] && on_boundary[v])
-            for (unsigned int c = 0; c < 3; ++c)
-              cell->vertex(k)[c] += rest * boundary[v][c];
-          done[v] = 1;
-        }
+      // (boundary is zero at interior vertices, so only the boundary moves)
+      displace_vertices(tria, boundary, double(n_sub - sub) / n_sub);
       break;
     }
     iterations += laplace_step(tria, boundary, on_boundary, 1.0 / n_sub);
