@@ -223,6 +223,10 @@ void visit(CaseParameters& c, Visitor&& v) {
            "[deg] Edges sharper than this are kept as edges when remeshing the worn surface.");
     v.real("Chord tolerance", f.chord_tolerance,
            "[m] Largest gap between the remeshed and the worn surface the size field aims at.");
+    v.real("Worn-through thickness", f.worn_through_thickness,
+           "[m] A wear face with a vertex closer than this to the sample's clamped bottom is worn "
+           "through: no material is left there, so the wear asked of it is recorded "
+           "(stages.csv: worn_through_volume_m3) and not removed.");
   }
   v.leave();
   v.enter("Output");

@@ -55,6 +55,8 @@ void visit(StageRecord& r, V& v) {
   v("remeshes", r.n_remeshes);
   v("total_remeshes", r.total_remeshes);
   v("spread_volume_m3", r.spread_volume);
+  v("worn_through_volume_m3", r.worn_through_volume);
+  v("worn_through_faces", r.n_worn_through);
   v("tetrahedra", r.n_tetrahedra);
   v("surface_faces", r.n_surface_faces);
   v("pushed_particles", r.n_pushed);

@@ -28,6 +28,10 @@ struct StageRecord {
   double mean_stress_factor = 1;     ///< [-] area-weighted stress-informed factor on wear faces
   int increments = 0, n_remeshes = 0, total_remeshes = 0;
   double spread_volume = 0; ///< [m^3] moved between faces where the recession would fold
+  /// [m^3] asked of faces worn through to the clamped bottom, not removed
+  /// (geometry_volume_change = applied_volume - worn_through_volume)
+  double worn_through_volume = 0;
+  int n_worn_through = 0; ///< wear faces worn through at the end of the stage
   int n_tetrahedra = 0, n_surface_faces = 0, n_pushed = 0;
   double max_push = 0;            ///< [m] largest displacement of a pushed particle
   double min_scaled_jacobian = 0; ///< [-] of the mesh handed on

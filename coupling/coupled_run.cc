@@ -46,9 +46,10 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
-std::string format(const char* f, double a) {
-  char b[64];
-  std::snprintf(b, sizeof b, f, a);
+template <typename... Args>
+std::string format(const char* f, Args... a) {
+  char b[512];
+  std::snprintf(b, sizeof b, f, a...);
   return b;
 }
 
@@ -118,6 +119,7 @@ CoupledRun::CoupledRun(const CaseParameters& p, std::ostream& log, const RunOpti
 fem::WornSampleParameters CoupledRun::worn_parameters() const {
   fem::WornSampleParameters w;
   w.remesh_min_scaled_jacobian = p_.fem.remesh_min_scaled_jacobian;
+  w.worn_through_thickness = p_.fem.worn_through_thickness;
   w.remesh.sizes = p_.geometry.sample;
   w.remesh.feature_angle_deg = p_.fem.feature_angle_deg;
   w.remesh.chord_tolerance = p_.fem.chord_tolerance;
@@ -219,6 +221,14 @@ void CoupledRun::run() {
     }
     output_results(r);
     print_stage(r);
+    if (r.worn_through_volume > 0 && !worn_through_reported_) {
+      log_ << format("stage %d: the sample is worn through: %d wear faces are within %g mm of "
+                     "the clamped bottom (FEM/Worn-through thickness); the %.4g mm^3 asked of "
+                     "them is not removed (stages.csv: worn_through_volume_m3)\n",
+                     r.stage, r.n_worn_through, p_.fem.worn_through_thickness * 1e3,
+                     r.worn_through_volume * 1e9);
+      worn_through_reported_ = true;
+    }
     if (!r.distortion.empty()) {
       log_ << "the reference method distorted the surface in stage " << r.stage << " ("
            << r.distortion << "); the run stops here, as the reference study's did\n";
@@ -232,6 +242,12 @@ void CoupledRun::run() {
     }
   }
   print_timing();
+  double worn_through = 0;
+  for (const auto& s : stages_)
+    worn_through += s.worn_through_volume;
+  if (worn_through > 0)
+    log_ << format("worn through: %.4g mm^3 of the %.4g mm^3 asked was not removed\n",
+                   worn_through * 1e9, stages_.back().cumulative_applied * 1e9);
   log_ << "results: " << output_->summary_path() << ", " << output_->stages_path() << ", "
        << output_->xdmf_path() << " (ParaView); plots: /usr/bin/python3 coupling/plot_run.py "
        << p_.output.directory << "\n";
@@ -378,6 +394,8 @@ void CoupledRun::update_geometry(const meshes::FaceField<double>& removed, Stage
   r.n_remeshes = report.n_remeshes;
   r.total_remeshes = sample_->n_remeshes();
   r.spread_volume = report.spread_volume;
+  r.worn_through_volume = report.worn_through_volume;
+  r.n_worn_through = report.n_worn_through;
   r.min_scaled_jacobian = report.quality.min_scaled_jacobian;
   r.motion_seconds = report.motion_seconds;
   r.remesh_seconds = report.remesh_seconds;

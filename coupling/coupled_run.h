@@ -55,6 +55,7 @@ private:
   std::string parameters_text_;
   std::vector<int> plan_; ///< Scheme of each stage
   bool staged_ = false, reference_ = false;
+  bool worn_through_reported_ = false;  ///< the first worn-through stage was logged
   meshes::SurfaceMesh initial_surface_; ///< sample frame, as generated
   std::unique_ptr<dem::WearTester> tester_;
   std::unique_ptr<fem::WornSample> sample_;

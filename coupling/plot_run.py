@@ -132,6 +132,9 @@ def plot_stages(stages, out):
     fig, axes = plt.subplots(1, 2, figsize=(10, 3.8))
     axes[0].plot(st, column(stages, "applied_volume_m3") * 1e9, "o-", label="asked (wear x amplification)")
     axes[0].plot(st, column(stages, "geometry_volume_change_m3") * 1e9, "x--", label="removed by the mesh update")
+    worn_through = column(stages, "worn_through_volume_m3", 0.0) * 1e9
+    if np.nansum(worn_through) > 0:
+        axes[0].plot(st, worn_through, "s:", label="asked of worn-through faces (not removed)")
     axes[0].set_ylabel("volume per stage [mm$^3$]")
     axes[0].legend(fontsize=8)
     vm = column(stages, "max_von_mises_Pa") * 1e-6

@@ -18,6 +18,11 @@
 // the secant (the wear record is the volume, not the chord geometry). Accumulated fields follow the
 // faces while the topology is kept and are transferred (FaceTransfer: extensive per label, exactly;
 // intensive by area) across a remesh.
+// A wearing face with a vertex within `worn_through_thickness` of the clamped bottom is worn
+// through: the model has no material left there (a hole would change the topology), so the
+// wear asked of it is recorded as worn-through volume instead of removed, and the stage ends
+// with volume change = asked - worn through. Increments that would take a vertex more than
+// halfway through that layer are split like folding ones.
 #include "fem/worn_sample.h"
 
 #include "fem/sample_triangulation.h"
@@ -31,10 +36,36 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 #include <map>
 #include <stdexcept>
 
 namespace wear::fem {
+
+namespace {
+// Height of the clamped bottom in the sample frame (its highest vertex; the bottom is flat),
+// or -infinity for a surface without one.
+double bottom_height(const meshes::SurfaceMesh& s) {
+  double z = -std::numeric_limits<double>::infinity();
+  for (std::size_t f = 0; f < s.n_faces(); ++f)
+    if (s.face_labels[f] == meshes::label::bottom)
+      for (const auto v : s.triangles[f])
+        z = std::max(z, s.vertices[v].z);
+  return z;
+}
+
+// The lowest vertex of the wear face, whose faces are the first to wear through.
+meshes::Vec3 lowest_wearing_vertex(const meshes::SurfaceMesh& s) {
+  meshes::Vec3 at{0, 0, std::numeric_limits<double>::infinity()};
+  for (std::size_t f = 0; f < s.n_faces(); ++f)
+    if (meshes::label::wears(s.face_labels[f]))
+      for (const auto v : s.triangles[f])
+        if (s.vertices[v].z < at.z)
+          at = s.vertices[v];
+  return at;
+}
+} // namespace
 
 WornSample::WornSample(const std::string& msh_path, const WornSampleParameters& p) : p_(p) {
   tria_ = std::make_unique<dealii::Triangulation<3>>();
@@ -144,6 +175,19 @@ WearStageReport WornSample::apply_wear(const meshes::FaceField<double>& removed)
   int n_left = 1, halvings = 0, spreadings = 0;
   while (n_left > 0) {
     const auto& s = surface();
+    // Faces worn down to the clamped bottom have no material left: what is asked of them is
+    // recorded, and the recession below acts on the rest of the wear face only.
+    const double floor_z = bottom_height(s) + p_.worn_through_thickness;
+    r.n_worn_through = 0;
+    for (std::size_t f = 0; f < s.n_faces(); ++f)
+      if (meshes::label::wears(s.face_labels[f]))
+        for (const auto v : s.triangles[f])
+          if (s.vertices[v].z < floor_z) {
+            r.worn_through_volume += remaining[f];
+            remaining[f] = 0;
+            ++r.n_worn_through;
+            break;
+          }
     std::vector<double> part = remaining.values();
     for (auto& v : part)
       v /= n_left;
@@ -185,6 +229,17 @@ WearStageReport WornSample::apply_wear(const meshes::FaceField<double>& removed)
     }
     const auto normals = meshes::face_normals(s);
     const auto sq = meshes::surface_quality(candidate, &normals);
+    // An increment that takes a vertex more than halfway through the worn-through layer
+    // would carry on past the bottom on the next: take it in smaller steps.
+    bool overshoots = false;
+    for (std::size_t v = 0; v < s.n_vertices() && !overshoots; ++v)
+      overshoots = worn_vertex[v] && candidate.vertices[v].z < s.vertices[v].z &&
+                   candidate.vertices[v].z < floor_z - 0.5 * p_.worn_through_thickness;
+    if (sq.valid() && overshoots && halvings < p_.max_halvings) {
+      n_left *= 2;
+      ++halvings;
+      continue;
+    }
     if (!sq.valid()) {
       if (halvings >= p_.halvings_before_spreading && spreadings < p_.max_spreadings) {
         r.spread_volume +=
@@ -202,22 +257,12 @@ WearStageReport WornSample::apply_wear(const meshes::FaceField<double>& removed)
         // Tell apart a step that folds from a surface that already does (then no step helps).
         const bool folded_before = !meshes::surface_quality(s).valid();
         const std::string dump = write_failed_increment(s, candidate, sq.bad_faces);
-        // How thin the sample has worn (sample frame: the clamped bottom is the lowest face):
-        // a fold near a sample worn nearly through is the end of the sample, not of the scheme.
-        double bottom_z = -1e300, lowest = 1e300;
-        meshes::Vec3 at;
-        for (std::size_t f = 0; f < s.n_faces(); ++f)
-          for (const auto v : s.triangles[f]) {
-            if (s.face_labels[f] == meshes::label::bottom)
-              bottom_z = std::max(bottom_z, s.vertices[v].z);
-            else if (meshes::label::wears(s.face_labels[f]) && s.vertices[v].z < lowest) {
-              lowest = s.vertices[v].z;
-              at = s.vertices[v];
-            }
-          }
+        // How thin the sample has worn (sample frame: the clamped bottom is the lowest face).
+        const meshes::Vec3 at = lowest_wearing_vertex(s);
+        const double bottom_z = bottom_height(s);
         const std::string thickness =
-            lowest < 1e300 && bottom_z > -1e300
-                ? "; the wear face is " + std::to_string((lowest - bottom_z) * 1e3) +
+            std::isfinite(at.z) && std::isfinite(bottom_z)
+                ? "; the wear face is " + std::to_string((at.z - bottom_z) * 1e3) +
                       " mm above the clamped bottom at its lowest, at (" +
                       std::to_string(at.x * 1e3) + ", " + std::to_string(at.y * 1e3) + ") mm"
                 : std::string();

@@ -29,6 +29,9 @@ struct WornSampleParameters {
   /// and again at every smaller increment.
   int halvings_before_spreading = 2;
   int max_spreadings = 6; ///< spreading attempts per fold and increment size (2 ... 64 rings)
+  /// A wearing face with a vertex closer than this to the clamped bottom is worn through:
+  /// no material is left there, so the wear asked of it is recorded, not removed. [m]
+  double worn_through_thickness = 1e-3;
 };
 
 struct WearStageReport {
@@ -38,6 +41,10 @@ struct WearStageReport {
   int n_remeshes = 0;
   int n_spreadings = 0;     ///< spreading steps taken where the recession folded
   double spread_volume = 0; ///< [m^3] removed volume moved between faces by spreading
+  /// [m^3] asked of faces worn through (within worn_through_thickness of the bottom): not
+  /// removed; volume_change = removed_volume - worn_through_volume
+  double worn_through_volume = 0;
+  int n_worn_through = 0;   ///< faces worn through when the stage ended
   RemeshReport last_remesh; ///< valid when n_remeshes > 0
   VolumeQuality quality;    ///< of the mesh handed on
   double motion_seconds = 0, remesh_seconds = 0;

@@ -229,16 +229,26 @@ TEST_CASE("wearsim run: past the node-moving method's distortion limit the stage
   }
   const auto& stages = run.stages();
   REQUIRE(!stages.empty());
-  INFO(log.str() << "\nstopped early: " << stopped << "\nreached "
-                 << stages.back().cumulative_applied / distorted_at
-                 << " times the reference's distortion volume in " << stages.size() << " stages");
+  // Where the wear face reaches the clamped bottom (the sample has no holder; wear gathers
+  // at its exposed leading corner) the sample is worn through and that wear is recorded, not
+  // removed: the criterion counts the volume actually removed from the mesh.
+  double removed = 0, worn_through = 0;
   for (const auto& s : stages) {
     INFO("stage " << s.stage);
     CHECK(s.min_scaled_jacobian > 0); // no inverted or flat cell handed on
-    CHECK(std::abs(s.geometry_volume_change - s.applied_volume) < 5e-3 * s.applied_volume);
+    CHECK(std::abs(s.geometry_volume_change - (s.applied_volume - s.worn_through_volume)) <
+          5e-3 * s.applied_volume);
+    removed += s.geometry_volume_change;
+    worn_through += s.worn_through_volume;
   }
+  INFO(log.str() << "\nstopped early: " << stopped << "\nremoved " << removed / distorted_at
+                 << " times the reference's distortion volume in " << stages.size()
+                 << " stages; worn through (asked, not removed): " << worn_through * 1e9
+                 << " mm^3 of " << stages.back().cumulative_applied * 1e9 << " mm^3");
   CHECK(stages.back().total_remeshes > 0);
-  CHECK(stages.back().cumulative_applied > 3 * distorted_at);
+  CHECK(removed > 3 * distorted_at);
+  // The worn-through wear is the exposed corner's, a small part of the whole.
+  CHECK(worn_through < 0.2 * stages.back().cumulative_applied);
 }
 
 TEST_CASE("the quick case, shortened, gives a complete summary with finite positive wear",

@@ -5,6 +5,7 @@
 #include "fem/remesher.h"
 #include "fem/sample_triangulation.h"
 #include "fem/worn_sample.h"
+#include "meshes/mesh_quality.h"
 #include "meshes/sample_generator.h"
 
 #include <catch2/catch.hpp>
@@ -28,6 +29,20 @@ void check_remesh(const RemeshReport& r, double max_distance, double area_tolera
     INFO("label " << wear::meshes::label::name(label));
     CHECK(r.area_after.at(label) == Approx(area).epsilon(area_tolerance));
   }
+}
+// A removed-volume field [m^3] on the sample's current surface: depth(centroid, normal) [m]
+// times the area of every wearing face.
+template <typename Depth>
+FaceField<double> removed_by_depth(const WornSample& sample, Depth depth) {
+  const auto& m = sample.surface();
+  const auto area = wear::meshes::face_areas(m);
+  const auto centroid = wear::meshes::face_centroids(m);
+  const auto normal = wear::meshes::face_normals(m);
+  FaceField<double> removed("removed volume", "m^3", wear::meshes::Extensivity::extensive, m);
+  for (std::size_t f = 0; f < m.n_faces(); ++f)
+    if (wear::meshes::label::wears(m.face_labels[f]))
+      removed[f] = depth(m.face_labels[f], centroid[f], normal[f]) * area[f];
+  return removed;
 }
 } // namespace
 
@@ -84,15 +99,10 @@ TEST_CASE("a convex element worn by 30 % of its height in stages stays a valid m
   double removed_total = 0;
   int n_remeshes = 0;
   for (int stage = 0; stage < n_stages; ++stage) {
-    const auto& m = sample.surface();
-    const auto area = wear::meshes::face_areas(m);
-    const auto centroid = wear::meshes::face_centroids(m);
-    const auto normal = wear::meshes::face_normals(m);
-    FaceField<double> removed("removed volume", "m^3", wear::meshes::Extensivity::extensive, m);
-    for (std::size_t f = 0; f < m.n_faces(); ++f)
-      if (m.face_labels[f] == label)
-        removed[f] = 0.45 / n_stages * h * normal[f].z * normal[f].z *
-                     std::max(0.0, (centroid[f].z - s.thickness) / h) * area[f];
+    const auto removed = removed_by_depth(sample, [&](int l, const auto& c, const auto& n) {
+      return l != label ? 0.0
+                        : 0.45 / n_stages * h * n.z * n.z * std::max(0.0, (c.z - s.thickness) / h);
+    });
     const auto r = sample.apply_wear(removed);
     INFO("stage " << stage << ": " << r.increments << " increments, " << r.n_remeshes
                   << " remeshes, min scaled Jacobian " << r.quality.min_scaled_jacobian);
@@ -131,4 +141,74 @@ TEST_CASE("remeshing refuses an open surface and a bad feature angle", "[fem][re
   open.face_labels.push_back(3);
   p.feature_angle_deg = 95;
   CHECK_THROWS_WITH(remesh_sample(open, p, "open.msh"), Catch::Contains("feature angle"));
+}
+
+TEST_CASE("wear past the clamped bottom is recorded as worn through, not removed",
+          "[fem][remesh]") {
+  // A thin plain plate (3 mm) worn at one corner by a cone of depth, 1.5 mm per stage at the
+  // corner, for 4 stages: the corner reaches the worn-through layer (1 mm above the bottom) in
+  // stage 2. From then on what is asked of the faces in that layer is recorded, and the mesh
+  // loses exactly the rest; no vertex passes through the layer and every mesh stays valid.
+  // Without the layer the corner's recession folds against the bottom, and the wear stage
+  // spreads nearly all of the stage's wear sideways (83 of 88 mm^3 in stage 2).
+  wear::meshes::SampleGeometry s;
+  s.convex = false;
+  s.length = 0.040;
+  s.width = 0.030;
+  s.thickness = 0.003;
+  s.mesh_size = 2e-3;
+  s.mesh_size_bottom = 3e-3;
+  wear::meshes::generate_sample(s, "worn_through_sample.msh");
+  WornSampleParameters p;
+  p.remesh.sizes = s;
+  p.mesh_directory = "worn_through_meshes";
+  p.worn_through_thickness = 1e-3;
+  WornSample sample("worn_through_sample.msh", p);
+  const auto corner = [&] {
+    wear::meshes::Vec3 c{1e300, 1e300, 0};
+    for (const auto& v : sample.surface().vertices)
+      c.x = std::min(c.x, v.x), c.y = std::min(c.y, v.y);
+    return c;
+  }();
+  const double bottom = [&] {
+    double z = 1e300;
+    for (const auto& v : sample.surface().vertices)
+      z = std::min(z, v.z);
+    return z;
+  }();
+  const double v0 = mesh_volume(sample.triangulation());
+  double asked = 0, worn_through = 0;
+  for (int stage = 0; stage < 4; ++stage) {
+    const auto removed = removed_by_depth(sample, [&](int, const auto& c, const auto& n) {
+      return 1.5e-3 * std::max(0.0, 1 - std::hypot(c.x - corner.x, c.y - corner.y) / 0.015) *
+             std::abs(n.z);
+    });
+    const auto r = sample.apply_wear(removed);
+    INFO("stage " << stage << ": asked " << r.removed_volume * 1e9 << " mm^3, worn through "
+                  << r.worn_through_volume * 1e9 << " mm^3 on " << r.n_worn_through << " faces, "
+                  << r.n_remeshes << " remeshes");
+    CHECK(r.quality.n_inverted == 0);
+    CHECK(r.quality.min_scaled_jacobian > 0);
+    CHECK(r.volume_change ==
+          Approx(r.removed_volume - r.worn_through_volume).epsilon(1e-8).margin(1e-15));
+    if (stage == 0)
+      CHECK(r.worn_through_volume == 0);
+    if (stage >= 2) {
+      CHECK(r.n_worn_through > 0);
+      CHECK(r.worn_through_volume > 0.05 * r.removed_volume);
+      CHECK(r.spread_volume < 0.05 * r.removed_volume);
+    }
+    const auto& after = sample.surface();
+    double lowest = 1e300;
+    for (std::size_t f = 0; f < after.n_faces(); ++f)
+      if (wear::meshes::label::wears(after.face_labels[f]))
+        for (const auto v : after.triangles[f])
+          lowest = std::min(lowest, after.vertices[v].z);
+    CHECK(lowest > bottom + 0.5 * p.worn_through_thickness - 1e-12);
+    CHECK(wear::meshes::surface_quality(after).valid());
+    asked += r.removed_volume;
+    worn_through += r.worn_through_volume;
+  }
+  CHECK(v0 - mesh_volume(sample.triangulation()) == Approx(asked - worn_through).epsilon(1e-8));
+  CHECK(sample.removed_volume().sum() == Approx(asked - worn_through).epsilon(1e-10));
 }
