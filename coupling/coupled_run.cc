@@ -346,7 +346,9 @@ meshes::FaceField<double> CoupledRun::compute_wear(StageRecord& r) {
           " of its longest edge; Coupling/Maximum depth fraction allows " +
           format("%.3g", p_.coupling.max_depth_fraction) + ". Lower Coupling/Amplification (now " +
           format("%g", r.amplification) +
-          ") or Coupling/Revolutions per stage, or refine the mesh");
+          ") or Coupling/Revolutions per stage, or raise Coupling/Maximum depth fraction (up to "
+          "10: the wear stage then splits itself where the surface would fold); a finer mesh "
+          "raises the fraction");
   } else if (Scheme(r.scheme) == Scheme::dem_only && !sample_) {
     for (std::size_t f = 0; f < nf; ++f)
       dem_cumulative_[f] += removed[f];
