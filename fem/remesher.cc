@@ -146,34 +146,6 @@ std::map<int, int> patch_labels(const meshes::SurfaceMesh& worn, std::size_t* n_
   }
   return label_of;
 }
-// Smallest 6 sqrt(2) |V| / l_max^3 over the tetrahedra of the current gmsh model (1 for the
-// regular tetrahedron, 0 flat).
-double smallest_tet_quality() {
-  std::vector<std::size_t> node_tags, elements, nodes;
-  std::vector<double> coords, param;
-  gmsh::model::mesh::getNodes(node_tags, coords, param, -1, -1, false, false);
-  std::map<std::size_t, std::size_t> index;
-  for (std::size_t i = 0; i < node_tags.size(); ++i)
-    index[node_tags[i]] = i;
-  gmsh::model::mesh::getElementsByType(4, elements, nodes, -1);
-  double smallest = 1;
-  for (std::size_t t = 0; t < elements.size(); ++t) {
-    meshes::Vec3 x[4];
-    for (int k = 0; k < 4; ++k) {
-      const auto i = index.at(nodes[4 * t + k]);
-      x[k] = {coords[3 * i], coords[3 * i + 1], coords[3 * i + 2]};
-    }
-    double l_max = 0;
-    for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j)
-        l_max = std::max(l_max, meshes::norm(x[j] - x[i]));
-    const double six_v =
-        std::abs(meshes::dot(x[1] - x[0], meshes::cross(x[2] - x[0], x[3] - x[0])));
-    smallest = std::min(smallest, std::sqrt(2.0) * six_v / (l_max * l_max * l_max));
-  }
-  return smallest;
-}
-
 constexpr int keep_surface = 0; // attempt that keeps the input triangles, meshing the volume only
 
 // One attempt: the discrete model, its parametrisation and the volume mesh with the given
@@ -224,10 +196,10 @@ meshes::SurfaceMesh mesh_discrete_volume(const meshes::SurfaceMesh& worn, const 
   // let the next attempt (larger feature angle, other algorithm) take over.
   gmsh::option::setNumber("Mesh.AlgorithmSwitchOnFailure", 0);
   gmsh::model::mesh::generate(3);
-  auto remeshed = meshes::gmsh_labelled_surface(&r.n_tetrahedra, &r.volume_after);
+  auto remeshed =
+      meshes::gmsh_labelled_surface(&r.n_tetrahedra, &r.volume_after, &r.min_tet_quality);
   if (r.n_tetrahedra == 0)
     throw std::runtime_error("gmsh produced no tetrahedra");
-  r.min_tet_quality = smallest_tet_quality();
   if (!(r.min_tet_quality > 1e-8))
     throw std::runtime_error("gmsh left a flat tetrahedron (quality " +
                              std::to_string(r.min_tet_quality) + ")");

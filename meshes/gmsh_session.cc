@@ -4,6 +4,7 @@
 
 #include <gmsh.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -38,7 +39,7 @@ GmshSession::~GmshSession() {
   active = false;
 }
 
-SurfaceMesh gmsh_labelled_surface(std::size_t* n_tets, double* tet_volume) {
+SurfaceMesh gmsh_labelled_surface(std::size_t* n_tets, double* tet_volume, double* min_quality) {
   std::vector<std::size_t> node_tags;
   std::vector<double> coords, param;
   gmsh::model::mesh::getNodes(node_tags, coords, param, -1, -1, false, false);
@@ -65,21 +66,30 @@ SurfaceMesh gmsh_labelled_surface(std::size_t* n_tets, double* tet_volume) {
       }
     }
   }
-  if (n_tets || tet_volume) {
+  if (n_tets || tet_volume || min_quality) {
     std::vector<std::size_t> elem, nodes;
     gmsh::model::mesh::getElementsByType(4, elem, nodes, -1);
-    double v = 0;
+    double v = 0, smallest = 1;
     for (std::size_t t = 0; t < elem.size(); ++t) {
-      const Vec3& a = m.vertices[index.at(nodes[4 * t])];
-      const Vec3& b = m.vertices[index.at(nodes[4 * t + 1])];
-      const Vec3& c = m.vertices[index.at(nodes[4 * t + 2])];
-      const Vec3& d = m.vertices[index.at(nodes[4 * t + 3])];
-      v += std::abs(dot(b - a, cross(c - a, d - a))) / 6.0;
+      Vec3 x[4];
+      for (int k = 0; k < 4; ++k)
+        x[k] = m.vertices[index.at(nodes[4 * t + k])];
+      const double six_v = std::abs(dot(x[1] - x[0], cross(x[2] - x[0], x[3] - x[0])));
+      v += six_v / 6.0;
+      if (min_quality) {
+        double l_max = 0;
+        for (int i = 0; i < 4; ++i)
+          for (int j = i + 1; j < 4; ++j)
+            l_max = std::max(l_max, norm(x[j] - x[i]));
+        smallest = std::min(smallest, std::sqrt(2.0) * six_v / (l_max * l_max * l_max));
+      }
     }
     if (n_tets)
       *n_tets = elem.size();
     if (tet_volume)
       *tet_volume = v;
+    if (min_quality)
+      *min_quality = smallest;
   }
   // Keep only the vertices the surface uses, so the mesh is self-contained.
   SurfaceMesh compact;

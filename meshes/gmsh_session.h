@@ -17,9 +17,11 @@ public:
 
 /// Boundary triangles of the current gmsh model from its 2D physical groups (physical tag =
 /// label id), oriented outward, with only the vertices they use; optionally counts the
-/// tetrahedra and sums their volume [m^3].
+/// tetrahedra, sums their volume [m^3] and finds their smallest quality 6 sqrt(2) |V| / l_max^3
+/// (1 for the regular tetrahedron, 0 flat; 1 when there are none).
 SurfaceMesh gmsh_labelled_surface(std::size_t* n_tetrahedra = nullptr,
-                                  double* tetrahedral_volume = nullptr);
+                                  double* tetrahedral_volume = nullptr,
+                                  double* min_tetrahedron_quality = nullptr);
 
 /// Writes the current model as a gmsh 4.1 ASCII `.msh` through a temporary file and a
 /// rename, so a reader never sees a partial file. Throws naming the path.
