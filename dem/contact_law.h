@@ -37,14 +37,16 @@ struct ContactResult {
 };
 
 /// Updates the tangential history `delta_t` [m] and returns forces and torques.
+/// Branch-free (every case computed, the valid one selected) so that the pair kernel can run
+/// it in SIMD lanes, several contacts at once; the wall path calls it one contact at a time.
 /// Square roots: sqrt(R* delta), sqrt(S_n m*) (the tangential damping follows from the
 /// normal one: c_t / c_n = sqrt(S_t / S_n) = sqrt(4 G* / E*), a constant per pair type), one
-/// for the spin direction, one while sliding, and one for the history rotation only when the
-/// normal turned by more than about half a degree in one step.
+/// for the spin direction, one for the Coulomb scaling and one for the history rotation.
 __attribute__((always_inline)) inline ContactResult
 hertz_mindlin(const ContactParameters& p, const ContactGeometry& g, double dt, Vec3& delta_t) {
   using meshes::cross;
   using meshes::dot;
+  constexpr double tiny = 1e-300; // keeps the unselected branch of a select finite
   ContactResult r;
   const Vec3& n = g.normal;
   const double sqrt_rd = std::sqrt(g.r_eff * g.overlap);
@@ -58,41 +60,40 @@ hertz_mindlin(const ContactParameters& p, const ContactGeometry& g, double dt, V
   const double f_n = std::max(0.0, f_el - c_n * v_n);
 
   const Vec3 v_t = g.v_contact - n * v_n;
-  // History into the current tangent plane, keeping its length (rigid rotation).
+  // History into the current tangent plane, keeping its length (rigid rotation): scale
+  // sqrt(d_len2 / l2) = (1 - eps)^(-1/2), eps = dn^2 / d_len2. The normal turns little per
+  // step (eps ~ 1e-6), where the series 1 + eps/2 + 3 eps^2/8 is exact to eps^3 / 3 < 1e-12
+  // relative. A zero history stays zero whatever the scale.
   const double d_len2 = dot(delta_t, delta_t);
-  if (d_len2 > 0) {
-    const double dn = dot(delta_t, n);
-    const double l2 = d_len2 - dn * dn;
-    // Rescale factor sqrt(d_len2 / l2) = (1 - eps)^(-1/2), eps = dn^2 / d_len2. The normal
-    // turns little per step (eps ~ 1e-6), where the series 1 + eps/2 + 3 eps^2/8 is exact to
-    // eps^3 / 3 < 1e-12 relative and saves a square root and a division.
-    const double eps = dn * dn / d_len2;
-    const double scale =
-        eps < 1e-4 ? 1 + eps * (0.5 + 0.375 * eps) : (l2 > 0 ? std::sqrt(d_len2 / l2) : 0.0);
-    delta_t = (delta_t - n * dn) * scale;
-  }
-  delta_t += v_t * dt;
+  const double dn = dot(delta_t, n);
+  const double l2 = d_len2 - dn * dn;
+  const double eps = dn * dn / std::max(d_len2, tiny);
+  const double series = 1 + eps * (0.5 + 0.375 * eps);
+  const double exact = std::sqrt(d_len2 / std::max(l2, tiny));
+  const double scale = eps < 1e-4 ? series : (l2 > 0 ? exact : 0.0);
+  delta_t = (delta_t - n * dn) * scale + v_t * dt;
   Vec3 f_t = delta_t * (-s_t) - v_t * c_t;
+  // Coulomb limit: scaled onto the cone, the spring alone carrying the limit.
   const double f_t2 = dot(f_t, f_t), f_max = p.friction * f_n;
-  if (f_t2 > f_max * f_max) {
-    f_t = f_t2 > 0 ? f_t * (f_max / std::sqrt(f_t2)) : Vec3{};
-    delta_t = s_t > 0 ? f_t * (-1.0 / s_t) : Vec3{}; // spring alone carries the limit
-  }
+  const bool sliding = f_t2 > f_max * f_max;
+  const double to_cone = f_max / std::sqrt(std::max(f_t2, tiny));
+  f_t = f_t * (sliding ? to_cone : 1.0);
+  const double inv_st = -1.0 / std::max(s_t, tiny);
+  const Vec3 slid = f_t * (s_t > 0 ? inv_st : 0.0);
+  delta_t.x = sliding ? slid.x : delta_t.x;
+  delta_t.y = sliding ? slid.y : delta_t.y;
+  delta_t.z = sliding ? slid.z : delta_t.z;
   r.normal_force = f_n;
   r.tangential_force = f_t;
   r.v_tangential = v_t;
   r.force = n * f_n + f_t;
   const Vec3 nxf = cross(n, f_t);
-  r.torque_i = nxf * (-g.lever_i);
-  r.torque_j = nxf * (-g.lever_j);
-  if (p.rolling_friction > 0) {
-    const double w2 = dot(g.w_relative, g.w_relative);
-    if (w2 > 0) {
-      const Vec3 w_hat = g.w_relative * (p.rolling_friction * f_n / std::sqrt(w2));
-      r.torque_i -= w_hat * g.arm_i;
-      r.torque_j += w_hat * g.arm_j;
-    }
-  }
+  // Rolling friction: a torque of mu_r F_n against the relative spin, on both lever arms.
+  const double w2 = dot(g.w_relative, g.w_relative);
+  const double m_r = p.rolling_friction * f_n / std::sqrt(std::max(w2, tiny));
+  const Vec3 w_hat = g.w_relative * (w2 > 0 ? m_r : 0.0);
+  r.torque_i = nxf * (-g.lever_i) - w_hat * g.arm_i;
+  r.torque_j = nxf * (-g.lever_j) + w_hat * g.arm_j;
   return r;
 }
 

@@ -110,6 +110,7 @@ void System::set_n_threads(int n) {
     force_buffer_[t].assign(particles.n_real, {});
     torque_buffer_[t].assign(particles.n_real, {});
   }
+  pair_block_.resize(n_threads_);
   error_particle_.assign(n_threads_, -1);
   error_kind_.assign(n_threads_, no_error);
 }
@@ -263,7 +264,7 @@ double System::bytes_per_particle() const {
   double bytes = per_slot * p.position.size() + sizeof(Vec3) * reference_position_.size() +
                  sizeof(std::uint32_t) * wall_candidate_offset_.size() +
                  (n_threads_ - 1) * 2 * sizeof(Vec3) * p.n_real + sizeof(WallSlot) * slots_.size();
-  return bytes / n;
+  return (bytes + sizeof(PairBlock) * pair_block_.size()) / n;
 }
 
 void System::set_wall_vertices(int w, const std::vector<Vec3>& vertices) {

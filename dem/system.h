@@ -3,6 +3,7 @@
 #include "dem/material.h"
 #include "dem/mesh_wall.h"
 #include "dem/neighbor_list.h"
+#include "dem/pair_kernel.h"
 #include "dem/particles.h"
 
 #include <cstdint>
@@ -147,13 +148,8 @@ private:
   // Pairs: tangential history; forces go to per-thread arrays (thread 0: the particles'
   // own arrays), summed in thread order after the pair loop.
   std::vector<Vec3> pair_history_;
-  // Constants of each listed pair, fixed between rebuilds: read sequentially in the step loop
-  // instead of gathering the partner's radius, mass and material.
-  struct PairConstants {
-    double r_sum, r_eff, m_eff; ///< [m], [m], [kg]
-    std::int32_t type;          ///< index into the contact table
-  };
   std::vector<PairConstants> pair_const_;
+  std::vector<PairBlock> pair_block_; // one per thread
   std::vector<std::vector<Vec3>> force_buffer_, torque_buffer_;
   std::size_t n_pair_contacts_ = 0;
   std::vector<Vec3> reference_position_;

@@ -22,6 +22,7 @@
 // summed in thread order, so a run is bitwise reproducible for a given thread count.
 // Wear integrals are accumulated per thread and summed in thread order.
 #include "dem/contact_law.h"
+#include "dem/pair_kernel.h"
 #include "dem/system.h"
 
 #include <omp.h>
@@ -290,7 +291,20 @@ void System::pair_forces() {
   const std::uint32_t* pi = neighbors_.pair_i.data();
   const std::uint32_t* pj = neighbors_.pair_j.data();
   const Vec3 gravity = settings.gravity;
-  const double c = cos_t_, s = sin_t_;
+  const PairKernelData kernel{p.position.data(),
+                              p.velocity.data(),
+                              p.angular_velocity.data(),
+                              p.radius.data(),
+                              pi,
+                              pj,
+                              pair_const_.data(),
+                              contact_.data(),
+                              pair_history_.data(),
+                              ghost_owner_.data(),
+                              n,
+                              cos_t_,
+                              sin_t_,
+                              dt_};
   std::size_t n_contacts = 0;
 #pragma omp parallel num_threads(n_threads_) reduction(+ : n_contacts)
   {
@@ -305,46 +319,12 @@ void System::pair_forces() {
     else
       for (std::size_t i = 0; i < n; ++i)
         F[i] = T[i] = {};
-        // Interleaved chunks: the denser bottom of a bed is shared by all threads.
-#pragma omp for schedule(static, 512) nowait
-    for (std::size_t k = 0; k < np; ++k) {
-      const std::uint32_t i = pi[k], j = pj[k];
-      const PairConstants& pc = pair_const_[k];
-      const Vec3 d = p.position[i] - p.position[j];
-      const double dist2 = meshes::norm2(d), rs = pc.r_sum;
-      if (dist2 >= rs * rs) {
-        if (pair_history_[k].x != 0 || pair_history_[k].y != 0 || pair_history_[k].z != 0)
-          pair_history_[k] = {};
-        continue;
-      }
-      ++n_contacts;
-      const double dist = std::sqrt(dist2);
-      ContactGeometry g;
-      g.normal = d * (1.0 / dist);
-      g.overlap = rs - dist;
-      g.r_eff = pc.r_eff;
-      g.m_eff = pc.m_eff;
-      g.arm_i = p.radius[i] - 0.5 * g.overlap;
-      g.arm_j = p.radius[j] - 0.5 * g.overlap;
-      g.lever_i = p.radius[i];
-      g.lever_j = p.radius[j];
-      g.v_contact =
-          p.velocity[i] - p.velocity[j] -
-          meshes::cross(p.angular_velocity[i] * g.lever_i + p.angular_velocity[j] * g.lever_j,
-                        g.normal);
-      g.w_relative = p.angular_velocity[i] - p.angular_velocity[j];
-      const auto r = hertz_mindlin(contact_[pc.type], g, dt_, pair_history_[k]);
-      F[i] += r.force;
-      T[i] += r.torque_i;
-      if (j < n) {
-        F[j] -= r.force;
-        T[j] += r.torque_j;
-      } else { // a ghost: back to its owner, rotated by +angle
-        const std::uint32_t o = ghost_owner_[j - n];
-        F[o] -= rotate_z(r.force, c, s);
-        T[o] += rotate_z(r.torque_j, c, s);
-      }
-    }
+    PairBlock& bl = pair_block_[thread];
+    // Interleaved blocks: the denser bottom of a bed is shared by all threads.
+#pragma omp for schedule(static, 2) nowait
+    for (std::size_t k0 = 0; k0 < np; k0 += pair_block_size)
+      n_contacts += pair_block_forces(
+          kernel, k0, int(std::min<std::size_t>(pair_block_size, np - k0)), bl, F, T);
   }
   n_pair_contacts_ = n_contacts;
   if (n_threads_ > 1) {
@@ -373,21 +353,23 @@ void System::wall_forces() {
     // Only particles near a wall, split evenly: the bottom layer would otherwise all fall to
     // one thread.
     const std::size_t n_wall = wall_particles_.size();
+    // Scratch of one particle, declared once per thread: default-initialising it per particle
+    // cost more than the contacts themselves.
+    std::int32_t new_wall[wall_slots];
+    Vec3 new_normal[wall_slots], new_delta[wall_slots];
+    Candidate found[max_wall_candidates];
 #pragma omp for schedule(static, 64)
     for (std::size_t q = 0; q < n_wall; ++q) {
       const std::size_t i = wall_particles_[q];
       const auto b = wall_candidate_offset_[i], e = wall_candidate_offset_[i + 1];
       const Vec3 x = p.position[i];
       const double r = p.radius[i];
-      std::int32_t new_wall[wall_slots];
-      Vec3 new_normal[wall_slots], new_delta[wall_slots];
       bool taken[wall_slots] = {};
       int n_new = 0;
       Vec3 f_sum{}, t_sum{};
       // Gather the owned contacts, then merge those of one wall whose normals lie within
       // merge_angle: they are one contact with a finely tessellated concave surface (a worn
       // fillet), where every triangle's interior is a local minimum of the distance.
-      Candidate found[max_wall_candidates];
       int n_found = 0;
       bool overflow = false;
       for (auto k = b; k < e && !overflow; ++k) {

@@ -1,0 +1,124 @@
+// The particle-pair contact kernel (model.md section 2, law in contact_law.h).
+//
+// A block of listed pairs goes through three passes:
+//   1. distance of every listed pair; the touching ones (|x_i - x_j| < R_i + R_j) are
+//      compacted into the block without a branch, and a pair that no longer touches loses
+//      its tangential history;
+//   2. the Hertz-Mindlin law over the compacted contacts, several per SIMD instruction, with
+//      the particle data gathered lane by lane: the law is branch-free, so no lane waits on
+//      another's sliding or rolling state;
+//   3. scatter of forces, torques and histories in list order.
+// Half of the listed pairs do not touch in a dense bed (list skin), and which ones do is not
+// predictable: compacting first removes that branch from the arithmetic. The kernel is
+// compiled for generic x86-64, x86-64-v3 (AVX2, FMA) and x86-64-v4 (AVX-512); the loader picks
+// one for the CPU, so a result is bitwise reproducible on one CPU kind, and differs between
+// kinds in the last bits (fused multiply-adds).
+#include "dem/pair_kernel.h"
+
+#include "dem/contact_law.h"
+
+#include <cmath>
+
+namespace wear::dem {
+
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define WEAR_PAIR_KERNEL_CLONES                                                                    \
+  __attribute__((target_clones("default", "arch=x86-64-v3", "arch=x86-64-v4")))
+#else
+#define WEAR_PAIR_KERNEL_CLONES
+#endif
+
+WEAR_PAIR_KERNEL_CLONES
+int pair_block_forces(const PairKernelData& d, std::size_t k0, int n_listed, PairBlock& bl,
+                      Vec3* force, Vec3* torque) {
+  const std::uint32_t* pi = d.pair_i + k0;
+  const std::uint32_t* pj = d.pair_j + k0;
+  const PairConstants* pc = d.constants + k0;
+  Vec3* history = d.history + k0;
+
+  int m = 0;
+  for (int q = 0; q < n_listed; ++q) {
+    const Vec3 x = d.position[pi[q]] - d.position[pj[q]];
+    const double dist2 = meshes::norm2(x), rs = pc[q].r_sum;
+    const bool touch = dist2 < rs * rs;
+    bl.pair[m] = std::uint32_t(q);
+    bl.dx[m] = x.x;
+    bl.dy[m] = x.y;
+    bl.dz[m] = x.z;
+    bl.dist2[m] = dist2;
+    m += touch;
+    Vec3& h = history[q];
+    h.x = touch ? h.x : 0.0;
+    h.y = touch ? h.y : 0.0;
+    h.z = touch ? h.z : 0.0;
+  }
+
+  // Every assignment component by component: an aggregate copy of a Vec3 defeats the
+  // vectoriser.
+  const double dt = d.dt;
+#pragma omp simd
+  for (int c = 0; c < m; ++c) {
+    const std::uint32_t q = bl.pair[c], i = pi[q], j = pj[q];
+    const double ri = d.radius[i], rj = d.radius[j];
+    const double dist = std::sqrt(bl.dist2[c]);
+    const double inv = 1.0 / dist;
+    ContactGeometry g;
+    g.normal.x = bl.dx[c] * inv;
+    g.normal.y = bl.dy[c] * inv;
+    g.normal.z = bl.dz[c] * inv;
+    g.overlap = pc[q].r_sum - dist;
+    g.r_eff = pc[q].r_eff;
+    g.m_eff = pc[q].m_eff;
+    g.arm_i = ri - 0.5 * g.overlap;
+    g.arm_j = rj - 0.5 * g.overlap;
+    g.lever_i = ri;
+    g.lever_j = rj;
+    const Vec3 wi = d.angular_velocity[i], wj = d.angular_velocity[j];
+    const Vec3 spin = meshes::cross(
+        Vec3{wi.x * ri + wj.x * rj, wi.y * ri + wj.y * rj, wi.z * ri + wj.z * rj}, g.normal);
+    g.v_contact.x = d.velocity[i].x - d.velocity[j].x - spin.x;
+    g.v_contact.y = d.velocity[i].y - d.velocity[j].y - spin.y;
+    g.v_contact.z = d.velocity[i].z - d.velocity[j].z - spin.z;
+    g.w_relative.x = wi.x - wj.x;
+    g.w_relative.y = wi.y - wj.y;
+    g.w_relative.z = wi.z - wj.z;
+    ContactParameters cp;
+    const ContactParameters& t = d.contact[pc[q].type];
+    cp.e_star = t.e_star;
+    cp.g_star = t.g_star;
+    cp.beta = t.beta;
+    cp.friction = t.friction;
+    cp.rolling_friction = t.rolling_friction;
+    cp.tangential_damping_ratio = t.tangential_damping_ratio;
+    Vec3 h;
+    h.x = history[q].x;
+    h.y = history[q].y;
+    h.z = history[q].z;
+    const ContactResult r = hertz_mindlin(cp, g, dt, h);
+    bl.hx[c] = h.x, bl.hy[c] = h.y, bl.hz[c] = h.z;
+    bl.fx[c] = r.force.x, bl.fy[c] = r.force.y, bl.fz[c] = r.force.z;
+    bl.tix[c] = r.torque_i.x, bl.tiy[c] = r.torque_i.y, bl.tiz[c] = r.torque_i.z;
+    bl.tjx[c] = r.torque_j.x, bl.tjy[c] = r.torque_j.y, bl.tjz[c] = r.torque_j.z;
+  }
+
+  const double co = d.cos_angle, si = d.sin_angle;
+  for (int c = 0; c < m; ++c) {
+    const std::uint32_t q = bl.pair[c], i = pi[q], j = pj[q];
+    history[q] = {bl.hx[c], bl.hy[c], bl.hz[c]};
+    const Vec3 f{bl.fx[c], bl.fy[c], bl.fz[c]};
+    const Vec3 tj{bl.tjx[c], bl.tjy[c], bl.tjz[c]};
+    force[i] += f;
+    torque[i] += Vec3{bl.tix[c], bl.tiy[c], bl.tiz[c]};
+    if (j < d.n_real) {
+      force[j] -= f;
+      torque[j] += tj;
+    } else { // a ghost: back to its owner, rotated by +angle
+      const std::uint32_t o = d.ghost_owner[j - d.n_real];
+      force[o] -= Vec3{co * f.x - si * f.y, si * f.x + co * f.y, f.z};
+      torque[o] += Vec3{co * tj.x - si * tj.y, si * tj.x + co * tj.y, tj.z};
+    }
+  }
+  return m;
+}
+
+} // namespace wear::dem
