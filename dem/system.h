@@ -150,6 +150,13 @@ private:
   std::vector<Vec3> pair_history_;
   std::vector<PairConstants> pair_const_;
   std::vector<PairBlock> pair_block_; // one per thread
+  // Pairs in contact per block of the list, from the last force evaluation (or counted at the
+  // rebuild): the blocks are split into contiguous ranges of equal estimated cost per thread.
+  // The split is a function of the state, so a run stays bitwise reproducible.
+  std::vector<std::uint32_t> block_contacts_;
+  std::vector<std::size_t> block_split_; // n_threads + 1 block indices
+  void split_pair_blocks();
+  void count_block_contacts();
   std::vector<std::vector<Vec3>> force_buffer_, torque_buffer_;
   std::size_t n_pair_contacts_ = 0;
   std::vector<Vec3> reference_position_;
@@ -158,6 +165,8 @@ private:
   static constexpr int wall_slots = 6;
   std::vector<std::uint32_t> wall_candidate_offset_, wall_candidate_;
   std::vector<std::uint32_t> wall_particles_; // particles with at least one candidate
+  std::vector<std::size_t> wall_split_;       // per thread, ranges of equal candidate counts
+  void split_wall_particles();
   // History slots of the wall contacts of near-wall particle q (in wall_particles_ order):
   // entries [wall_slots q, wall_slots q + wall_slots), valid entries first (wall >= 0).
   struct WallSlot {

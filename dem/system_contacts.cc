@@ -234,6 +234,8 @@ void System::rebuild() {
   wall_candidate_.clear();
   for (const auto& f : found)
     wall_candidate_.insert(wall_candidate_.end(), f.begin(), f.end());
+  split_wall_particles();
+  count_block_contacts();
   reference_position_.assign(p.position.begin(), p.position.begin() + n);
   ++n_rebuilds_;
 }
@@ -285,6 +287,61 @@ void System::refresh_ghosts() {
   }
 }
 
+void System::count_block_contacts() {
+  const auto& p = particles;
+  const std::size_t np = neighbors_.n_pairs();
+  const std::size_t n_blocks = (np + pair_block_size - 1) / pair_block_size;
+  block_contacts_.assign(n_blocks, 0);
+#pragma omp parallel for schedule(static) num_threads(n_threads_)
+  for (std::size_t b = 0; b < n_blocks; ++b) {
+    std::uint32_t m = 0;
+    for (std::size_t k = b * pair_block_size; k < std::min(np, (b + 1) * pair_block_size); ++k) {
+      const double rs = pair_const_[k].r_sum;
+      m += meshes::norm2(p.position[neighbors_.pair_i[k]] - p.position[neighbors_.pair_j[k]]) <
+           rs * rs;
+    }
+    block_contacts_[b] = m;
+  }
+}
+
+void System::split_wall_particles() {
+  // A near-wall particle costs its closest-feature tests, one per candidate face, plus a
+  // little of its own.
+  wall_split_.assign(n_threads_ + 1, wall_particles_.size());
+  wall_split_[0] = 0;
+  const double total = double(wall_candidate_.size() + 2 * wall_particles_.size());
+  double sum = 0;
+  int t = 1;
+  for (std::size_t q = 0; q < wall_particles_.size() && t < n_threads_; ++q) {
+    const std::size_t i = wall_particles_[q];
+    sum += double(wall_candidate_offset_[i + 1] - wall_candidate_offset_[i] + 2);
+    while (t < n_threads_ && sum >= total * t / n_threads_)
+      wall_split_[t++] = q + 1;
+  }
+}
+
+void System::split_pair_blocks() {
+  // A listed pair costs its distance test; a contact costs about four times that (the law,
+  // its gathers and the scatter), as measured on a settled bed.
+  const std::size_t np = neighbors_.n_pairs(), n_blocks = block_contacts_.size();
+  const auto cost = [&](std::size_t b) {
+    return double(std::min<std::size_t>(pair_block_size, np - b * pair_block_size)) +
+           4.0 * block_contacts_[b];
+  };
+  double total = 0;
+  for (std::size_t b = 0; b < n_blocks; ++b)
+    total += cost(b);
+  block_split_.assign(n_threads_ + 1, n_blocks);
+  block_split_[0] = 0;
+  double sum = 0;
+  int t = 1;
+  for (std::size_t b = 0; b < n_blocks && t < n_threads_; ++b) {
+    sum += cost(b);
+    while (t < n_threads_ && sum >= total * t / n_threads_)
+      block_split_[t++] = b + 1;
+  }
+}
+
 void System::pair_forces() {
   auto& p = particles;
   const std::size_t n = p.n_real, np = neighbors_.n_pairs();
@@ -306,6 +363,7 @@ void System::pair_forces() {
                               sin_t_,
                               dt_};
   std::size_t n_contacts = 0;
+  split_pair_blocks();
 #pragma omp parallel num_threads(n_threads_) reduction(+ : n_contacts)
   {
     const int thread = omp_get_thread_num();
@@ -320,11 +378,13 @@ void System::pair_forces() {
       for (std::size_t i = 0; i < n; ++i)
         F[i] = T[i] = {};
     PairBlock& bl = pair_block_[thread];
-    // Interleaved blocks: the denser bottom of a bed is shared by all threads.
-#pragma omp for schedule(static, 2) nowait
-    for (std::size_t k0 = 0; k0 < np; k0 += pair_block_size)
-      n_contacts += pair_block_forces(
+    for (std::size_t b = block_split_[thread]; b < block_split_[thread + 1]; ++b) {
+      const std::size_t k0 = b * pair_block_size;
+      const int m = pair_block_forces(
           kernel, k0, int(std::min<std::size_t>(pair_block_size, np - k0)), bl, F, T);
+      block_contacts_[b] = std::uint32_t(m);
+      n_contacts += m;
+    }
   }
   n_pair_contacts_ = n_contacts;
   if (n_threads_ > 1) {
@@ -344,22 +404,21 @@ void System::pair_forces() {
 void System::wall_forces() {
   if (walls_.empty())
     return;
+  if (wall_split_.size() != std::size_t(n_threads_) + 1)
+    split_wall_particles(); // the thread count changed since the last rebuild
   auto& p = particles;
   const double dt = dt_;
 #pragma omp parallel num_threads(n_threads_)
   {
     const int thread = omp_get_thread_num();
     auto& acc = wear_acc_[thread];
-    // Only particles near a wall, split evenly: the bottom layer would otherwise all fall to
-    // one thread.
-    const std::size_t n_wall = wall_particles_.size();
+    // Only particles near a wall, in contiguous ranges of equal cost (split_wall_particles).
     // Scratch of one particle, declared once per thread: default-initialising it per particle
     // cost more than the contacts themselves.
     std::int32_t new_wall[wall_slots];
     Vec3 new_normal[wall_slots], new_delta[wall_slots];
     Candidate found[max_wall_candidates];
-#pragma omp for schedule(static, 64)
-    for (std::size_t q = 0; q < n_wall; ++q) {
+    for (std::size_t q = wall_split_[thread]; q < wall_split_[thread + 1]; ++q) {
       const std::size_t i = wall_particles_[q];
       const auto b = wall_candidate_offset_[i], e = wall_candidate_offset_[i + 1];
       const Vec3 x = p.position[i];
