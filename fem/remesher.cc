@@ -294,6 +294,10 @@ meshes::SurfaceMesh remesh_sample(const meshes::SurfaceMesh& worn, const RemeshP
                              "algorithm:" +
                              errors + "; the input surface is in '" + dump + "'");
   }
+  // An attempt refused on the way leaves its input beside the mesh, so the case that made
+  // it fail can be replayed in a test.
+  if (!errors.empty())
+    write_surface_msh(input, msh_path + ".refused-input.msh");
   remeshed.set_revision(worn.revision() + 1);
   r.n_faces_after = remeshed.n_faces();
   r.surface_distance = meshes::one_sided_distance(remeshed, worn);

@@ -38,7 +38,8 @@ struct RemeshReport {
   std::map<int, double> area_after;  ///< [m^2] per label
   int surface_algorithm = 0;         ///< gmsh Mesh.Algorithm that succeeded (6 or 5)
   double feature_angle_deg = 0;      ///< [deg] the angle that succeeded
-  std::string failed_attempts;       ///< gmsh's errors of the attempts before, if any
+  std::string failed_attempts;       ///< errors of the attempts before, if any (the input
+                                     ///< is then kept in `<msh_path>.refused-input.msh`)
   std::size_t n_flat_flips = 0;      ///< Delaunay flips in flat regions of the input
   double min_tet_quality = 0;        ///< [-] smallest 6 sqrt(2) |V| / l_max^3 (1 regular)
   double seconds = 0;
