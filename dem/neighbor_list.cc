@@ -52,26 +52,45 @@ void NeighborList::build(const Particles& p, double skin) {
   offset_.assign(cell_start_.begin(), cell_start_.end() - 1); // fill cursor
   for (std::size_t i = 0; i < n_all; ++i)
     cell_items_[offset_[cell_of_[i]]++] = static_cast<std::uint32_t>(i);
+  // Copies of the binned particles in cell order: the three cells of a stencil row are one
+  // contiguous run, scanned without indirection.
+  binned_.resize(n_all);
+#pragma omp parallel for schedule(static)
+  for (std::size_t s = 0; s < n_all; ++s) {
+    const std::uint32_t o = cell_items_[s];
+    binned_[s] = {p.position[o].x, p.position[o].y, p.position[o].z, p.radius[o]};
+  }
   const auto visit = [&](std::size_t i, std::vector<std::uint32_t>& out) {
     const Vec3& xi = p.position[i];
     const double ri = p.radius[i] + skin;
     const int ci = coord(xi, 0, nx), cj = coord(xi, 1, ny), ck = coord(xi, 2, nz);
+    const int l0 = std::max(0, ci - 1), l1 = std::min(nx - 1, ci + 1);
     const std::size_t first = out.size();
+    std::size_t n_candidates = 0;
     for (int k = std::max(0, ck - 1); k <= std::min(nz - 1, ck + 1); ++k)
-      for (int j = std::max(0, cj - 1); j <= std::min(ny - 1, cj + 1); ++j)
-        for (int l = std::max(0, ci - 1); l <= std::min(nx - 1, ci + 1); ++l) {
-          const std::size_t c = (std::size_t(k) * ny + j) * nx + l;
-          for (auto s = cell_start_[c]; s < cell_start_[c + 1]; ++s) {
-            const std::uint32_t o = cell_items_[s];
-            if (o <= i && o < n_real)
-              continue;
-            const double cut = ri + p.radius[o];
-            if (meshes::norm2(p.position[o] - xi) < cut * cut)
-              out.push_back(o);
-          }
+      for (int j = std::max(0, cj - 1); j <= std::min(ny - 1, cj + 1); ++j) {
+        const std::size_t row = (std::size_t(k) * ny + j) * nx;
+        n_candidates += cell_start_[row + l1 + 1] - cell_start_[row + l0];
+      }
+    out.resize(first + n_candidates);
+    std::uint32_t* dst = out.data() + first;
+    std::size_t m = 0;
+    for (int k = std::max(0, ck - 1); k <= std::min(nz - 1, ck + 1); ++k)
+      for (int j = std::max(0, cj - 1); j <= std::min(ny - 1, cj + 1); ++j) {
+        const std::size_t row = (std::size_t(k) * ny + j) * nx;
+        // Branch-free: most candidates are rejected, unpredictably.
+        for (auto s = cell_start_[row + l0]; s < cell_start_[row + l1 + 1]; ++s) {
+          const std::uint32_t o = cell_items_[s];
+          const Binned& b = binned_[s];
+          const double dx = b.x - xi.x, dy = b.y - xi.y, dz = b.z - xi.z;
+          const double cut = ri + b.r;
+          dst[m] = o;
+          m += (dx * dx + dy * dy + dz * dz < cut * cut) & (o > i || o >= n_real);
         }
-    std::sort(out.begin() + first, out.end());
-    return out.size() - first;
+      }
+    std::sort(dst, dst + m);
+    out.resize(first + m);
+    return m;
   };
   // One pass: each thread takes a contiguous range of particles and appends to its own
   // buffers; concatenating them in thread order gives the serial order.

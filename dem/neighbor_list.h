@@ -19,6 +19,10 @@ public:
 
 private:
   std::vector<std::uint32_t> cell_of_, cell_start_, cell_items_, offset_;
+  struct Binned {
+    double x, y, z, r; ///< [m] position and radius of cell_items_[s]
+  };
+  std::vector<Binned> binned_;
   std::vector<std::vector<std::uint32_t>> chunk_i_, chunk_j_; // per thread, reused
 };
 

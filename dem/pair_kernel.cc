@@ -33,13 +33,12 @@ int pair_block_forces(const PairKernelData& d, std::size_t k0, int n_listed, Pai
                       Vec3* force, Vec3* torque) {
   const std::uint32_t* pi = d.pair_i + k0;
   const std::uint32_t* pj = d.pair_j + k0;
-  const PairConstants* pc = d.constants + k0;
   Vec3* history = d.history + k0;
 
   int m = 0;
   for (int q = 0; q < n_listed; ++q) {
     const Vec3 x = d.position[pi[q]] - d.position[pj[q]];
-    const double dist2 = meshes::norm2(x), rs = pc[q].r_sum;
+    const double dist2 = meshes::norm2(x), rs = d.radius[pi[q]] + d.radius[pj[q]];
     const bool touch = dist2 < rs * rs;
     bl.pair[m] = std::uint32_t(q);
     bl.dx[m] = x.x;
@@ -59,16 +58,17 @@ int pair_block_forces(const PairKernelData& d, std::size_t k0, int n_listed, Pai
 #pragma omp simd
   for (int c = 0; c < m; ++c) {
     const std::uint32_t q = bl.pair[c], i = pi[q], j = pj[q];
-    const double ri = d.radius[i], rj = d.radius[j];
+    const double ri = d.radius[i], rj = d.radius[j], rs = ri + rj;
+    const double mi = d.mass[i], mj = d.mass[j];
     const double dist = std::sqrt(bl.dist2[c]);
     const double inv = 1.0 / dist;
     ContactGeometry g;
     g.normal.x = bl.dx[c] * inv;
     g.normal.y = bl.dy[c] * inv;
     g.normal.z = bl.dz[c] * inv;
-    g.overlap = pc[q].r_sum - dist;
-    g.r_eff = pc[q].r_eff;
-    g.m_eff = pc[q].m_eff;
+    g.overlap = rs - dist;
+    g.r_eff = ri * rj / rs;
+    g.m_eff = mi * mj / (mi + mj);
     g.arm_i = ri - 0.5 * g.overlap;
     g.arm_j = rj - 0.5 * g.overlap;
     g.lever_i = ri;
@@ -83,7 +83,7 @@ int pair_block_forces(const PairKernelData& d, std::size_t k0, int n_listed, Pai
     g.w_relative.y = wi.y - wj.y;
     g.w_relative.z = wi.z - wj.z;
     ContactParameters cp;
-    const ContactParameters& t = d.contact[pc[q].type];
+    const ContactParameters& t = d.contact[d.material[i] * d.n_materials + d.material[j]];
     cp.e_star = t.e_star;
     cp.g_star = t.g_star;
     cp.beta = t.beta;

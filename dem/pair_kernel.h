@@ -10,13 +10,6 @@ namespace wear::dem {
 
 using meshes::Vec3;
 
-/// Constants of a listed pair, fixed between list rebuilds: read sequentially in the step
-/// loop instead of gathering the partner's radius, mass and material.
-struct PairConstants {
-  double r_sum, r_eff, m_eff; ///< [m], [m], [kg]
-  std::int32_t type;          ///< index into the contact table
-};
-
 constexpr int pair_block_size = 256;
 
 /// Scratch of the kernel (one per thread): the touching pairs of a block, field by field, so
@@ -37,9 +30,11 @@ struct PairKernelData {
   const Vec3* velocity;         ///< [m/s]
   const Vec3* angular_velocity; ///< [rad/s]
   const double* radius;         ///< [m]
+  const double* mass;           ///< [kg]
+  const int* material;          ///< material id
   const std::uint32_t *pair_i, *pair_j;
-  const PairConstants* constants;
-  const ContactParameters* contact; ///< table indexed by PairConstants::type
+  const ContactParameters* contact; ///< table indexed by material_i x n_materials + material_j
+  int n_materials;
   Vec3* history;                    ///< [m] per listed pair, updated
   const std::uint32_t* ghost_owner; ///< real particle behind ghost slot j - n_real
   std::size_t n_real;

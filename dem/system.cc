@@ -3,9 +3,11 @@
 //
 //   v(t+dt/2) = v(t) + dt/2 F(t)/m,  x(t+dt) = x(t) + dt v(t+dt/2),
 //   F(t+dt) from x(t+dt) and v(t+dt/2),  v(t+dt) = v(t+dt/2) + dt/2 F(t+dt)/m,
-// and likewise for the spin with I = 2/5 m r^2 (spheres). Second order for conservative
-// forces; the velocity-dependent damping and friction use the half-step velocity (as in
-// LIGGGHTS). Time step: Rayleigh time T_R = pi R sqrt(rho/G) / (0.1631 nu + 0.8766) of the
+// and likewise for the spin with I = 2/5 m r^2 (spheres). Within run(), the closing
+// half-kick of one step and the opening half-kick and drift of the next are one pass over the
+// particles (the same operations in the same order as separate steps). Second order for
+// conservative forces; the velocity-dependent damping and friction use the half-step velocity (as
+// in LIGGGHTS). Time step: Rayleigh time T_R = pi R sqrt(rho/G) / (0.1631 nu + 0.8766) of the
 // smallest particle; above 40 % of T_R the run is refused unless forced.
 // Every particle is checked each step (finite, below the speed limit) and at each list
 // rebuild (inside the domain); failures name the particle and suggest a cause.
@@ -77,6 +79,9 @@ void System::setup() {
     const double a = settings.periodic.angle;
     if (!(a > 0 && a < 2 * pi))
       throw std::invalid_argument("DEM/Periodic sector angle must lie in (0, 360) degrees");
+    // The sector is periodic by rotation about z, which only a vertical gravity respects.
+    if (settings.gravity.x != 0 || settings.gravity.y != 0)
+      throw std::invalid_argument("DEM/Gravity: a periodic sector needs gravity along z");
     cos_t_ = std::cos(a);
     sin_t_ = std::sin(a);
   }
@@ -89,7 +94,9 @@ void System::setup() {
   set_up_ = true;
   check_particles_or_throw("at setup");
   rebuild();
+  reset_forces();
   compute_forces();
+  collect_forces();
 }
 
 void System::set_n_threads(int n) {
@@ -113,6 +120,8 @@ void System::set_n_threads(int n) {
   pair_block_.resize(n_threads_);
   error_particle_.assign(n_threads_, -1);
   error_kind_.assign(n_threads_, no_error);
+  if (!particle_cost_.empty())
+    split_ownership();
 }
 
 void System::check_particles_or_throw(const char* stage) {
@@ -173,55 +182,122 @@ void System::check_particles_or_throw(const char* stage) {
 void System::step() {
   if (!set_up_)
     throw std::logic_error("System::step() before setup()");
+  advance(false);
+  close_step();
+}
+
+void System::run(std::uint64_t n) {
+  if (!set_up_)
+    throw std::logic_error("System::run() before setup()");
+  // The closing half-kick of each step is fused into the next step's opening one: the same
+  // operations in the same order, one pass over the particle arrays instead of two.
+  for (std::uint64_t s = 0; s < n; ++s)
+    advance(s > 0);
+  if (n > 0)
+    close_step();
+}
+
+void System::advance(bool close_previous) {
   auto& p = particles;
   const double h = 0.5 * dt_, vmax2 = settings.max_speed * settings.max_speed;
   const double trigger = 0.25 * skin_ * skin_; // half the skin, squared
+  const Vec3 gravity = settings.gravity;
   int need_rebuild = 0;
-#pragma omp parallel for schedule(static) reduction(max : need_rebuild) num_threads(n_threads_)
-  for (std::size_t i = 0; i < p.n_real; ++i) {
-    const double im = 1.0 / p.mass[i], ii = 1.0 / p.inertia[i];
-    p.velocity[i] += p.force[i] * (h * im);
-    p.angular_velocity[i] += p.torque[i] * (h * ii);
-    p.position[i] += p.velocity[i] * dt_;
-    const double v2 = meshes::norm2(p.velocity[i]);
-    if (!(v2 <= vmax2)) { // also catches NaN
-      const int t = omp_get_thread_num();
-      if (error_particle_[t] < 0 || long(i) < error_particle_[t]) {
-        error_particle_[t] = long(i);
-        error_kind_[t] = std::isfinite(v2) ? too_fast : not_finite;
+#pragma omp parallel num_threads(n_threads_) reduction(max : need_rebuild)
+  {
+    const int thread = omp_get_thread_num();
+    const std::size_t i0 = p.n_real * thread / n_threads_;
+    const std::size_t i1 = p.n_real * (thread + 1) / n_threads_;
+    for (std::size_t i = i0; i < i1; ++i) {
+      Vec3 f, t;
+      sum_forces(i, f, t);
+      if (close_previous) {
+        p.velocity[i] += f * (h / p.mass[i]);
+        p.angular_velocity[i] += t * (h / p.inertia[i]);
       }
+      const double im = 1.0 / p.mass[i], ii = 1.0 / p.inertia[i];
+      p.velocity[i] += f * (h * im);
+      p.angular_velocity[i] += t * (h * ii);
+      p.position[i] += p.velocity[i] * dt_;
+      // The force is used; it restarts from gravity for this step's evaluation.
+      p.force[i] = gravity * p.mass[i];
+      p.torque[i] = {};
+      const double v2 = meshes::norm2(p.velocity[i]);
+      if (!(v2 <= vmax2)) { // also catches NaN
+        if (error_particle_[thread] < 0 || long(i) < error_particle_[thread]) {
+          error_particle_[thread] = long(i);
+          error_kind_[thread] = std::isfinite(v2) ? too_fast : not_finite;
+        }
+      }
+      if (meshes::norm2(p.position[i] - reference_position_[i]) > trigger)
+        need_rebuild = 1;
     }
-    if (meshes::norm2(p.position[i] - reference_position_[i]) > trigger)
-      need_rebuild = 1;
+  }
+  if (close_previous) {
+    time_ += dt_;
+    ++n_steps_;
   }
   for (int t = 0; t < n_threads_; ++t)
     if (error_kind_[t] != no_error)
       check_particles_or_throw("in the drift");
   if (need_rebuild)
-    rebuild();
+    rebuild(true);
   else
     refresh_ghosts();
   compute_forces();
-#pragma omp parallel for schedule(static) num_threads(n_threads_)
-  for (std::size_t i = 0; i < p.n_real; ++i) {
-    p.velocity[i] += p.force[i] * (h / p.mass[i]);
-    p.angular_velocity[i] += p.torque[i] * (h / p.inertia[i]);
-  }
   for (int t = 0; t < n_threads_; ++t)
     if (error_kind_[t] != no_error)
       check_particles_or_throw("in the force computation");
+}
+
+void System::close_step() {
+  auto& p = particles;
+  const double h = 0.5 * dt_;
+#pragma omp parallel num_threads(n_threads_)
+  {
+    const int thread = omp_get_thread_num();
+    const std::size_t i0 = p.n_real * thread / n_threads_;
+    const std::size_t i1 = p.n_real * (thread + 1) / n_threads_;
+    for (std::size_t i = i0; i < i1; ++i) {
+      Vec3 f, t;
+      sum_forces(i, f, t);
+      p.force[i] = f;
+      p.torque[i] = t;
+      p.velocity[i] += f * (h / p.mass[i]);
+      p.angular_velocity[i] += t * (h / p.inertia[i]);
+    }
+  }
   time_ += dt_;
   ++n_steps_;
 }
 
-void System::run(std::uint64_t n) {
-  for (std::uint64_t s = 0; s < n; ++s)
-    step();
+void System::compute_forces() {
+  auto& p = particles;
+  std::size_t n_contacts = 0;
+  // One region, no barrier inside: every thread adds to its own arrays only.
+#pragma omp parallel num_threads(n_threads_) reduction(+ : n_contacts)
+  {
+    const int thread = omp_get_thread_num();
+    Vec3* F = thread == 0 ? p.force.data() : force_buffer_[thread].data();
+    Vec3* T = thread == 0 ? p.torque.data() : torque_buffer_[thread].data();
+    n_contacts += pair_forces(thread, F, T);
+    wall_forces(thread, F, T);
+  }
+  n_pair_contacts_ = n_contacts;
 }
 
-void System::compute_forces() {
-  pair_forces();
-  wall_forces();
+void System::collect_forces() {
+  auto& p = particles;
+  for (std::size_t i = 0; i < p.n_real; ++i)
+    sum_forces(i, p.force[i], p.torque[i]);
+}
+
+void System::reset_forces() {
+  auto& p = particles;
+  for (std::size_t i = 0; i < p.n_real; ++i) {
+    p.force[i] = settings.gravity * p.mass[i];
+    p.torque[i] = {};
+  }
 }
 
 Energy System::energy() const {

@@ -124,12 +124,33 @@ public:
   void reset_wear_integrals();
 
 private:
-  void rebuild();
+  /// `in_step`: called between the drift and the force evaluation, when the particles'
+  /// forces hold gravity only (a wrapped particle's is then not rotated).
+  void rebuild(bool in_step = false);
+  /// Closing half-kick of the previous step if `close_previous`; opening half-kick, drift,
+  /// list rebuild if needed, forces.
+  void advance(bool close_previous);
+  void close_step();     ///< closing half-kick, clock
+  void reset_forces();   ///< gravity only, no torque: where the pair loop starts from
+  void collect_forces(); ///< sums the threads' forces into the particles' arrays
+  /// The force and torque on particle i: its own arrays plus the other threads' buffers, in
+  /// thread order; the buffers are zeroed for the next evaluation.
+  void sum_forces(std::size_t i, Vec3& f, Vec3& t) {
+    f = particles.force[i];
+    t = particles.torque[i];
+    for (int th = 1; th < n_threads_; ++th) {
+      f += force_buffer_[th][i];
+      t += torque_buffer_[th][i];
+      force_buffer_[th][i] = torque_buffer_[th][i] = {};
+    }
+  }
   void refresh_ghosts();
   void sort_spatially();
   void compute_forces();
-  void pair_forces();
-  void wall_forces();
+  /// The pairs and near-wall particles owned by `thread`; forces and torques are added to F
+  /// and T (indexed by particle). pair_forces returns the pairs in contact.
+  std::size_t pair_forces(int thread, Vec3* F, Vec3* T);
+  void wall_forces(int thread, Vec3* F, Vec3* T);
   void check_particles_or_throw(const char* stage);
 
   std::vector<MeshWall> walls_;
@@ -148,15 +169,18 @@ private:
   // Pairs: tangential history; forces go to per-thread arrays (thread 0: the particles'
   // own arrays), summed in thread order after the pair loop.
   std::vector<Vec3> pair_history_;
-  std::vector<PairConstants> pair_const_;
   std::vector<PairBlock> pair_block_; // one per thread
-  // Pairs in contact per block of the list, from the last force evaluation (or counted at the
-  // rebuild): the blocks are split into contiguous ranges of equal estimated cost per thread.
-  // The split is a function of the state, so a run stays bitwise reproducible.
-  std::vector<std::uint32_t> block_contacts_;
-  std::vector<std::size_t> block_split_; // n_threads + 1 block indices
-  void split_pair_blocks();
-  void count_block_contacts();
+  // Force evaluation: thread t owns particles [owner_split_[t], owner_split_[t + 1]), the
+  // pairs [pair_split_[t], ...) listed under them and the near-wall particles
+  // [wall_split_[t], ...) among them; ranges of equal estimated cost (particle_cost_, set at
+  // each rebuild). The drift and kick split the particles in equal counts.
+  std::vector<double> particle_cost_;
+  std::vector<std::uint8_t> pair_touch_; // rebuild scratch
+  std::vector<std::size_t> owner_split_, pair_split_, wall_split_;
+  void count_particle_costs();
+  void split_ownership();
+  // Forces of thread 0 go to the particles' own arrays, those of thread t > 0 to its buffers;
+  // the kick sums them in thread order and zeroes the buffers.
   std::vector<std::vector<Vec3>> force_buffer_, torque_buffer_;
   std::size_t n_pair_contacts_ = 0;
   std::vector<Vec3> reference_position_;
@@ -165,8 +189,7 @@ private:
   static constexpr int wall_slots = 6;
   std::vector<std::uint32_t> wall_candidate_offset_, wall_candidate_;
   std::vector<std::uint32_t> wall_particles_; // particles with at least one candidate
-  std::vector<std::size_t> wall_split_;       // per thread, ranges of equal candidate counts
-  void split_wall_particles();
+  std::vector<std::vector<std::uint32_t>> wall_chunk_found_; // rebuild scratch, per chunk
   // History slots of the wall contacts of near-wall particle q (in wall_particles_ order):
   // entries [wall_slots q, wall_slots q + wall_slots), valid entries first (wall >= 0).
   struct WallSlot {

@@ -49,7 +49,7 @@ constexpr int max_wall_candidates = 32;
 const double cos_merge_angle = std::cos(25.0 * 3.14159265358979323846 / 180.0);
 } // namespace
 
-void System::rebuild() {
+void System::rebuild(bool in_step) {
   auto& p = particles;
   const std::size_t n = p.n_real;
   const bool periodic = settings.periodic.enabled;
@@ -63,18 +63,34 @@ void System::rebuild() {
     Vec3 h;
   };
   std::vector<Entry> old;
-  old.reserve(neighbors_.n_pairs() / 2 + 1);
-  for (std::size_t k = 0; k < neighbors_.n_pairs(); ++k) {
-    if (meshes::norm2(pair_history_[k]) == 0)
-      continue;
-    const std::uint32_t i = neighbors_.pair_i[k], j = neighbors_.pair_j[k];
-    const bool ghost = j >= n;
-    const std::uint32_t b = ghost ? ghost_owner_[j - n] : j;
-    const auto id_i = std::uint64_t(p.id[i]), id_b = std::uint64_t(p.id[b]);
-    Vec3 h = pair_history_[k];
-    if (ghost && id_b < id_i)
-      h = rotate_z(h, c, s);
-    old.push_back({(std::min(id_i, id_b) << 32) | std::max(id_i, id_b), id_b < id_i ? b : i, h});
+  {
+    // Each thread collects a contiguous range; the order of `old` does not matter (lookups
+    // match the whole key).
+    std::vector<std::vector<Entry>> part(n_threads_);
+#pragma omp parallel num_threads(n_threads_)
+    {
+      auto& mine = part[omp_get_thread_num()];
+#pragma omp for schedule(static)
+      for (std::size_t k = 0; k < neighbors_.n_pairs(); ++k) {
+        if (meshes::norm2(pair_history_[k]) == 0)
+          continue;
+        const std::uint32_t i = neighbors_.pair_i[k], j = neighbors_.pair_j[k];
+        const bool ghost = j >= n;
+        const std::uint32_t b = ghost ? ghost_owner_[j - n] : j;
+        const auto id_i = std::uint64_t(p.id[i]), id_b = std::uint64_t(p.id[b]);
+        Vec3 h = pair_history_[k];
+        if (ghost && id_b < id_i)
+          h = rotate_z(h, c, s);
+        mine.push_back(
+            {(std::min(id_i, id_b) << 32) | std::max(id_i, id_b), id_b < id_i ? b : i, h});
+      }
+    }
+    std::size_t total = 0;
+    for (const auto& v : part)
+      total += v.size();
+    old.reserve(total);
+    for (const auto& v : part)
+      old.insert(old.end(), v.begin(), v.end());
   }
 
   // Where each particle's wall-contact slots are now (by stable id).
@@ -102,9 +118,12 @@ void System::rebuild() {
         p.position[i] = rotate_z(p.position[i], cs, sn);
         p.velocity[i] = rotate_z(p.velocity[i], cs, sn);
         p.angular_velocity[i] = rotate_z(p.angular_velocity[i], cs, sn);
-        // Forces too: after import_state() they are used for the next half-kick as stored.
-        p.force[i] = rotate_z(p.force[i], cs, sn);
-        p.torque[i] = rotate_z(p.torque[i], cs, sn);
+        // Forces too, between steps: they are used for the next half-kick as stored (within a
+        // step they hold gravity only, the pair loop's start, which the sector keeps along z).
+        if (!in_step) {
+          p.force[i] = rotate_z(p.force[i], cs, sn);
+          p.torque[i] = rotate_z(p.torque[i], cs, sn);
+        }
         const std::int32_t q = slot_q_of_id_[p.id[i]];
         for (int k = 0; q >= 0 && k < wall_slots; ++k) {
           WallSlot& sl = slots_[wall_slots * q + k];
@@ -164,15 +183,6 @@ void System::rebuild() {
   neighbors_.build(p, skin_);
   const std::size_t np = neighbors_.n_pairs();
   pair_history_.assign(np, {});
-  pair_const_.resize(np);
-#pragma omp parallel for schedule(static)
-  for (std::size_t k = 0; k < np; ++k) {
-    const std::uint32_t i = neighbors_.pair_i[k], j = neighbors_.pair_j[k];
-    const double rs = p.radius[i] + p.radius[j];
-    pair_const_[k] = {rs, p.radius[i] * p.radius[j] / rs,
-                      p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]),
-                      p.material[i] * n_mat_ + p.material[j]};
-  }
   if (!old.empty()) {
 #pragma omp parallel for schedule(static)
     for (std::size_t k = 0; k < np; ++k) {
@@ -202,14 +212,18 @@ void System::rebuild() {
           emit(std::uint32_t(w << 24) | *b);
     }
   };
-  // One pass: each thread scans a contiguous range into its own buffer; concatenated in
-  // thread order, the buffers give the serial order.
-  std::vector<std::vector<std::uint32_t>> found(n_threads_);
-#pragma omp parallel num_threads(n_threads_)
-  {
-    auto& mine = found[omp_get_thread_num()];
-#pragma omp for schedule(static)
-    for (std::size_t i = 0; i < n; ++i) {
+  // Near-wall particles cluster (the floor's are all at the start of the spatial order), so
+  // the scan goes in chunks handed out dynamically; each chunk has its own buffer and they
+  // are concatenated in chunk order, which is the serial order.
+  constexpr std::size_t chunk = 512;
+  const std::size_t n_chunks = (n + chunk - 1) / chunk;
+  if (wall_chunk_found_.size() < n_chunks)
+    wall_chunk_found_.resize(n_chunks);
+#pragma omp parallel for schedule(dynamic) num_threads(n_threads_)
+  for (std::size_t ch = 0; ch < n_chunks; ++ch) {
+    auto& mine = wall_chunk_found_[ch];
+    mine.clear();
+    for (std::size_t i = ch * chunk; i < std::min(n, (ch + 1) * chunk); ++i) {
       const std::size_t before = mine.size();
       scan(i, [&](std::uint32_t v) { mine.push_back(v); });
       count[i] = std::uint32_t(mine.size() - before);
@@ -232,10 +246,11 @@ void System::rebuild() {
     slots_.swap(slots);
   }
   wall_candidate_.clear();
-  for (const auto& f : found)
-    wall_candidate_.insert(wall_candidate_.end(), f.begin(), f.end());
-  split_wall_particles();
-  count_block_contacts();
+  for (std::size_t ch = 0; ch < n_chunks; ++ch)
+    wall_candidate_.insert(wall_candidate_.end(), wall_chunk_found_[ch].begin(),
+                           wall_chunk_found_[ch].end());
+  count_particle_costs();
+  split_ownership();
   reference_position_.assign(p.position.begin(), p.position.begin() + n);
   ++n_rebuilds_;
 }
@@ -287,262 +302,223 @@ void System::refresh_ghosts() {
   }
 }
 
-void System::count_block_contacts() {
+void System::count_particle_costs() {
+  // Estimated cost of each particle's share of the force evaluation, in units of one listed
+  // pair's distance test, as measured on a settled bed: a contact costs 4 more (the law, its
+  // gathers and the scatter), a wall candidate face 4 (closest feature), a near-wall particle
+  // 8 of its own.
   const auto& p = particles;
-  const std::size_t np = neighbors_.n_pairs();
-  const std::size_t n_blocks = (np + pair_block_size - 1) / pair_block_size;
-  block_contacts_.assign(n_blocks, 0);
-#pragma omp parallel for schedule(static) num_threads(n_threads_)
-  for (std::size_t b = 0; b < n_blocks; ++b) {
-    std::uint32_t m = 0;
-    for (std::size_t k = b * pair_block_size; k < std::min(np, (b + 1) * pair_block_size); ++k) {
-      const double rs = pair_const_[k].r_sum;
-      m += meshes::norm2(p.position[neighbors_.pair_i[k]] - p.position[neighbors_.pair_j[k]]) <
-           rs * rs;
-    }
-    block_contacts_[b] = m;
-  }
-}
-
-void System::split_wall_particles() {
-  // A near-wall particle costs its closest-feature tests, one per candidate face, plus a
-  // little of its own.
-  wall_split_.assign(n_threads_ + 1, wall_particles_.size());
-  wall_split_[0] = 0;
-  const double total = double(wall_candidate_.size() + 2 * wall_particles_.size());
-  double sum = 0;
-  int t = 1;
-  for (std::size_t q = 0; q < wall_particles_.size() && t < n_threads_; ++q) {
-    const std::size_t i = wall_particles_[q];
-    sum += double(wall_candidate_offset_[i + 1] - wall_candidate_offset_[i] + 2);
-    while (t < n_threads_ && sum >= total * t / n_threads_)
-      wall_split_[t++] = q + 1;
-  }
-}
-
-void System::split_pair_blocks() {
-  // A listed pair costs its distance test; a contact costs about four times that (the law,
-  // its gathers and the scatter), as measured on a settled bed.
-  const std::size_t np = neighbors_.n_pairs(), n_blocks = block_contacts_.size();
-  const auto cost = [&](std::size_t b) {
-    return double(std::min<std::size_t>(pair_block_size, np - b * pair_block_size)) +
-           4.0 * block_contacts_[b];
-  };
-  double total = 0;
-  for (std::size_t b = 0; b < n_blocks; ++b)
-    total += cost(b);
-  block_split_.assign(n_threads_ + 1, n_blocks);
-  block_split_[0] = 0;
-  double sum = 0;
-  int t = 1;
-  for (std::size_t b = 0; b < n_blocks && t < n_threads_; ++b) {
-    sum += cost(b);
-    while (t < n_threads_ && sum >= total * t / n_threads_)
-      block_split_[t++] = b + 1;
-  }
-}
-
-void System::pair_forces() {
-  auto& p = particles;
   const std::size_t n = p.n_real, np = neighbors_.n_pairs();
-  const std::uint32_t* pi = neighbors_.pair_i.data();
-  const std::uint32_t* pj = neighbors_.pair_j.data();
-  const Vec3 gravity = settings.gravity;
+  pair_touch_.resize(np);
+#pragma omp parallel for schedule(static) num_threads(n_threads_)
+  for (std::size_t k = 0; k < np; ++k) {
+    const double rs = p.radius[neighbors_.pair_i[k]] + p.radius[neighbors_.pair_j[k]];
+    pair_touch_[k] = meshes::norm2(p.position[neighbors_.pair_i[k]] -
+                                   p.position[neighbors_.pair_j[k]]) < rs * rs;
+  }
+  particle_cost_.resize(n);
+#pragma omp parallel for schedule(static) num_threads(n_threads_)
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto n_candidates = wall_candidate_offset_[i + 1] - wall_candidate_offset_[i];
+    particle_cost_[i] = 4.0 * n_candidates + (n_candidates > 0 ? 8.0 : 0.0);
+  }
+  for (std::size_t k = 0; k < np; ++k)
+    particle_cost_[neighbors_.pair_i[k]] += 1.0 + 4.0 * pair_touch_[k];
+}
+
+void System::split_ownership() {
+  // In the force evaluation each thread owns a contiguous range of particles of equal
+  // estimated cost: the pairs listed under them and their wall contacts. With the pairs and
+  // the walls split together, the threads meet once per evaluation instead of twice, and a
+  // particle's wall contacts stay with the thread that owns its pairs. The split is a
+  // function of the state at the last rebuild, so a run stays bitwise reproducible.
+  const std::size_t n = particles.n_real;
+  double total = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    total += particle_cost_[i];
+  owner_split_.assign(n_threads_ + 1, n);
+  owner_split_[0] = 0;
+  double sum = 0;
+  int t = 1;
+  for (std::size_t i = 0; i < n && t < n_threads_; ++i) {
+    sum += particle_cost_[i];
+    while (t < n_threads_ && sum >= total * t / n_threads_)
+      owner_split_[t++] = i + 1;
+  }
+  // Pairs are listed by their first particle, near-wall particles in index order.
+  pair_split_.resize(n_threads_ + 1);
+  wall_split_.resize(n_threads_ + 1);
+  for (int t = 0; t <= n_threads_; ++t) {
+    const auto first = std::uint32_t(owner_split_[t]);
+    pair_split_[t] =
+        std::size_t(std::lower_bound(neighbors_.pair_i.begin(), neighbors_.pair_i.end(), first) -
+                    neighbors_.pair_i.begin());
+    wall_split_[t] =
+        std::size_t(std::lower_bound(wall_particles_.begin(), wall_particles_.end(), first) -
+                    wall_particles_.begin());
+  }
+}
+
+std::size_t System::pair_forces(int thread, Vec3* F, Vec3* T) {
+  auto& p = particles;
   const PairKernelData kernel{p.position.data(),
                               p.velocity.data(),
                               p.angular_velocity.data(),
                               p.radius.data(),
-                              pi,
-                              pj,
-                              pair_const_.data(),
+                              p.mass.data(),
+                              p.material.data(),
+                              neighbors_.pair_i.data(),
+                              neighbors_.pair_j.data(),
                               contact_.data(),
+                              n_mat_,
                               pair_history_.data(),
                               ghost_owner_.data(),
-                              n,
+                              p.n_real,
                               cos_t_,
                               sin_t_,
                               dt_};
   std::size_t n_contacts = 0;
-  split_pair_blocks();
-#pragma omp parallel num_threads(n_threads_) reduction(+ : n_contacts)
-  {
-    const int thread = omp_get_thread_num();
-    Vec3* F = thread == 0 ? p.force.data() : force_buffer_[thread].data();
-    Vec3* T = thread == 0 ? p.torque.data() : torque_buffer_[thread].data();
-    if (thread == 0)
-      for (std::size_t i = 0; i < n; ++i) {
-        F[i] = gravity * p.mass[i];
-        T[i] = {};
-      }
-    else
-      for (std::size_t i = 0; i < n; ++i)
-        F[i] = T[i] = {};
-    PairBlock& bl = pair_block_[thread];
-    for (std::size_t b = block_split_[thread]; b < block_split_[thread + 1]; ++b) {
-      const std::size_t k0 = b * pair_block_size;
-      const int m = pair_block_forces(
-          kernel, k0, int(std::min<std::size_t>(pair_block_size, np - k0)), bl, F, T);
-      block_contacts_[b] = std::uint32_t(m);
-      n_contacts += m;
-    }
+  PairBlock& bl = pair_block_[thread];
+  for (std::size_t k0 = pair_split_[thread]; k0 < pair_split_[thread + 1]; k0 += pair_block_size) {
+    const std::size_t m = std::min<std::size_t>(pair_block_size, pair_split_[thread + 1] - k0);
+    n_contacts += std::size_t(pair_block_forces(kernel, k0, int(m), bl, F, T));
   }
-  n_pair_contacts_ = n_contacts;
-  if (n_threads_ > 1) {
-#pragma omp parallel for schedule(static) num_threads(n_threads_)
-    for (std::size_t i = 0; i < n; ++i) {
-      Vec3 f = p.force[i], t = p.torque[i];
-      for (int th = 1; th < n_threads_; ++th) {
-        f += force_buffer_[th][i];
-        t += torque_buffer_[th][i];
-      }
-      p.force[i] = f;
-      p.torque[i] = t;
-    }
-  }
+  return n_contacts;
 }
 
-void System::wall_forces() {
-  if (walls_.empty())
-    return;
-  if (wall_split_.size() != std::size_t(n_threads_) + 1)
-    split_wall_particles(); // the thread count changed since the last rebuild
+void System::wall_forces(int thread, Vec3* F, Vec3* T) {
   auto& p = particles;
   const double dt = dt_;
-#pragma omp parallel num_threads(n_threads_)
-  {
-    const int thread = omp_get_thread_num();
-    auto& acc = wear_acc_[thread];
-    // Only particles near a wall, in contiguous ranges of equal cost (split_wall_particles).
-    // Scratch of one particle, declared once per thread: default-initialising it per particle
-    // cost more than the contacts themselves.
-    std::int32_t new_wall[wall_slots];
-    Vec3 new_normal[wall_slots], new_delta[wall_slots];
-    Candidate found[max_wall_candidates];
-    for (std::size_t q = wall_split_[thread]; q < wall_split_[thread + 1]; ++q) {
-      const std::size_t i = wall_particles_[q];
-      const auto b = wall_candidate_offset_[i], e = wall_candidate_offset_[i + 1];
-      const Vec3 x = p.position[i];
-      const double r = p.radius[i];
-      bool taken[wall_slots] = {};
-      int n_new = 0;
-      Vec3 f_sum{}, t_sum{};
-      // Gather the owned contacts, then merge those of one wall whose normals lie within
-      // merge_angle: they are one contact with a finely tessellated concave surface (a worn
-      // fillet), where every triangle's interior is a local minimum of the distance.
-      int n_found = 0;
-      bool overflow = false;
-      for (auto k = b; k < e && !overflow; ++k) {
-        const std::uint32_t w = wall_candidate_[k] >> 24, f = wall_candidate_[k] & 0xFFFFFFu;
-        const MeshWall& wall = walls_[w];
-        if (wall.plane_distance(f, x) >= r)
-          continue;
-        const ClosestFeature cf = wall.closest(f, x);
-        const Vec3 d = x - cf.point;
-        const double dist2 = meshes::norm2(d);
-        if (dist2 >= r * r || dist2 == 0 || !wall.owns_contact(f, cf, x))
-          continue;
-        if (n_found == max_wall_candidates) {
-          overflow = true;
-          break;
-        }
-        const double dist = std::sqrt(dist2);
-        found[n_found++] = {cf, d / dist, dist, w, f};
+  auto& acc = wear_acc_[thread];
+  // Scratch of one particle, declared once: default-initialising it per particle cost more
+  // than the contacts themselves.
+  std::int32_t new_wall[wall_slots];
+  Vec3 new_normal[wall_slots], new_delta[wall_slots];
+  Candidate found[max_wall_candidates];
+  for (std::size_t q = wall_split_[thread]; q < wall_split_[thread + 1]; ++q) {
+    const std::size_t i = wall_particles_[q];
+    const auto b = wall_candidate_offset_[i], e = wall_candidate_offset_[i + 1];
+    const Vec3 x = p.position[i];
+    const double r = p.radius[i];
+    bool taken[wall_slots] = {};
+    int n_new = 0;
+    Vec3 f_sum{}, t_sum{};
+    // Gather the owned contacts, then merge those of one wall whose normals lie within
+    // merge_angle: they are one contact with a finely tessellated concave surface (a worn
+    // fillet), where every triangle's interior is a local minimum of the distance.
+    int n_found = 0;
+    bool overflow = false;
+    for (auto k = b; k < e && !overflow; ++k) {
+      const std::uint32_t w = wall_candidate_[k] >> 24, f = wall_candidate_[k] & 0xFFFFFFu;
+      const MeshWall& wall = walls_[w];
+      if (wall.plane_distance(f, x) >= r)
+        continue;
+      const ClosestFeature cf = wall.closest(f, x);
+      const Vec3 d = x - cf.point;
+      const double dist2 = meshes::norm2(d);
+      if (dist2 >= r * r || dist2 == 0 || !wall.owns_contact(f, cf, x))
+        continue;
+      if (n_found == max_wall_candidates) {
+        overflow = true;
+        break;
       }
-      for (int c = 0; c < n_found && !overflow; ++c) {
-        const Candidate& cand = found[c];
-        bool merged = false;
-        for (int o = 0; o < n_found && !merged; ++o)
-          merged = o != c && found[o].wall == cand.wall &&
-                   meshes::dot(found[o].normal, cand.normal) > cos_merge_angle &&
-                   (found[o].dist < cand.dist || (found[o].dist == cand.dist && o < c));
-        if (merged)
-          continue;
-        if (n_new == wall_slots) {
-          overflow = true;
-          break;
-        }
-        const std::uint32_t w = cand.wall, f = cand.face;
-        const MeshWall& wall = walls_[w];
-        const ClosestFeature& cf = cand.feature;
-        const double dist = cand.dist;
-        ContactGeometry g;
-        g.normal = cand.normal;
-        g.overlap = r - dist;
-        g.r_eff = r;
-        g.m_eff = p.mass[i];
-        g.arm_i = dist;
-        g.arm_j = 0;
-        g.lever_i = r;
-        g.v_contact = p.velocity[i] + meshes::cross(p.angular_velocity[i], g.normal * -r) -
-                      wall.velocity_at(cf.point);
-        g.w_relative = p.angular_velocity[i] - wall.angular_velocity_vector();
-        // Carry the history of the old slot of this wall with the closest normal.
-        Vec3 delta{};
-        int best = -1;
-        double best_dot = 0.9;
-        const WallSlot* old = &slots_[wall_slots * q];
-        for (int s = 0; s < wall_slots && old[s].wall >= 0; ++s) {
-          if (old[s].wall == std::int32_t(w) && !taken[s]) {
-            const double cd = meshes::dot(old[s].normal, g.normal);
-            if (cd > best_dot) {
-              best_dot = cd;
-              best = s;
-            }
-          }
-        }
-        if (best >= 0) {
-          taken[best] = true;
-          delta = old[best].delta;
-        }
-        const auto res =
-            hertz_mindlin(contact_[p.material[i] * n_mat_ + wall.material()], g, dt, delta);
-        f_sum += res.force;
-        t_sum += res.torque_i;
-        new_wall[n_new] = std::int32_t(w);
-        new_normal[n_new] = g.normal;
-        new_delta[n_new] = delta;
-        ++n_new;
-        if (wall.wearing()) {
-          std::uint32_t faces[32];
-          double shares[32];
-          const int n_faces = wall.faces_sharing(f, cf, faces, shares, 32);
-          const Vec3 impulse = res.force * (-dt);
-          const double fn_dt = res.normal_force * dt;
-          const double archard = fn_dt * meshes::norm(res.v_tangential);
-          const double work = std::abs(meshes::dot(res.tangential_force, res.v_tangential)) * dt;
-          auto& a = acc[w];
-          for (int q = 0; q < n_faces; ++q) {
-            double* v = &a[8 * faces[q]];
-            const double share = shares[q];
-            v[0] += impulse.x * share;
-            v[1] += impulse.y * share;
-            v[2] += impulse.z * share;
-            v[3] += fn_dt * share;
-            v[4] += archard * share;
-            v[5] += work * share;
-            v[6] += share;
-          }
-          double* tot = &a[8 * wall.n_faces()];
-          tot[0] += impulse.x;
-          tot[1] += impulse.y;
-          tot[2] += impulse.z;
-          tot[3] += fn_dt;
-          tot[4] += archard;
-          tot[5] += work;
-        }
-      }
-      if (overflow && (error_particle_[thread] < 0 || long(i) < error_particle_[thread])) {
-        error_particle_[thread] = long(i);
-        error_kind_[thread] = 4;
-      }
-      WallSlot* slot = &slots_[wall_slots * q];
-      for (int s = 0; s < n_new; ++s)
-        slot[s] = {new_normal[s], new_delta[s], new_wall[s]};
-      if (n_new < wall_slots)
-        slot[n_new].wall = -1;
-      p.force[i] += f_sum;
-      p.torque[i] += t_sum;
+      const double dist = std::sqrt(dist2);
+      found[n_found++] = {cf, d / dist, dist, w, f};
     }
+    for (int c = 0; c < n_found && !overflow; ++c) {
+      const Candidate& cand = found[c];
+      bool merged = false;
+      for (int o = 0; o < n_found && !merged; ++o)
+        merged = o != c && found[o].wall == cand.wall &&
+                 meshes::dot(found[o].normal, cand.normal) > cos_merge_angle &&
+                 (found[o].dist < cand.dist || (found[o].dist == cand.dist && o < c));
+      if (merged)
+        continue;
+      if (n_new == wall_slots) {
+        overflow = true;
+        break;
+      }
+      const std::uint32_t w = cand.wall, f = cand.face;
+      const MeshWall& wall = walls_[w];
+      const ClosestFeature& cf = cand.feature;
+      const double dist = cand.dist;
+      ContactGeometry g;
+      g.normal = cand.normal;
+      g.overlap = r - dist;
+      g.r_eff = r;
+      g.m_eff = p.mass[i];
+      g.arm_i = dist;
+      g.arm_j = 0;
+      g.lever_i = r;
+      g.v_contact = p.velocity[i] + meshes::cross(p.angular_velocity[i], g.normal * -r) -
+                    wall.velocity_at(cf.point);
+      g.w_relative = p.angular_velocity[i] - wall.angular_velocity_vector();
+      // Carry the history of the old slot of this wall with the closest normal.
+      Vec3 delta{};
+      int best = -1;
+      double best_dot = 0.9;
+      const WallSlot* old = &slots_[wall_slots * q];
+      for (int s = 0; s < wall_slots && old[s].wall >= 0; ++s) {
+        if (old[s].wall == std::int32_t(w) && !taken[s]) {
+          const double cd = meshes::dot(old[s].normal, g.normal);
+          if (cd > best_dot) {
+            best_dot = cd;
+            best = s;
+          }
+        }
+      }
+      if (best >= 0) {
+        taken[best] = true;
+        delta = old[best].delta;
+      }
+      const auto res =
+          hertz_mindlin(contact_[p.material[i] * n_mat_ + wall.material()], g, dt, delta);
+      f_sum += res.force;
+      t_sum += res.torque_i;
+      new_wall[n_new] = std::int32_t(w);
+      new_normal[n_new] = g.normal;
+      new_delta[n_new] = delta;
+      ++n_new;
+      if (wall.wearing()) {
+        std::uint32_t faces[32];
+        double shares[32];
+        const int n_faces = wall.faces_sharing(f, cf, faces, shares, 32);
+        const Vec3 impulse = res.force * (-dt);
+        const double fn_dt = res.normal_force * dt;
+        const double archard = fn_dt * meshes::norm(res.v_tangential);
+        const double work = std::abs(meshes::dot(res.tangential_force, res.v_tangential)) * dt;
+        auto& a = acc[w];
+        for (int q = 0; q < n_faces; ++q) {
+          double* v = &a[8 * faces[q]];
+          const double share = shares[q];
+          v[0] += impulse.x * share;
+          v[1] += impulse.y * share;
+          v[2] += impulse.z * share;
+          v[3] += fn_dt * share;
+          v[4] += archard * share;
+          v[5] += work * share;
+          v[6] += share;
+        }
+        double* tot = &a[8 * wall.n_faces()];
+        tot[0] += impulse.x;
+        tot[1] += impulse.y;
+        tot[2] += impulse.z;
+        tot[3] += fn_dt;
+        tot[4] += archard;
+        tot[5] += work;
+      }
+    }
+    if (overflow && (error_particle_[thread] < 0 || long(i) < error_particle_[thread])) {
+      error_particle_[thread] = long(i);
+      error_kind_[thread] = 4;
+    }
+    WallSlot* slot = &slots_[wall_slots * q];
+    for (int s = 0; s < n_new; ++s)
+      slot[s] = {new_normal[s], new_delta[s], new_wall[s]};
+    if (n_new < wall_slots)
+      slot[n_new].wall = -1;
+    F[i] += f_sum;
+    T[i] += t_sum;
   }
 }
 
