@@ -65,28 +65,31 @@ void NeighborList::build(const Particles& p, double skin) {
     const double ri = p.radius[i] + skin;
     const int ci = coord(xi, 0, nx), cj = coord(xi, 1, ny), ck = coord(xi, 2, nz);
     const int l0 = std::max(0, ci - 1), l1 = std::min(nx - 1, ci + 1);
-    const std::size_t first = out.size();
+    // The three cells of a stencil row are one run of cell_items_: at most 9 runs.
+    std::uint32_t run_begin[9], run_end[9];
+    int n_runs = 0;
     std::size_t n_candidates = 0;
     for (int k = std::max(0, ck - 1); k <= std::min(nz - 1, ck + 1); ++k)
       for (int j = std::max(0, cj - 1); j <= std::min(ny - 1, cj + 1); ++j) {
         const std::size_t row = (std::size_t(k) * ny + j) * nx;
-        n_candidates += cell_start_[row + l1 + 1] - cell_start_[row + l0];
+        run_begin[n_runs] = cell_start_[row + l0];
+        run_end[n_runs] = cell_start_[row + l1 + 1];
+        n_candidates += run_end[n_runs] - run_begin[n_runs];
+        ++n_runs;
       }
+    const std::size_t first = out.size();
     out.resize(first + n_candidates);
     std::uint32_t* dst = out.data() + first;
     std::size_t m = 0;
-    for (int k = std::max(0, ck - 1); k <= std::min(nz - 1, ck + 1); ++k)
-      for (int j = std::max(0, cj - 1); j <= std::min(ny - 1, cj + 1); ++j) {
-        const std::size_t row = (std::size_t(k) * ny + j) * nx;
-        // Branch-free: most candidates are rejected, unpredictably.
-        for (auto s = cell_start_[row + l0]; s < cell_start_[row + l1 + 1]; ++s) {
-          const std::uint32_t o = cell_items_[s];
-          const Binned& b = binned_[s];
-          const double dx = b.x - xi.x, dy = b.y - xi.y, dz = b.z - xi.z;
-          const double cut = ri + b.r;
-          dst[m] = o;
-          m += (dx * dx + dy * dy + dz * dz < cut * cut) & (o > i || o >= n_real);
-        }
+    for (int r = 0; r < n_runs; ++r)
+      // Branch-free: most candidates are rejected, unpredictably.
+      for (auto s = run_begin[r]; s < run_end[r]; ++s) {
+        const std::uint32_t o = cell_items_[s];
+        const Binned& b = binned_[s];
+        const double dx = b.x - xi.x, dy = b.y - xi.y, dz = b.z - xi.z;
+        const double cut = ri + b.r;
+        dst[m] = o;
+        m += (dx * dx + dy * dy + dz * dz < cut * cut) & (o > i || o >= n_real);
       }
     std::sort(dst, dst + m);
     out.resize(first + m);

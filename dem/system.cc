@@ -206,15 +206,12 @@ void System::advance(bool close_previous) {
 #pragma omp parallel num_threads(n_threads_) reduction(max : need_rebuild)
   {
     const int thread = omp_get_thread_num();
-    const std::size_t i0 = p.n_real * thread / n_threads_;
-    const std::size_t i1 = p.n_real * (thread + 1) / n_threads_;
+    const auto [i0, i1] = kick_range(thread);
     for (std::size_t i = i0; i < i1; ++i) {
       Vec3 f, t;
       sum_forces(i, f, t);
-      if (close_previous) {
-        p.velocity[i] += f * (h / p.mass[i]);
-        p.angular_velocity[i] += t * (h / p.inertia[i]);
-      }
+      if (close_previous)
+        closing_kick(i, f, t);
       const double im = 1.0 / p.mass[i], ii = 1.0 / p.inertia[i];
       p.velocity[i] += f * (h * im);
       p.angular_velocity[i] += t * (h * ii);
@@ -252,23 +249,29 @@ void System::advance(bool close_previous) {
 
 void System::close_step() {
   auto& p = particles;
-  const double h = 0.5 * dt_;
 #pragma omp parallel num_threads(n_threads_)
   {
-    const int thread = omp_get_thread_num();
-    const std::size_t i0 = p.n_real * thread / n_threads_;
-    const std::size_t i1 = p.n_real * (thread + 1) / n_threads_;
+    const auto [i0, i1] = kick_range(omp_get_thread_num());
     for (std::size_t i = i0; i < i1; ++i) {
-      Vec3 f, t;
-      sum_forces(i, f, t);
-      p.force[i] = f;
-      p.torque[i] = t;
-      p.velocity[i] += f * (h / p.mass[i]);
-      p.angular_velocity[i] += t * (h / p.inertia[i]);
+      sum_forces(i, p.force[i], p.torque[i]);
+      closing_kick(i, p.force[i], p.torque[i]);
     }
   }
   time_ += dt_;
   ++n_steps_;
+}
+
+std::pair<std::size_t, std::size_t> System::kick_range(int thread) const {
+  const std::size_t n = particles.n_real;
+  return {n * thread / n_threads_, n * (thread + 1) / n_threads_};
+}
+
+void System::closing_kick(std::size_t i, const Vec3& f, const Vec3& t) {
+  // One expression for step() and the fused pass of run(): they stay bitwise identical.
+  auto& p = particles;
+  const double h = 0.5 * dt_;
+  p.velocity[i] += f * (h / p.mass[i]);
+  p.angular_velocity[i] += t * (h / p.inertia[i]);
 }
 
 void System::compute_forces() {

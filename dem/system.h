@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace wear::dem {
@@ -130,7 +131,11 @@ private:
   /// Closing half-kick of the previous step if `close_previous`; opening half-kick, drift,
   /// list rebuild if needed, forces.
   void advance(bool close_previous);
-  void close_step();     ///< closing half-kick, clock
+  void close_step(); ///< closing half-kick, clock
+  /// Particles [first, second) of `thread` in the drift and kick: equal counts.
+  std::pair<std::size_t, std::size_t> kick_range(int thread) const;
+  /// v += dt/2 F/m, w += dt/2 T/I for particle i.
+  void closing_kick(std::size_t i, const Vec3& f, const Vec3& t);
   void reset_forces();   ///< gravity only, no torque: where the pair loop starts from
   void collect_forces(); ///< sums the threads' forces into the particles' arrays
   /// The force and torque on particle i: its own arrays plus the other threads' buffers, in
@@ -166,8 +171,7 @@ private:
   double cos_t_ = 1, sin_t_ = 0;
   std::vector<std::uint32_t> ghost_owner_;
 
-  // Pairs: tangential history; forces go to per-thread arrays (thread 0: the particles'
-  // own arrays), summed in thread order after the pair loop.
+  // Pairs: tangential history per listed pair.
   std::vector<Vec3> pair_history_;
   std::vector<PairBlock> pair_block_; // one per thread
   // Force evaluation: thread t owns particles [owner_split_[t], owner_split_[t + 1]), the

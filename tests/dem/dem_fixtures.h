@@ -39,4 +39,24 @@ inline int add_gravel(System& s, double e, double mu, double mu_r) {
   return g;
 }
 
+/// The tester's walls (0.1 m high, 20 mm mesh, no consolidator) as a periodic sector of
+/// `angle_deg`, the floor turning at 90 deg/s and the cylinders too if `rotating_cylinders`.
+inline void add_periodic_tester_sector(System& s, int material, double angle_deg,
+                                       bool rotating_cylinders) {
+  meshes::TesterGeometry t;
+  t.sector_angle_deg = angle_deg;
+  t.wall_height = 0.1;
+  t.wall_mesh_size = 0.02;
+  t.consolidator = false;
+  const auto w = meshes::generate_tester_walls(t);
+  WallMotion rot;
+  rot.angular_velocity = 0.5 * pi; // 90 deg/s
+  const WallMotion cylinders = rotating_cylinders ? rot : WallMotion{};
+  s.add_wall(MeshWall(w.floor, material, rot, false, "floor"));
+  s.add_wall(MeshWall(w.inner, material, cylinders, false, "inner"));
+  s.add_wall(MeshWall(w.outer, material, cylinders, false, "outer"));
+  s.settings.periodic = {true, angle_deg * pi / 180};
+  s.settings.domain = {{-0.6, -0.6, -0.01}, {0.6, 0.6, 0.5}};
+}
+
 } // namespace wear::dem::testing

@@ -118,19 +118,7 @@ TEST_CASE("periodic sector: particle count constant over a long run", "[dem][per
   System s;
   const int g = add_gravel(s, 0.5, 0.5, 0.1);
   const double angle = 60 * pi / 180;
-  wear::meshes::TesterGeometry t;
-  t.sector_angle_deg = 60;
-  t.wall_height = 0.1;
-  t.wall_mesh_size = 0.02;
-  t.consolidator = false;
-  const auto w = generate_tester_walls(t);
-  WallMotion rot;
-  rot.angular_velocity = 0.5 * pi; // 90 deg/s
-  s.add_wall(MeshWall(w.floor, g, rot, false, "floor"));
-  s.add_wall(MeshWall(w.inner, g, rot, false, "inner"));
-  s.add_wall(MeshWall(w.outer, g, rot, false, "outer"));
-  s.settings.periodic = {true, angle};
-  s.settings.domain = {{-0.6, -0.6, -0.01}, {0.6, 0.6, 0.5}};
+  add_periodic_tester_sector(s, g, 60, true);
   SizeDistribution psd{{8e-3}, {1.0}, 1.0};
   const auto n = insert_random(
       s.particles, annular_sector_region(0.29, 0.5, angle, 0, 0.06, 4.1e-3), psd, 1500, 2650, g, 7);
@@ -219,19 +207,7 @@ TEST_CASE("an exported state continues bit for bit in a freshly set-up system",
   // so ghosts, wraps, wall slots and the per-thread force sums all cross the boundary.
   const auto make = [](System& s, const SystemState* from) {
     const int g = add_gravel(s, 0.5, 0.5, 0.1);
-    wear::meshes::TesterGeometry t;
-    t.sector_angle_deg = 30;
-    t.wall_height = 0.1;
-    t.wall_mesh_size = 0.02;
-    t.consolidator = false;
-    const auto w = generate_tester_walls(t);
-    WallMotion rot;
-    rot.angular_velocity = 0.5 * pi;
-    s.add_wall(MeshWall(w.floor, g, rot, false, "floor"));
-    s.add_wall(MeshWall(w.inner, g, {}, false, "inner"));
-    s.add_wall(MeshWall(w.outer, g, {}, false, "outer"));
-    s.settings.periodic = {true, 30 * pi / 180};
-    s.settings.domain = {{-0.6, -0.6, -0.01}, {0.6, 0.6, 0.5}};
+    add_periodic_tester_sector(s, g, 30, false);
     SizeDistribution psd{{8e-3, 10e-3}, {0.5, 0.5}, 1.0};
     if (from) // as WearTester::restore: the particles where the state has them, so the
               // set-up system already has contacts (and forces) of its own

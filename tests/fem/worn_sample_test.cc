@@ -11,6 +11,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <string>
 
 using namespace wear::fem;
 using wear::meshes::FaceField;
@@ -43,6 +44,19 @@ FaceField<double> removed_by_depth(const WornSample& sample, Depth depth) {
     if (wear::meshes::label::wears(m.face_labels[f]))
       removed[f] = depth(m.face_labels[f], centroid[f], normal[f]) * area[f];
   return removed;
+}
+// A plain 40 x 30 mm plate of the given thickness [m], 2 mm on the wear face and 3 mm at the
+// bottom, written to `msh`; returns its geometry (the remesher's sizes).
+wear::meshes::SampleGeometry small_plain_plate(double thickness, const std::string& msh) {
+  wear::meshes::SampleGeometry s;
+  s.convex = false;
+  s.length = 0.040;
+  s.width = 0.030;
+  s.thickness = thickness;
+  s.mesh_size = 2e-3;
+  s.mesh_size_bottom = 3e-3;
+  wear::meshes::generate_sample(s, msh);
+  return s;
 }
 } // namespace
 
@@ -151,14 +165,7 @@ TEST_CASE("wear past the clamped bottom is recorded as worn through, not removed
   // loses exactly the rest; no vertex passes through the layer and every mesh stays valid.
   // Without the layer the corner's recession folds against the bottom, and the wear stage
   // spreads nearly all of the stage's wear sideways (83 of 88 mm^3 in stage 2).
-  wear::meshes::SampleGeometry s;
-  s.convex = false;
-  s.length = 0.040;
-  s.width = 0.030;
-  s.thickness = 0.003;
-  s.mesh_size = 2e-3;
-  s.mesh_size_bottom = 3e-3;
-  wear::meshes::generate_sample(s, "worn_through_sample.msh");
+  const auto s = small_plain_plate(0.003, "worn_through_sample.msh");
   WornSampleParameters p;
   p.remesh.sizes = s;
   p.mesh_directory = "worn_through_meshes";
@@ -220,14 +227,7 @@ TEST_CASE("remeshing keeps every label's area when a label boundary crosses a fl
   // refuses an attempt with mixed patches or a label whose area changes by over 5 %). Here a
   // label boundary runs through a flat top, where no feature angle separates the labels:
   // half of the top carries the side label, and every label must keep its area.
-  wear::meshes::SampleGeometry s;
-  s.convex = false;
-  s.length = 0.040;
-  s.width = 0.030;
-  s.thickness = 0.005;
-  s.mesh_size = 2e-3;
-  s.mesh_size_bottom = 3e-3;
-  wear::meshes::generate_sample(s, "mixed_label_sample.msh");
+  const auto s = small_plain_plate(0.005, "mixed_label_sample.msh");
   WornSampleParameters p;
   p.remesh.sizes = s;
   p.mesh_directory = "mixed_label_meshes";
