@@ -401,6 +401,9 @@ void CoupledRun::update_geometry(const meshes::FaceField<double>& removed, Stage
   r.min_scaled_jacobian = report.quality.min_scaled_jacobian;
   r.motion_seconds = report.motion_seconds;
   r.remesh_seconds = report.remesh_seconds;
+  for (const auto& refusal : report.remesh_refusals)
+    log_ << "stage " << r.stage << ": a remesh needed more than one attempt; refused:" << refusal
+         << '\n';
   const auto& after = sample_->surface();
   r.n_tetrahedra = int(sample_->triangulation().n_active_cells());
   r.n_surface_faces = int(after.n_faces());

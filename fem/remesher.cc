@@ -1,14 +1,15 @@
 // Remeshing of the worn sample from its boundary triangulation with gmsh 4.8.
 //
 // Route (verified in shared/notes/toolchain.md): the worn triangles go into gmsh as discrete
-// surfaces, one per label, so label boundaries are edges of the model; `classifySurfaces`
-// splits them further where the normal turns by more than the feature angle and into
-// patches that a single map can parametrise; `createGeometry` builds that parametrisation;
-// a surface loop and a volume close the model; `generate(3)` remeshes surfaces and volume
-// with the sample's size field. New surface nodes lie on the old piecewise-linear surface,
-// so the new surface differs from the old only by chords across curved regions (second
-// order in the mesh size). Each patch takes the label that most of its input triangles
-// carry; with label-aligned input every patch is pure, and a mixed patch is reported.
+// surfaces, one per label, with the label boundaries as line elements of a discrete curve
+// (classifySurfaces keeps existing 1D elements as edges, not the surfaces' split);
+// `classifySurfaces` splits them further where the normal turns by more than the feature angle and
+// into patches that a single map can parametrise; `createGeometry` builds that parametrisation; a
+// surface loop and a volume close the model; `generate(3)` remeshes surfaces and volume with the
+// sample's size field. New surface nodes lie on the old piecewise-linear surface, so the new
+// surface differs from the old only by chords across curved regions (second order in the mesh
+// size). Each patch takes the label that most of its input triangles carry; with label-aligned
+// input every patch is pure, and a mixed patch is reported.
 #include "fem/remesher.h"
 
 #include "meshes/gmsh_session.h"
@@ -58,6 +59,24 @@ std::map<int, int> add_discrete_surfaces(const meshes::SurfaceMesh& worn) {
     gmsh::model::mesh::addElementsByType(tag, 2, elements, nodes);
   }
   return label_of;
+}
+
+// The edges between faces of different labels as one discrete curve of line elements.
+// classifySurfaces regroups all triangles by the feature angle alone, across the discrete
+// surfaces they came in, and only existing 1D elements stop it: without them, a wear face
+// rounded into a side below the feature angle joins the side's patch (707 to 2,428 faces
+// in the staged deformation run, every such remesh fell back to keeping the surface).
+void add_label_boundaries(const meshes::SurfaceMesh& worn) {
+  std::vector<std::size_t> lines, nodes;
+  for (const auto& [edge, faces] : meshes::edge_faces(worn))
+    if (faces.size() == 2 && worn.face_labels[faces[0]] != worn.face_labels[faces[1]]) {
+      lines.push_back(worn.n_faces() + lines.size() + 1); // element tags follow the faces'
+      nodes.push_back(edge.first + 1);
+      nodes.push_back(edge.second + 1);
+    }
+  const int tag = 1;
+  gmsh::model::addDiscreteEntity(1, tag);
+  gmsh::model::mesh::addElementsByType(tag, 1, lines, nodes);
 }
 
 } // namespace
@@ -158,6 +177,7 @@ meshes::SurfaceMesh mesh_discrete_volume(const meshes::SurfaceMesh& worn, const 
   auto label_of = add_discrete_surfaces(worn);
   r.n_mixed_faces = 0;
   if (algorithm != keep_surface) {
+    add_label_boundaries(worn);
     gmsh::model::mesh::classifySurfaces(feature_angle_deg * pi / 180, true, true, pi);
     label_of = patch_labels(worn, &r.n_mixed_faces);
     // A small worn region can end up inside a neighbour's patch and lose its label in the

@@ -297,6 +297,8 @@ WearStageReport WornSample::apply_wear(const meshes::FaceField<double>& removed)
       // The moved triangulation is discarded: only its surface (valid, checked above) is used.
       remaining.follow(moved);
       r.last_remesh = remesh_from(moved);
+      if (!r.last_remesh.failed_attempts.empty())
+        r.remesh_refusals.push_back(r.last_remesh.failed_attempts);
       ++r.n_remeshes;
       r.remesh_seconds += r.last_remesh.seconds;
       remaining = meshes::FaceTransfer(moved, surface()).apply(remaining);

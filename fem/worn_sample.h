@@ -46,7 +46,10 @@ struct WearStageReport {
   double worn_through_volume = 0;
   int n_worn_through = 0;   ///< faces worn through when the stage ended
   RemeshReport last_remesh; ///< valid when n_remeshes > 0
-  VolumeQuality quality;    ///< of the mesh handed on
+  /// RemeshReport::failed_attempts of each remesh in the stage that needed more than one
+  /// attempt (the refused inputs are kept beside the meshes)
+  std::vector<std::string> remesh_refusals;
+  VolumeQuality quality; ///< of the mesh handed on
   double motion_seconds = 0, remesh_seconds = 0;
 };
 

@@ -223,10 +223,13 @@ TEST_CASE("wear past the clamped bottom is recorded as worn through, not removed
 TEST_CASE("remeshing keeps every label's area when a label boundary crosses a flat face",
           "[fem][remesh]") {
   // In the staged deformation case a remesh relabelled a quarter of the sample's side area as
-  // wear face, down to the clamped bottom (the cause is not yet reproduced; remesh_sample now
-  // refuses an attempt with mixed patches or a label whose area changes by over 5 %). Here a
-  // label boundary runs through a flat top, where no feature angle separates the labels:
-  // half of the top carries the side label, and every label must keep its area.
+  // wear face, down to the clamped bottom: gmsh's classifySurfaces regroups the triangles by
+  // the feature angle alone, so where wear had rounded the edge between wear face and side
+  // below that angle the two joined one patch. remesh_sample now gives gmsh the label
+  // boundaries as line elements, which classification keeps. Here a label boundary runs
+  // through a flat top, where no feature angle separates the labels: half of the top carries
+  // the side label; the first attempt (the surface remeshed, not kept) must succeed and every
+  // label keep its area.
   const auto s = small_plain_plate(0.005, "mixed_label_sample.msh");
   WornSampleParameters p;
   p.remesh.sizes = s;
@@ -249,12 +252,16 @@ TEST_CASE("remeshing keeps every label's area when a label boundary crosses a fl
   RemeshReport r;
   const auto remeshed = remesh_sample(surface, p.remesh, "mixed_label.msh", &r);
   INFO("algorithm " << r.surface_algorithm << ", failed attempts:" << r.failed_attempts);
+  CHECK(r.failed_attempts.empty());
+  CHECK(r.surface_algorithm == p.remesh.surface_algorithm);
   CHECK(r.n_mixed_faces == 0);
   const auto before = wear::meshes::area_per_label(surface);
   const auto after = wear::meshes::area_per_label(remeshed);
   REQUIRE(after.size() == before.size());
   for (const auto& [label, area] : before) {
     INFO("label " << wear::meshes::label::name(label));
-    CHECK(std::abs(after.at(label) - area) < 1e-6 * area);
+    // The new boundary curve runs on the zigzag of old triangle edges but its nodes need not
+    // sit at every corner: chords cut corners by a few 1e-5 of a label's area.
+    CHECK(std::abs(after.at(label) - area) < 1e-3 * area);
   }
 }
