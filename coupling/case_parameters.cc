@@ -223,6 +223,10 @@ void visit(CaseParameters& c, Visitor&& v) {
            "[deg] Edges sharper than this are kept as edges when remeshing the worn surface.");
     v.real("Chord tolerance", f.chord_tolerance,
            "[m] Largest gap between the remeshed and the worn surface the size field aims at.");
+    v.real("Remesh tetrahedron quality", f.remesh_min_tet_quality,
+           "[-] A remesh attempt that leaves a tetrahedron of lower quality (6 sqrt(2) |V| / "
+           "l_max^3, 1 for a regular one) is refused and the next attempt tried; the last one, "
+           "which keeps the worn surface triangles, refuses only flat tetrahedra.");
     v.real("Worn-through thickness", f.worn_through_thickness,
            "[m] A wear face with a vertex closer than this to the sample's clamped bottom is worn "
            "through: no material is left there, so the wear asked of it is recorded "

@@ -123,6 +123,7 @@ fem::WornSampleParameters CoupledRun::worn_parameters() const {
   w.remesh.sizes = p_.geometry.sample;
   w.remesh.feature_angle_deg = p_.fem.feature_angle_deg;
   w.remesh.chord_tolerance = p_.fem.chord_tolerance;
+  w.remesh.min_tet_quality = p_.fem.remesh_min_tet_quality;
   w.mesh_directory = p_.output.directory + "/mesh";
   return w;
 }

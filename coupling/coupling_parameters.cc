@@ -103,6 +103,8 @@ void validate(const CouplingParameters& c, const FemParameters& f) {
   require(f.feature_angle_deg > 0 && f.feature_angle_deg < 180, "FEM/Feature angle",
           "must lie in (0, 180) degrees");
   require(f.chord_tolerance > 0, "FEM/Chord tolerance", "must be positive [m]");
+  require(f.remesh_min_tet_quality > 0 && f.remesh_min_tet_quality < 1,
+          "FEM/Remesh tetrahedron quality", "must lie in (0, 1)");
   require(f.worn_through_thickness > 0, "FEM/Worn-through thickness", "must be positive [m]");
 }
 

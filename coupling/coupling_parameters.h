@@ -49,6 +49,7 @@ struct FemParameters {
   double remesh_min_scaled_jacobian = 0.01; ///< [-]
   double feature_angle_deg = 60;            ///< [deg] sharp edges kept when remeshing
   double chord_tolerance = 0.02e-3;         ///< [m] of the remeshed surface
+  double remesh_min_tet_quality = 1e-3;     ///< [-] a remesh attempt below it is refused
   double worn_through_thickness = 1e-3;     ///< [m] wear faces this close to the bottom are gone
 };
 

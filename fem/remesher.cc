@@ -22,7 +22,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iomanip>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 
 namespace wear::fem {
@@ -226,9 +228,13 @@ meshes::SurfaceMesh mesh_discrete_volume(const meshes::SurfaceMesh& worn, const 
       meshes::gmsh_labelled_surface(&r.n_tetrahedra, &r.volume_after, &r.min_tet_quality);
   if (r.n_tetrahedra == 0)
     throw std::runtime_error("gmsh produced no tetrahedra");
-  if (!(r.min_tet_quality > 1e-8))
-    throw std::runtime_error("gmsh left a flat tetrahedron (quality " +
-                             std::to_string(r.min_tet_quality) + ")");
+  const double lowest = algorithm == keep_surface ? 1e-8 : p.min_tet_quality;
+  if (!(r.min_tet_quality > lowest)) {
+    std::ostringstream m;
+    m << std::setprecision(3) << "gmsh left a tetrahedron of quality " << r.min_tet_quality
+      << ", below " << lowest;
+    throw std::runtime_error(m.str());
+  }
   // gmsh can leave a patch it failed on partly meshed and still fill the volume: only a
   // closed boundary that encloses the worn volume is accepted.
   const auto closed = meshes::check_closed(remeshed);
@@ -268,6 +274,10 @@ meshes::SurfaceMesh remesh_sample(const meshes::SurfaceMesh& worn, const RemeshP
   if (!(p.feature_angle_deg > 0 && p.feature_angle_deg < 90))
     throw std::invalid_argument("FEM/Remeshing/feature angle must lie in (0, 90) deg, got " +
                                 std::to_string(p.feature_angle_deg));
+  if (!(p.min_tet_quality > 0 && p.min_tet_quality < 1))
+    throw std::invalid_argument(
+        "remeshing: the smallest tetrahedron quality must lie in (0, 1), got " +
+        std::to_string(p.min_tet_quality));
   RemeshReport r;
   // Relaxed flat sides hold non-Delaunay triangles, which a volume mesher that keeps them can
   // only fill with flat tetrahedra; flipping them is exact (the same planes).

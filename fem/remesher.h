@@ -23,6 +23,11 @@ struct RemeshParameters {
   double chord_tolerance = 0.02e-3;
   /// gmsh Mesh.Algorithm of the first attempt (6 frontal-Delaunay, 5 Delaunay, 1 MeshAdapt).
   int surface_algorithm = 6;
+  /// An attempt whose smallest tetrahedron quality (6 sqrt(2) |V| / l_max^3) is below this
+  /// is refused and the next one tried: a sliver spoils the stress near it, and mesh motion
+  /// would ask for a remesh again at once. The last attempt, which keeps the worn
+  /// triangles, refuses only flat tetrahedra (1e-8). [-]
+  double min_tet_quality = 1e-3;
 };
 
 struct RemeshReport {
