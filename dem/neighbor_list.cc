@@ -7,29 +7,22 @@
 // list is identical for any thread count.
 #include "dem/neighbor_list.h"
 
+#include "meshes/surface_mesh.h"
+
 #include <omp.h>
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace wear::dem {
 
 void NeighborList::build(const Particles& p, double skin) {
   const std::size_t n_real = p.n_real, n_all = p.position.size();
-  double r_max = 0;
-  Vec3 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
-          std::numeric_limits<double>::max()};
-  Vec3 hi = lo * -1.0;
-  for (std::size_t i = 0; i < n_all; ++i) {
-    r_max = std::max(r_max, p.radius[i]);
-    for (int d = 0; d < 3; ++d) {
-      lo[d] = std::min(lo[d], p.position[i][d]);
-      hi[d] = std::max(hi[d], p.position[i][d]);
-    }
-  }
+  const double r_max = *std::max_element(p.radius.begin(), p.radius.begin() + n_all);
+  const auto box = meshes::bounding_box(p.position.data(), n_all);
+  const Vec3 lo = box.min;
   double cell = 2 * r_max + skin;
-  const Vec3 ext = hi - lo;
+  const Vec3 ext = box.extent();
   // Bound the cell count by a few per particle for sparse or spread-out systems.
   while ((ext.x / cell + 1) * (ext.y / cell + 1) * (ext.z / cell + 1) > 8.0 * n_all + 64)
     cell *= 1.26;

@@ -24,6 +24,7 @@
 #include "dem/contact_law.h"
 #include "dem/pair_kernel.h"
 #include "dem/system.h"
+#include "meshes/surface_mesh.h"
 
 #include <omp.h>
 
@@ -258,20 +259,14 @@ void System::rebuild(bool in_step) {
 void System::sort_spatially() {
   auto& p = particles;
   const std::size_t n = p.n_real;
-  Vec3 lo = p.position[0], hi = p.position[0];
-  for (std::size_t i = 1; i < n; ++i)
-    for (int d = 0; d < 3; ++d) {
-      lo[d] = std::min(lo[d], p.position[i][d]);
-      hi[d] = std::max(hi[d], p.position[i][d]);
-    }
+  const auto box = meshes::bounding_box(p.position.data(), n);
+  const Vec3 lo = box.min, extent = box.extent();
   // Cells in lexicographic order with the longest axis slowest and the shortest fastest: a
   // cell's stencil then spans the fewest cells of the order (for a flat bed, plus or minus a
   // layer of columns instead of a whole horizontal layer), and the threads' contiguous ranges
   // meet across vertical planes instead of one horizontal plane through the whole bed.
   int axis[3] = {0, 1, 2};
-  std::sort(axis, axis + 3, [&](int a, int b) {
-    return hi[a] - lo[a] > hi[b] - lo[b] || (hi[a] - lo[a] == hi[b] - lo[b] && a < b);
-  });
+  std::stable_sort(axis, axis + 3, [&](int a, int b) { return extent[a] > extent[b]; });
   const double cell = 2 * r_max_ + skin_;
   std::vector<std::uint64_t> key(n);
   std::vector<std::uint32_t> perm(n);

@@ -168,6 +168,9 @@ std::map<int, int> patch_labels(const meshes::SurfaceMesh& worn, std::size_t* n_
   return label_of;
 }
 constexpr int keep_surface = 0; // attempt that keeps the input triangles, meshing the volume only
+// Quality below which a tetrahedron counts as flat: the floor of the keep_surface attempt,
+// which has no other attempt to fall back to.
+constexpr double flat_tet_quality = 1e-8;
 
 // One attempt: the discrete model, its parametrisation and the volume mesh with the given
 // 2D algorithm, written to msh_path. Fills the patch and mesh counts of r.
@@ -228,7 +231,7 @@ meshes::SurfaceMesh mesh_discrete_volume(const meshes::SurfaceMesh& worn, const 
       meshes::gmsh_labelled_surface(&r.n_tetrahedra, &r.volume_after, &r.min_tet_quality);
   if (r.n_tetrahedra == 0)
     throw std::runtime_error("gmsh produced no tetrahedra");
-  const double lowest = algorithm == keep_surface ? 1e-8 : p.min_tet_quality;
+  const double lowest = algorithm == keep_surface ? flat_tet_quality : p.min_tet_quality;
   if (!(r.min_tet_quality > lowest)) {
     std::ostringstream m;
     m << std::setprecision(3) << "gmsh left a tetrahedron of quality " << r.min_tet_quality

@@ -118,12 +118,16 @@ std::vector<Vec3> vertex_normals(const SurfaceMesh& m) {
 }
 
 BoundingBox bounding_box(const SurfaceMesh& m) {
+  return bounding_box(m.vertices.data(), m.vertices.size());
+}
+
+BoundingBox bounding_box(const Vec3* points, std::size_t n) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   BoundingBox b{{inf, inf, inf}, {-inf, -inf, -inf}};
-  for (const auto& p : m.vertices)
+  for (std::size_t i = 0; i < n; ++i)
     for (int d = 0; d < 3; ++d) {
-      b.min[d] = std::min(b.min[d], p[d]);
-      b.max[d] = std::max(b.max[d], p[d]);
+      b.min[d] = std::min(b.min[d], points[i][d]);
+      b.max[d] = std::max(b.max[d], points[i][d]);
     }
   return b;
 }

@@ -83,6 +83,8 @@ std::vector<Vec3> face_centroids(const SurfaceMesh& m);             ///< [m]
 /// Area-weighted average of the normals of the faces around each vertex, normalised.
 std::vector<Vec3> vertex_normals(const SurfaceMesh& m);
 BoundingBox bounding_box(const SurfaceMesh& m);
+/// Of points[0, n); for n = 0, min is +inf and max -inf.
+BoundingBox bounding_box(const Vec3* points, std::size_t n);
 double total_area(const SurfaceMesh& m);                    ///< [m^2]
 std::map<int, double> area_per_label(const SurfaceMesh& m); ///< [m^2]
 
