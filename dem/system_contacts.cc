@@ -9,8 +9,12 @@
 // particle with the lower stable id sits at its real position ("canonical frame"). A pair
 // computed with a ghost of that particle lives in a frame rotated by -angle, so its history
 // is rotated by +angle into the canonical frame and back; a wrap of that particle rotates the
-// canonical frame with it. Keys are stable ids, so the periodic spatial reordering of the
-// particle arrays (for cache locality) keeps every history. Wall histories are kept in fixed slots
+// canonical frame with it. A history is the tangential displacement of the listed first
+// particle relative to the second, so it is stored oriented from the lower id to the higher
+// (negated when listed the other way) and re-oriented to the new list: the spatial reordering
+// and a wrap across the cut change which of the two is listed first. Keys are stable ids, so
+// the periodic spatial reordering of the particle arrays (for cache locality) keeps every
+// history. Wall histories are kept in fixed slots
 // per particle and matched by wall and contact normal (within about 25 degrees), so sliding across
 // triangle boundaries of a smooth or flat wall keeps the history. Contacts of one wall whose
 // normals lie within 25 degrees are merged into the deepest: on a finely tessellated concave
@@ -56,8 +60,8 @@ void System::rebuild(bool in_step) {
   const bool periodic = settings.periodic.enabled;
   const double c = cos_t_, s = sin_t_;
 
-  // 1. Old histories into the canonical frame (that of the particle with the lower stable
-  //    id), keyed by the two ids, so they survive wrapping and reordering.
+  // 1. Old histories into the canonical frame and orientation (those of the particle with
+  //    the lower stable id), keyed by the two ids, so they survive wrapping and reordering.
   struct Entry {
     std::uint64_t key;
     std::uint32_t lower; // current index of the lower-id particle
@@ -79,7 +83,7 @@ void System::rebuild(bool in_step) {
         const bool ghost = j >= n;
         const std::uint32_t b = ghost ? ghost_owner_[j - n] : j;
         const auto id_i = std::uint64_t(p.id[i]), id_b = std::uint64_t(p.id[b]);
-        Vec3 h = pair_history_[k];
+        Vec3 h = id_b < id_i ? -pair_history_[k] : pair_history_[k];
         if (ghost && id_b < id_i)
           h = rotate_z(h, c, s);
         mine.push_back(
@@ -195,7 +199,8 @@ void System::rebuild(bool in_step) {
       const std::size_t lower = std::min(id_i, id_b);
       for (auto q = bucket[lower]; q < bucket[lower + 1]; ++q)
         if (by_id[q].key == key) {
-          pair_history_[k] = ghost && id_b < id_i ? rotate_z(by_id[q].h, c, -s) : by_id[q].h;
+          const Vec3 h = id_b < id_i ? -by_id[q].h : by_id[q].h;
+          pair_history_[k] = ghost && id_b < id_i ? rotate_z(h, c, -s) : h;
           break;
         }
     }

@@ -28,6 +28,27 @@ Particles settled_box(int n_steps) {
   s.run(n_steps);
   return s.particles;
 }
+
+// 1200 gravel particles (8 and 10 mm) in a 30-degree periodic tester sector with rotating
+// walls, on two threads; with `from`, the particles where that state has them, as
+// WearTester::restore does, so the set-up system already has contacts (and forces) of its own.
+void make_periodic_sector(System& s, const SystemState* from) {
+  const int g = add_gravel(s, 0.5, 0.5, 0.1);
+  add_periodic_tester_sector(s, g, 30, false);
+  SizeDistribution psd{{8e-3, 10e-3}, {0.5, 0.5}, 1.0};
+  if (from)
+    for (std::size_t i = 0; i < from->position.size(); ++i) {
+      s.particles.add(from->position[i], from->velocity[i], from->radius[i], 2650,
+                      from->material[i]);
+      s.particles.id.back() = from->id[i];
+    }
+  else
+    insert_random(s.particles, annular_sector_region(0.29, 0.5, 30 * pi / 180, 0, 0.05, 5.1e-3),
+                  psd, 1200, 2650, g, 11);
+  omp_set_num_threads(2); // setup() takes OpenMP's thread count
+  s.setup();
+  omp_set_num_threads(omp_get_num_procs());
+}
 } // namespace
 
 TEST_CASE("energy is conserved without damping and friction", "[dem][energy]") {
@@ -205,32 +226,14 @@ TEST_CASE("an exported state continues bit for bit in a freshly set-up system",
   // As the coupler does at a stage boundary (export, import into the same system) and after a
   // restart (import into a new one): a periodic sector with rotating walls, on two threads,
   // so ghosts, wraps, wall slots and the per-thread force sums all cross the boundary.
-  const auto make = [](System& s, const SystemState* from) {
-    const int g = add_gravel(s, 0.5, 0.5, 0.1);
-    add_periodic_tester_sector(s, g, 30, false);
-    SizeDistribution psd{{8e-3, 10e-3}, {0.5, 0.5}, 1.0};
-    if (from) // as WearTester::restore: the particles where the state has them, so the
-              // set-up system already has contacts (and forces) of its own
-      for (std::size_t i = 0; i < from->position.size(); ++i) {
-        s.particles.add(from->position[i], from->velocity[i], from->radius[i], 2650,
-                        from->material[i]);
-        s.particles.id.back() = from->id[i];
-      }
-    else
-      insert_random(s.particles, annular_sector_region(0.29, 0.5, 30 * pi / 180, 0, 0.05, 5.1e-3),
-                    psd, 1200, 2650, g, 11);
-    omp_set_num_threads(2); // setup() takes OpenMP's thread count
-    s.setup();
-    omp_set_num_threads(omp_get_num_procs());
-  };
   System a;
-  make(a, nullptr);
+  make_periodic_sector(a, nullptr);
   a.run(4000); // settled: the bed rests on the floor, and its contacts cross the boundary
   const SystemState boundary = a.export_state();
   a.import_state(boundary);
   a.run(300);
   System b;
-  make(b, &boundary);
+  make_periodic_sector(b, &boundary);
   b.import_state(boundary);
   b.run(300);
   const auto sa = a.export_state(), sb = b.export_state();
@@ -243,6 +246,44 @@ TEST_CASE("an exported state continues bit for bit in a freshly set-up system",
   CHECK(sa.force == sb.force);
   CHECK(sa.pair_history == sb.pair_history);
   CHECK(sa.slot_delta == sb.slot_delta);
+}
+
+TEST_CASE("a tangential history belongs to the pair and not to its listed order",
+          "[dem][determinism]") {
+  // The history of pair (i, j) is the tangential displacement of i relative to j: listed as
+  // (j, i) it is the negative. The spatial sort renumbers particles every tenth rebuild and a
+  // wrap across the periodic cut turns a real pair into a ghost pair, so a rebuild must carry
+  // each history over with the orientation of the new list. Here the same settled state is
+  // imported once as listed and once with every real pair listed the other way round (and
+  // its history negated): the same physical state, so the same forces, bit for bit.
+  System s;
+  make_periodic_sector(s, nullptr);
+  s.run(4000);
+  const SystemState as_listed = s.export_state();
+  SystemState reversed = as_listed;
+  const std::size_t n = as_listed.position.size();
+  std::size_t n_reversed_with_history = 0;
+  for (std::size_t k = 0; k < reversed.pair_i.size(); ++k)
+    if (reversed.pair_j[k] < n) {
+      std::swap(reversed.pair_i[k], reversed.pair_j[k]);
+      reversed.pair_history[k] = -reversed.pair_history[k];
+      n_reversed_with_history += wear::meshes::norm(reversed.pair_history[k]) > 0;
+    }
+  REQUIRE(n_reversed_with_history > 300);
+  s.import_state(as_listed);
+  s.run(1);
+  const SystemState a = s.export_state();
+  s.import_state(reversed);
+  s.run(1);
+  const SystemState b = s.export_state();
+  REQUIRE(a.pair_i == b.pair_i);
+  std::size_t n_force_differ = 0, n_history_differ = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    n_force_differ += !(a.force[i] == b.force[i] && a.torque[i] == b.torque[i]);
+  for (std::size_t k = 0; k < a.pair_history.size(); ++k)
+    n_history_differ += !(a.pair_history[k] == b.pair_history[k]);
+  CHECK(n_force_differ == 0);
+  CHECK(n_history_differ == 0);
 }
 
 TEST_CASE("bad input stops with a message naming the problem", "[dem][errors]") {
