@@ -42,6 +42,16 @@ inline Vec3 rotate_z(const Vec3& v, double c, double s) {
   return {c * v.x - s * v.y, s * v.x + c * v.y, v.z};
 }
 
+/// A pair history between its listing (i, j) and the canonical frame and orientation (those
+/// of the lower-id particle): with s = sin(angle) from the listing to canonical, with -s
+/// back. Nothing changes when the lower id is listed first; listed second, the history is
+/// negated, and rotated by the sector angle when that particle is present as a ghost.
+inline Vec3 reorient_history(const Vec3& h, bool lower_second, bool ghost, double c, double s) {
+  if (!lower_second)
+    return h;
+  return ghost ? rotate_z(-h, c, s) : -h;
+}
+
 /// A particle-wall contact found on a candidate face, before merging.
 struct Candidate {
   ClosestFeature feature;
@@ -83,9 +93,7 @@ void System::rebuild(bool in_step) {
         const bool ghost = j >= n;
         const std::uint32_t b = ghost ? ghost_owner_[j - n] : j;
         const auto id_i = std::uint64_t(p.id[i]), id_b = std::uint64_t(p.id[b]);
-        Vec3 h = id_b < id_i ? -pair_history_[k] : pair_history_[k];
-        if (ghost && id_b < id_i)
-          h = rotate_z(h, c, s);
+        const Vec3 h = reorient_history(pair_history_[k], id_b < id_i, ghost, c, s);
         mine.push_back(
             {(std::min(id_i, id_b) << 32) | std::max(id_i, id_b), id_b < id_i ? b : i, h});
       }
@@ -199,8 +207,7 @@ void System::rebuild(bool in_step) {
       const std::size_t lower = std::min(id_i, id_b);
       for (auto q = bucket[lower]; q < bucket[lower + 1]; ++q)
         if (by_id[q].key == key) {
-          const Vec3 h = id_b < id_i ? -by_id[q].h : by_id[q].h;
-          pair_history_[k] = ghost && id_b < id_i ? rotate_z(h, c, -s) : h;
+          pair_history_[k] = reorient_history(by_id[q].h, id_b < id_i, ghost, c, -s);
           break;
         }
     }
