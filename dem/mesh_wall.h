@@ -57,6 +57,15 @@ public:
     return std::abs(meshes::dot(c - corners_[f][0], normal_[f]));
   }
 
+  /// True when no point of triangle f lies closer to c than r: c is at least r beyond the
+  /// triangle's bounding sphere (centred on its centroid). It rejects the candidates whose
+  /// plane passes near c but which lie elsewhere on a curved surface, before the
+  /// closest-point search.
+  bool beyond_bound(std::uint32_t f, const Vec3& c, double r) const {
+    const double reach = r + bound_radius_[f];
+    return meshes::norm2(c - bound_centre_[f]) >= reach * reach;
+  }
+
   /// Closest point of triangle f to c (meshes::closest_point_on_triangle).
   ClosestFeature closest(std::uint32_t f, const Vec3& c) const;
 
@@ -92,6 +101,8 @@ private:
   std::string name_;
   std::vector<std::array<Vec3, 3>> corners_;
   std::vector<Vec3> normal_;
+  std::vector<Vec3> bound_centre_;   ///< [m] centroid of face f
+  std::vector<double> bound_radius_; ///< [m] largest centroid-corner distance, slightly widened
   std::vector<std::array<std::uint32_t, 3>> face_edge_; // edge k of face f: global id
   std::vector<std::array<std::uint32_t, 2>> edge_face_; // adjacent faces (second = ~0u: none)
   std::vector<std::array<std::uint32_t, 2>> edge_vertex_;

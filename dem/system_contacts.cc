@@ -212,12 +212,16 @@ void System::rebuild(bool in_step) {
         }
     }
   }
-  // 6. Wall candidates: faces within radius + skin of each particle centre.
+  // 6. Wall candidates: faces within radius + skin/2 of each particle centre. Until the next
+  //    rebuild no particle moves more than skin/2 from here (the rebuild trigger), and wall
+  //    geometry changes only through set_wall_vertices, which rebuilds; so no other face can
+  //    be touched. (A pair needs the whole skin: both partners move.) Widened by a relative
+  //    1e-9 against round-off.
   wall_candidate_offset_.assign(n + 1, 0);
   std::vector<std::uint32_t> count(n, 0);
   const auto scan = [&](std::size_t i, auto&& emit) {
     const Vec3& x = p.position[i];
-    const double reach = p.radius[i] + skin_;
+    const double reach = (p.radius[i] + 0.5 * skin_) * (1 + 1e-9);
     for (std::size_t w = 0; w < walls_.size(); ++w) {
       auto [b, e] = walls_[w].candidates(x);
       for (; b != e; ++b)
@@ -429,7 +433,7 @@ void System::wall_forces(int thread, Vec3* F, Vec3* T) {
     for (auto k = b; k < e && !overflow; ++k) {
       const std::uint32_t w = wall_candidate_[k] >> 24, f = wall_candidate_[k] & 0xFFFFFFu;
       const MeshWall& wall = walls_[w];
-      if (wall.plane_distance(f, x) >= r)
+      if (wall.plane_distance(f, x) >= r || wall.beyond_bound(f, x, r))
         continue;
       const ClosestFeature cf = wall.closest(f, x);
       const Vec3 d = x - cf.point;

@@ -1,0 +1,85 @@
+#!/usr/bin/python3
+"""Steady-state wear of several wear-tester runs side by side (the mesh-size study).
+
+Usage: /usr/bin/python3 cases/mesh-size/mesh_size_report.py <run> [<run> ...]
+
+Reads each run's summary.csv (`wearsim run` or `wearsim dem`) and prints a Markdown table:
+the mean over the revolutions after steady state of the wear-face wear, its per-column
+wear, the mean wear increment per convex element and the normal force, each with its
+standard error over those revolutions (std / sqrt(n)), and every run's ratio to the first.
+Steady state is the run's own judgement, or revolution 2 when it never judged itself steady
+(the reference runs were steady from revolution 2 to 4). A difference between two runs is
+within their scatter when it is below about twice the combined standard errors.
+"""
+import csv
+import math
+import os
+import sys
+
+FALLBACK_STEADY = 2
+MM3 = 1e9
+
+
+def read(run):
+    path = os.path.join(run, "summary.csv")
+    if not os.path.isfile(path):
+        sys.exit(f"mesh_size_report: '{path}' does not exist (is '{run}' a finished run?)")
+    with open(path) as f:
+        rows = list(csv.DictReader(f))
+    if not rows:
+        sys.exit(f"mesh_size_report: '{path}' has no revolution yet")
+    return rows
+
+
+def after_steady(rows):
+    s = int(float(rows[-1]["steady_revolution"]))
+    s = s if s > 0 else min(FALLBACK_STEADY, len(rows) - 1)
+    return s, [r for r in rows if int(r["revolution"]) > s]
+
+
+def mean_se(values):
+    n = len(values)
+    m = sum(values) / n
+    if n < 2:
+        return m, float("nan")
+    var = sum((v - m) ** 2 for v in values) / (n - 1)
+    return m, math.sqrt(var / n)
+
+
+def main():
+    runs = sys.argv[1:]
+    if not runs:
+        sys.exit(__doc__)
+    quantities = [("wear per revolution [mm^3]", "wear_volume_m3", MM3)]
+    quantities += [(f"column {c} [mm^3]", f"column{c}_wear_m3", MM3) for c in range(1, 6)]
+    quantities += [
+        ("element increment dv [mm^3]", "mean_element_increment_m3", MM3),
+        ("normal force [N]", "normal_force_mean_N", 1.0),
+        ("sides and bottom [mm^3]", "wear_volume_other_m3", MM3),
+    ]
+    stats, header = [], []
+    for run in runs:
+        rows = read(run)
+        s, tail = after_steady(rows)
+        if not tail:
+            sys.exit(f"mesh_size_report: '{run}' has no revolution after steady state ({s})")
+        header.append(f"revolutions {s + 1}-{rows[-1]['revolution']}")
+        stats.append({key: mean_se([float(r[key]) * scale for r in tail])
+                      for _, key, scale in quantities})
+    names = [os.path.basename(os.path.normpath(r)) for r in runs]
+    print("| | " + " | ".join(names) + " | " +
+          " | ".join(f"{n} / {names[0]}" for n in names[1:]) + " |")
+    print("|---" * (1 + 2 * len(runs) - 1) + "|")
+    print("| after steady state | " + " | ".join(header) + " |" + " |" * (len(runs) - 1))
+    for label, key, _ in quantities:
+        base = stats[0][key][0]
+        cells = [f"{st[key][0]:.3g}" + (f" ± {st[key][1]:.2g}" if st[key][1] == st[key][1] else "")
+                 for st in stats]
+        if all(st[key][0] == 0 for st in stats):
+            continue  # a plain sample has no elements
+        ratios = [f"{st[key][0] / base:.3f}" if base else "" for st in stats[1:]]
+        print(f"| {label} | " + " | ".join(cells + ratios) + " |")
+
+
+if __name__ == "__main__":
+    main()
