@@ -9,6 +9,7 @@
 #include <omp.h>
 
 #include <fstream>
+#include <random>
 
 using namespace wear::dem;
 using namespace wear::dem::testing;
@@ -393,4 +394,40 @@ TEST_CASE("a finely tessellated concave wall gives one Hertz contact", "[dem][wa
   const Vec3 f = s.particles.force[0];
   CHECK(norm(f) == Approx(f_hertz).epsilon(1e-9));
   CHECK(dot(f, out) == Approx(-f_hertz).epsilon(1e-9));
+}
+
+TEST_CASE("the wall's cheap rejections never drop a face within reach", "[dem][walls]") {
+  // The step rejects a candidate face by the distance to its plane and then by the distance to
+  // its bounding sphere before the closest-point search. Both are lower bounds of the true
+  // distance, so a rejected face must lie at least r from the centre. Points around a finely
+  // tessellated cylinder (convex, 1-degree chords, 1 mm along the axis), where many faces'
+  // planes pass near a sphere that touches the cylinder elsewhere.
+  const double R = 0.02;
+  const auto mesh = wear::meshes::structured_grid(
+      360, 20,
+      [&](double u, double v) {
+        const double th = 2 * pi * u;
+        return Vec3{0.02 * v, R * std::cos(th), R * std::sin(th)};
+      },
+      false, wear::meshes::label::wall);
+  const MeshWall wall(mesh, 0, {}, false, "cylinder");
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(0, 1);
+  int n_wrong = 0, n_sphere_only = 0, n_touching = 0;
+  for (int k = 0; k < 200; ++k) {
+    const double th = 2 * pi * unit(rng), rho = R + 0.01 * unit(rng);
+    const Vec3 x{0.02 * unit(rng), rho * std::cos(th), rho * std::sin(th)};
+    const double r = 1e-3 + 6e-3 * unit(rng);
+    for (std::uint32_t f = 0; f < mesh.n_faces(); ++f) {
+      const bool by_plane = wall.plane_distance(f, x) >= r;
+      const bool by_sphere = wall.beyond_bound(f, x, r);
+      const bool touching = norm(wall.closest(f, x).point - x) < r;
+      n_wrong += (by_plane || by_sphere) && touching;
+      n_sphere_only += by_sphere && !by_plane;
+      n_touching += touching;
+    }
+  }
+  CHECK(n_wrong == 0);
+  CHECK(n_touching > 0);
+  CHECK(n_sphere_only > n_touching); // the sphere test does reject what the plane test passes
 }
