@@ -11,10 +11,14 @@ Steady state is the run's own judgement, or revolution 2 when it never judged it
 (the reference runs were steady from revolution 2 to 4). A difference between two runs is
 within their scatter when it is below about twice the combined standard errors.
 """
-import csv
 import math
 import os
 import sys
+
+# The steady-state rule and the summary reader of the reference report, so both reports
+# agree on which revolutions count.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../docs/results"))
+from dem_reference_report import read as read_summary, steady_from  # noqa: E402
 
 FALLBACK_STEADY = 2
 MM3 = 1e9
@@ -24,16 +28,14 @@ def read(run):
     path = os.path.join(run, "summary.csv")
     if not os.path.isfile(path):
         sys.exit(f"mesh_size_report: '{path}' does not exist (is '{run}' a finished run?)")
-    with open(path) as f:
-        rows = list(csv.DictReader(f))
+    rows = read_summary(run)
     if not rows:
         sys.exit(f"mesh_size_report: '{path}' has no revolution yet")
     return rows
 
 
 def after_steady(rows):
-    s = int(float(rows[-1]["steady_revolution"]))
-    s = s if s > 0 else min(FALLBACK_STEADY, len(rows) - 1)
+    s, _ = steady_from(rows, FALLBACK_STEADY)
     return s, [r for r in rows if int(r["revolution"]) > s]
 
 
@@ -63,8 +65,8 @@ def main():
         s, tail = after_steady(rows)
         if not tail:
             sys.exit(f"mesh_size_report: '{run}' has no revolution after steady state ({s})")
-        header.append(f"revolutions {s + 1}-{rows[-1]['revolution']}")
-        stats.append({key: mean_se([float(r[key]) * scale for r in tail])
+        header.append(f"revolutions {s + 1}-{int(rows[-1]['revolution'])}")
+        stats.append({key: mean_se([r[key] * scale for r in tail])
                       for _, key, scale in quantities})
     names = [os.path.basename(os.path.normpath(r)) for r in runs]
     print("| | " + " | ".join(names) + " | " +
@@ -73,10 +75,10 @@ def main():
     print("| after steady state | " + " | ".join(header) + " |" + " |" * (len(runs) - 1))
     for label, key, _ in quantities:
         base = stats[0][key][0]
-        cells = [f"{st[key][0]:.3g}" + (f" ± {st[key][1]:.2g}" if st[key][1] == st[key][1] else "")
-                 for st in stats]
         if all(st[key][0] == 0 for st in stats):
             continue  # a plain sample has no elements
+        cells = [f"{m:.3g}" + ("" if math.isnan(se) else f" ± {se:.2g}")
+                 for m, se in (st[key] for st in stats)]
         ratios = [f"{st[key][0] / base:.3f}" if base else "" for st in stats[1:]]
         print(f"| {label} | " + " | ".join(cells + ratios) + " |")
 
