@@ -100,6 +100,11 @@ public:
   std::size_t n_ghosts() const { return ghost_owner_.size(); }
   std::size_t n_wall_particles() const { return wall_particles_.size(); }  ///< near a wall
   std::size_t n_wall_candidates() const { return wall_candidate_.size(); } ///< faces listed
+  /// Faces listed for particle i at the last rebuild, each (wall << 24) | face.
+  std::pair<const std::uint32_t*, const std::uint32_t*> wall_candidates(std::size_t i) const {
+    return {wall_candidate_.data() + wall_candidate_offset_.at(i),
+            wall_candidate_.data() + wall_candidate_offset_.at(i + 1)};
+  }
   Energy energy() const;
   /// Bytes held per particle by the engine's arrays, excluding contact history.
   double bytes_per_particle() const;
