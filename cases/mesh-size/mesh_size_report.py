@@ -18,7 +18,7 @@ import sys
 # The steady-state rule and the summary reader of the reference report, so both reports
 # agree on which revolutions count.
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../docs/results"))
-from dem_reference_report import read as read_summary, steady_from  # noqa: E402
+from dem_reference_report import mean_se, read as read_summary, steady_from  # noqa: E402
 
 FALLBACK_STEADY = 2
 MM3 = 1e9
@@ -37,15 +37,6 @@ def read(run):
 def after_steady(rows):
     s, _ = steady_from(rows, FALLBACK_STEADY)
     return s, [r for r in rows if int(r["revolution"]) > s]
-
-
-def mean_se(values):
-    n = len(values)
-    m = sum(values) / n
-    if n < 2:
-        return m, float("nan")
-    var = sum((v - m) ** 2 for v in values) / (n - 1)
-    return m, math.sqrt(var / n)
 
 
 def main():

@@ -8,32 +8,27 @@ v) or the wear per unit of flow (wear / (F_n v), in mm^3 per revolution per N m/
 usage: ensemble_report.py <run dir> ...   (directories named <kind>-<seed>, as
        cases/quick/ensemble.sh writes them; each holds summary.csv)
 """
-import csv
-import math
 import os
 import statistics
 import sys
+
+# The summary reader and the mean with its standard error of the other study reports.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../docs/results"))
+from dem_reference_report import mean_se, read as read_summary  # noqa: E402
 
 
 def read(run):
     path = os.path.join(run, "summary.csv")
     if not os.path.isfile(path):
         sys.exit(f"ensemble_report: {path} not found (has the run finished?)")
-    rows = list(csv.DictReader(open(path)))
+    rows = read_summary(run)
     if not rows:
         sys.exit(f"ensemble_report: {path} has no revolutions")
-    mean = lambda key: statistics.mean(float(r[key]) for r in rows)
+    mean = lambda key: statistics.mean(r[key] for r in rows)
     wear = mean("wear_volume_m3") * 1e9  # [mm^3] per revolution
     speed = mean("bottom_speed_mean_m_s")  # [m/s]
     force = mean("normal_force_mean_N")  # [N]
-    return {"wear": wear, "speed": speed, "force": force, "per_flow": wear / (force * speed),
-            "n": len(rows)}
-
-
-def mean_se(values):
-    m = statistics.mean(values)
-    se = statistics.stdev(values) / math.sqrt(len(values)) if len(values) > 1 else float("nan")
-    return m, se
+    return {"wear": wear, "speed": speed, "force": force, "per_flow": wear / (force * speed)}
 
 
 def main(runs):

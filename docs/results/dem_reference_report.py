@@ -9,6 +9,7 @@ run's own judgement; when a run never judged itself steady, from its 'steady_fro
 (the revolution after which the fits start, reported in the table).
 """
 import csv
+import math
 import os
 import sys
 
@@ -28,6 +29,15 @@ def read(run):
             except ValueError:
                 pass
     return rows
+
+
+def mean_se(values):
+    """Mean and standard error (sample std / sqrt(n)); the error is NaN for one value."""
+    n = len(values)
+    m = sum(values) / n
+    if n < 2:
+        return m, float("nan")
+    return m, math.sqrt(sum((v - m) ** 2 for v in values) / (n - 1) / n)
 
 
 def fits(x, y):
