@@ -402,6 +402,9 @@ void CoupledRun::update_geometry(const meshes::FaceField<double>& removed, Stage
   r.min_scaled_jacobian = report.quality.min_scaled_jacobian;
   r.motion_seconds = report.motion_seconds;
   r.remesh_seconds = report.remesh_seconds;
+  if (report.n_relaxation_halvings > 0)
+    log_ << "stage " << r.stage << ": the surface relaxation alone folded the surface and was "
+         << "halved " << report.n_relaxation_halvings << " time(s)\n";
   for (const auto& refusal : report.remesh_refusals)
     log_ << "stage " << r.stage << ": a remesh needed more than one attempt; refused:" << refusal
          << '\n';

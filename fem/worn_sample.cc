@@ -8,21 +8,23 @@
 // surface would hold a degenerate, inverted (normal turned by more than 90 deg) or
 // self-intersecting face, the stage is split in two and tried again, because an offset along vertex
 // normals folds where the depth exceeds the local radius of curvature, and smaller steps on the
-// updated surface follow the receding front instead. Where even small steps fold (a tip
-// sharpened by wear on one flank: the fronts of its two flanks meet), the remaining wear is
-// spread over the fold's neighbourhood (meshes::spread_removed_volume, total kept), so the tip
-// recedes as a whole instead of being cut into a sliver. The interior follows (move_mesh); if a
-// cell inverts or the smallest scaled Jacobian drops below the threshold, the moved surface is
-// remeshed (remesh_sample) and the enclosed volume the new chords cut off is given back by a
-// uniform normal offset of the wear face, so volume is conserved across remeshing to round-off of
-// the secant (the wear record is the volume, not the chord geometry). Accumulated fields follow the
-// faces while the topology is kept and are transferred (FaceTransfer: extensive per label, exactly;
-// intensive by area) across a remesh.
-// A wearing face with a vertex within `worn_through_thickness` of the clamped bottom is worn
-// through: the model has no material left there (a hole would change the topology), so the
-// wear asked of it is recorded as worn-through volume instead of removed, and the stage ends
-// with volume change = asked - worn through. Increments that would take a vertex more than
-// halfway through that layer are split like folding ones.
+// updated surface follow the receding front instead. If the relaxation alone already folds the
+// surface (large umbrella offsets beside the small triangles of a graded remesh), no smaller step
+// helps: it is halved for the rest of the stage, and turned off after six halvings. Where even
+// small steps fold (a tip sharpened by wear on one flank: the fronts of its two flanks meet), the
+// remaining wear is spread over the fold's neighbourhood (meshes::spread_removed_volume, total
+// kept), so the tip recedes as a whole instead of being cut into a sliver. The interior follows
+// (move_mesh); if a cell inverts or the smallest scaled Jacobian drops below the threshold, the
+// moved surface is remeshed (remesh_sample) and the enclosed volume the new chords cut off is given
+// back by a uniform normal offset of the wear face, so volume is conserved across remeshing to
+// round-off of the secant (the wear record is the volume, not the chord geometry). Accumulated
+// fields follow the faces while the topology is kept and are transferred (FaceTransfer: extensive
+// per label, exactly; intensive by area) across a remesh. A wearing face with a vertex within
+// `worn_through_thickness` of the clamped bottom is worn through: the model has no material left
+// there (a hole would change the topology), so the wear asked of it is recorded as worn-through
+// volume instead of removed, and the stage ends with volume change = asked - worn through.
+// Increments that would take a vertex more than halfway through that layer are split like folding
+// ones.
 #include "fem/worn_sample.h"
 
 #include "fem/sample_triangulation.h"
@@ -130,12 +132,12 @@ WornSample::WornSample(const WornSampleState& st, const WornSampleParameters& p)
   n_remeshes_ = st.n_remeshes;
 }
 
-WornSampleState WornSample::state() const {
+WornSampleState triangulation_state(const dealii::Triangulation<3>& tria) {
   WornSampleState st;
-  for (const auto& v : tria_->get_vertices())
+  for (const auto& v : tria.get_vertices())
     for (int d = 0; d < 3; ++d)
       st.vertices.push_back(v[d]);
-  for (const auto& cell : tria_->active_cell_iterators()) {
+  for (const auto& cell : tria.active_cell_iterators()) {
     for (unsigned int k = 0; k < 4; ++k)
       st.tetrahedra.push_back(cell->vertex_index(k));
     for (const auto f : cell->face_indices())
@@ -145,6 +147,14 @@ WornSampleState WornSample::state() const {
         st.boundary_ids.push_back(int(cell->face(f)->boundary_id()));
       }
   }
+  st.surface = extract_boundary_surface(tria);
+  st.removed_volume.assign(st.surface.n_faces(), 0);
+  st.wear_depth.assign(st.surface.n_faces(), 0);
+  return st;
+}
+
+WornSampleState WornSample::state() const {
+  WornSampleState st = triangulation_state(*tria_);
   st.surface = surface();
   st.removed_volume = removed_.values();
   st.wear_depth = depth_.values();
@@ -173,6 +183,11 @@ WearStageReport WornSample::apply_wear(const meshes::FaceField<double>& removed)
     r.removed_volume += remaining[f];
   }
   int n_left = 1, halvings = 0, spreadings = 0;
+  // Fraction of the relaxations applied. The umbrella offsets of a graded mesh (a remesh
+  // refines where the surface curves) can be large next to small triangles, and moving every
+  // vertex at once can turn one of them over whatever the increment; then the relaxation, not
+  // the recession, folds the surface, and it is halved for the rest of the stage.
+  double relax = 1;
   while (n_left > 0) {
     const auto& s = surface();
     // Faces worn down to the clamped bottom have no material left: what is asked of them is
@@ -208,9 +223,9 @@ WearStageReport WornSample::apply_wear(const meshes::FaceField<double>& removed)
     // Cutting spikes must stay a small part of the increment (its volume is given back in
     // the recession only up to the increment's own volume); otherwise relax tangentially only.
     for (const double spike_cos : {-0.9, -2.0}) {
-      displacement = tangential_relaxation(s, worn_vertex, 0.5, spike_cos);
+      displacement = tangential_relaxation(s, worn_vertex, 0.5 * relax, spike_cos);
       for (std::size_t v = 0; v < displacement.size(); ++v)
-        displacement[v] += unworn[v];
+        displacement[v] += unworn[v] * relax;
       candidate = s;
       for (std::size_t v = 0; v < candidate.n_vertices(); ++v)
         candidate.vertices[v] += displacement[v];
@@ -222,6 +237,7 @@ WearStageReport WornSample::apply_wear(const meshes::FaceField<double>& removed)
     if (part_sum > 0)
       for (auto& v : recede)
         v *= std::max(0.0, 1 - relaxation_loss / part_sum);
+    const meshes::SurfaceMesh relaxed = candidate;
     const auto rec = compute_recession(candidate, recede);
     for (std::size_t v = 0; v < candidate.n_vertices(); ++v) {
       candidate.vertices[v] += rec.displacement[v];
@@ -238,6 +254,11 @@ WearStageReport WornSample::apply_wear(const meshes::FaceField<double>& removed)
     if (sq.valid() && overshoots && halvings < p_.max_halvings) {
       n_left *= 2;
       ++halvings;
+      continue;
+    }
+    if (!sq.valid() && relax > 0 && !meshes::surface_quality(relaxed, &normals).valid()) {
+      relax = relax > 1.0 / 32 ? 0.5 * relax : 0.0;
+      ++r.n_relaxation_halvings;
       continue;
     }
     if (!sq.valid()) {

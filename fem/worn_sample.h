@@ -39,7 +39,10 @@ struct WearStageReport {
   double volume_change = 0;  ///< [m^3] mesh volume before minus after
   int increments = 0;        ///< recession steps the stage was applied in
   int n_remeshes = 0;
-  int n_spreadings = 0;     ///< spreading steps taken where the recession folded
+  int n_spreadings = 0; ///< spreading steps taken where the recession folded
+  /// times the surface relaxation was halved because it alone folded the surface (the
+  /// sixth halving turns it off for the rest of the stage)
+  int n_relaxation_halvings = 0;
   double spread_volume = 0; ///< [m^3] removed volume moved between faces by spreading
   /// [m^3] asked of faces worn through (within worn_through_thickness of the bottom): not
   /// removed; volume_change = removed_volume - worn_through_volume
@@ -64,6 +67,10 @@ struct WornSampleState {
   std::vector<double> removed_volume, wear_depth; ///< [m^3], [m] per surface face
   int n_remeshes = 0;
 };
+
+/// The state of an unworn sample meshed by `tria` (boundary ids = labels): its surface from
+/// the triangulation, no wear accumulated.
+WornSampleState triangulation_state(const dealii::Triangulation<3>& tria);
 
 class WornSample {
 public:

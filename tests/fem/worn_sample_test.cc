@@ -2,6 +2,7 @@
 // geometric checks (volume, surface distance, labels and their areas); a convex element worn
 // down by 30 % of its height in stages ends with a valid mesh (remeshing where the motion
 // would pass on poor cells) and conserves volume and accumulated wear through every remesh.
+#include "fem/mesh_motion.h"
 #include "fem/remesher.h"
 #include "fem/sample_triangulation.h"
 #include "fem/worn_sample.h"
@@ -9,7 +10,11 @@
 #include "meshes/sample_generator.h"
 
 #include <catch2/catch.hpp>
+#include <deal.II/grid/tria.h>
+#include <deal.II/grid/tria_description.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -264,4 +269,95 @@ TEST_CASE("remeshing keeps every label's area when a label boundary crosses a fl
     // sit at every corner: chords cut corners by a few 1e-5 of a label's area.
     CHECK(std::abs(after.at(label) - area) < 1e-3 * area);
   }
+}
+
+namespace {
+// A 20 x 20 x 5 mm plate whose wear face (and bottom) carries a graded Delaunay
+// triangulation of random clustered points: moving every interior vertex at once by half its
+// offset to the mean of its neighbours turns triangle {9, 8, 10} over (checked below). Each
+// triangle is extruded into a prism of three tetrahedra (split by vertex index, so that
+// neighbouring prisms agree on their shared quads).
+WornSampleState graded_plate_state() {
+  static const double xy[17][2] = {{0.000, 0.000}, {1.000, 0.000}, {1.000, 1.000}, {0.000, 1.000},
+                                   {0.500, 0.000}, {1.000, 0.500}, {0.500, 1.000}, {0.000, 0.500},
+                                   {0.611, 0.463}, {0.631, 0.489}, {0.646, 0.470}, {0.628, 0.505},
+                                   {0.151, 0.503}, {0.848, 0.264}, {0.210, 0.428}, {0.516, 0.401},
+                                   {0.487, 0.640}};
+  static const int tri[24][3] = {{13, 4, 1},  {4, 13, 15}, {5, 13, 1},  {11, 5, 2},   {14, 7, 0},
+                                 {4, 14, 0},  {14, 4, 15}, {10, 13, 5}, {11, 10, 5},  {16, 14, 15},
+                                 {6, 16, 2},  {16, 11, 2}, {16, 6, 3},  {8, 16, 15},  {16, 8, 11},
+                                 {13, 8, 15}, {10, 8, 13}, {14, 12, 7}, {16, 12, 14}, {7, 12, 3},
+                                 {12, 16, 3}, {9, 10, 11}, {8, 9, 11},  {9, 8, 10}};
+  const double size = 0.020, thickness = 0.005;
+  std::vector<dealii::Point<3>> points;
+  for (const double z : {0.0, thickness})
+    for (const auto& p : xy)
+      points.emplace_back(size * p[0], size * p[1], z);
+  std::vector<dealii::CellData<3>> cells;
+  for (const auto& t : tri) {
+    unsigned int v[3] = {unsigned(t[0]), unsigned(t[1]), unsigned(t[2])};
+    std::sort(v, v + 3);
+    const unsigned int a = v[0], b = v[1], c = v[2], top = 17;
+    for (const auto& tet : {std::array<unsigned int, 4>{a, b, c, c + top},
+                            std::array<unsigned int, 4>{a, b, b + top, c + top},
+                            std::array<unsigned int, 4>{a, a + top, b + top, c + top}}) {
+      dealii::CellData<3> cell(4);
+      for (int k = 0; k < 4; ++k)
+        cell.vertices[k] = tet[k];
+      // deal.II wants vertex 3 on the positive side of face 0-1-2.
+      const auto &p0 = points[tet[0]], &p1 = points[tet[1]], &p2 = points[tet[2]],
+                 &p3 = points[tet[3]];
+      if (dealii::cross_product_3d(p1 - p0, p2 - p0) * (p3 - p0) < 0)
+        std::swap(cell.vertices[0], cell.vertices[1]);
+      cells.push_back(cell);
+    }
+  }
+  dealii::Triangulation<3> tria;
+  tria.create_triangulation(points, cells, dealii::SubCellData());
+  for (const auto& cell : tria.active_cell_iterators())
+    for (const auto f : cell->face_indices())
+      if (cell->face(f)->at_boundary()) {
+        const double z = cell->face(f)->center()[2];
+        cell->face(f)->set_boundary_id(z < 1e-9               ? wear::meshes::label::bottom
+                                       : z > thickness - 1e-9 ? wear::meshes::label::base
+                                                              : wear::meshes::label::side);
+      }
+  return triangulation_state(tria);
+}
+} // namespace
+
+TEST_CASE("a wear stage on a graded mesh whose surface relaxation alone would fold it", "[fem]") {
+  // The relaxation of the worn region does not scale with the increment, so halving the
+  // increment cannot undo a fold it causes; before the relaxation was halved on its own, this
+  // stage failed with "the worn surface folds ... even in 32 increments".
+  const auto st = graded_plate_state();
+  {
+    // The premise: the full relaxation (half the umbrella offset) turns a face of the wear
+    // face over.
+    std::vector<char> all(st.surface.n_vertices(), 1);
+    auto relaxed = st.surface;
+    const auto d = tangential_relaxation(st.surface, all);
+    for (std::size_t v = 0; v < relaxed.n_vertices(); ++v)
+      relaxed.vertices[v] += d[v];
+    const auto normals = wear::meshes::face_normals(st.surface);
+    REQUIRE_FALSE(wear::meshes::surface_quality(relaxed, &normals).valid());
+  }
+  WornSampleParameters p;
+  p.mesh_directory = "graded_plate_meshes";
+  p.remesh_min_scaled_jacobian = -1; // no remesh (no gmsh geometry behind this plate)
+  WornSample sample(st, p);
+  const double v0 = mesh_volume(sample.triangulation());
+  const auto removed = removed_by_depth(sample, [](int l, const auto&, const auto&) {
+    return l == wear::meshes::label::base ? 20e-6 : 0.0;
+  });
+  const auto r = sample.apply_wear(removed);
+  INFO(r.increments << " increments, relaxation halved " << r.n_relaxation_halvings << " times, "
+                    << r.n_spreadings << " spreadings");
+  CHECK(r.n_relaxation_halvings >= 1);
+  CHECK(r.n_spreadings == 0);
+  CHECK(r.quality.n_inverted == 0);
+  CHECK(wear::meshes::surface_quality(sample.surface()).valid());
+  // 20 um over 400 mm^2: 8 mm^3, all of it off the mesh volume.
+  CHECK(r.removed_volume == Approx(8e-9).epsilon(1e-9));
+  CHECK(v0 - mesh_volume(sample.triangulation()) == Approx(r.removed_volume).epsilon(1e-8));
 }
