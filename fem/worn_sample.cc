@@ -132,7 +132,8 @@ WornSample::WornSample(const WornSampleState& st, const WornSampleParameters& p)
   n_remeshes_ = st.n_remeshes;
 }
 
-WornSampleState triangulation_state(const dealii::Triangulation<3>& tria) {
+WornSampleState triangulation_state(const dealii::Triangulation<3>& tria,
+                                    const meshes::SurfaceMesh& surface) {
   WornSampleState st;
   for (const auto& v : tria.get_vertices())
     for (int d = 0; d < 3; ++d)
@@ -147,15 +148,14 @@ WornSampleState triangulation_state(const dealii::Triangulation<3>& tria) {
         st.boundary_ids.push_back(int(cell->face(f)->boundary_id()));
       }
   }
-  st.surface = extract_boundary_surface(tria);
+  st.surface = surface;
   st.removed_volume.assign(st.surface.n_faces(), 0);
   st.wear_depth.assign(st.surface.n_faces(), 0);
   return st;
 }
 
 WornSampleState WornSample::state() const {
-  WornSampleState st = triangulation_state(*tria_);
-  st.surface = surface();
+  WornSampleState st = triangulation_state(*tria_, surface());
   st.removed_volume = removed_.values();
   st.wear_depth = depth_.values();
   st.n_remeshes = n_remeshes_;

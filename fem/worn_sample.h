@@ -68,9 +68,10 @@ struct WornSampleState {
   int n_remeshes = 0;
 };
 
-/// The state of an unworn sample meshed by `tria` (boundary ids = labels): its surface from
-/// the triangulation, no wear accumulated.
-WornSampleState triangulation_state(const dealii::Triangulation<3>& tria);
+/// The state of a sample meshed by `tria` (boundary ids = labels) whose boundary is `surface`,
+/// with no wear accumulated on it (the face fields are zero).
+WornSampleState triangulation_state(const dealii::Triangulation<3>& tria,
+                                    const meshes::SurfaceMesh& surface);
 
 class WornSample {
 public:

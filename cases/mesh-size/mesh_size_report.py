@@ -18,20 +18,10 @@ import sys
 # The steady-state rule and the summary reader of the reference report, so both reports
 # agree on which revolutions count.
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../docs/results"))
-from dem_reference_report import mean_se, read as read_summary, steady_from  # noqa: E402
+from dem_reference_report import mean_se, read, steady_from  # noqa: E402
 
 FALLBACK_STEADY = 2
 MM3 = 1e9
-
-
-def read(run):
-    path = os.path.join(run, "summary.csv")
-    if not os.path.isfile(path):
-        sys.exit(f"mesh_size_report: '{path}' does not exist (is '{run}' a finished run?)")
-    rows = read_summary(run)
-    if not rows:
-        sys.exit(f"mesh_size_report: '{path}' has no revolution yet")
-    return rows
 
 
 def after_steady(rows):

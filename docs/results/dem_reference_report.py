@@ -20,8 +20,16 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 
 def read(run):
-    with open(os.path.join(run, "summary.csv")) as f:
+    """The revolutions of a run's summary.csv, numbers as floats; stops the calling report
+    with a message when the file is missing or holds no revolution yet."""
+    path = os.path.join(run, "summary.csv")
+    prog = os.path.basename(sys.argv[0])
+    if not os.path.isfile(path):
+        sys.exit(f"{prog}: '{path}' does not exist (is '{run}' a finished run?)")
+    with open(path) as f:
         rows = list(csv.DictReader(f))
+    if not rows:
+        sys.exit(f"{prog}: '{path}' has no revolution yet")
     for r in rows:
         for k, v in list(r.items()):
             try:

@@ -322,7 +322,7 @@ WornSampleState graded_plate_state() {
                                        : z > thickness - 1e-9 ? wear::meshes::label::base
                                                               : wear::meshes::label::side);
       }
-  return triangulation_state(tria);
+  return triangulation_state(tria, extract_boundary_surface(tria));
 }
 } // namespace
 
