@@ -187,7 +187,17 @@ void visit(CaseParameters& c, Visitor&& v) {
            "[-] Largest recession one stage may ask at a surface vertex (removed volume over "
            "area of the wear faces around it), as a fraction of the longest edge there; a "
            "stage asking for more stops the run (lower the amplification or the revolutions "
-           "per stage).");
+           "per stage), or, with Adaptive amplification, runs at a lower amplification.");
+    v.boolean("Adaptive amplification", k.adaptive_amplification,
+              "A staged stage that would ask more than Maximum depth fraction at a vertex "
+              "runs at the amplification that brings that vertex to the cap, A_stage = A x "
+              "cap / fraction, instead of stopping the run (the step control of wear "
+              "simulations: the wear of a step extrapolated only as far as the geometry "
+              "allows). Each stage's amplification is recorded (stages.csv, summary.csv) and "
+              "the equivalent test time follows it.");
+    v.real("Minimum amplification", k.min_amplification,
+           "[-] With Adaptive amplification, a stage that would need less than this stops the "
+           "run as without it.");
     v.real("Push tolerance", k.push_tolerance,
            "[-] After a geometry update, particles the new surface overlaps by more than this "
            "fraction of their radius are pushed out to zero overlap (and counted).");

@@ -8,7 +8,8 @@
 //      s = 1 + c (sigma_vM,f / sigma_ref)^m from the previous stage's stress (else 1). A
 //      stage whose recession depth at a vertex, sum(dV_f) / sum(A_f) over the wear faces
 //      around it, exceeds the allowed fraction of the longest edge there is refused before
-//      anything changes.
+//      anything changes, or, with adaptive amplification, runs at A_amp x cap / fraction
+//      (not below the minimum amplification), which brings that vertex to the cap.
 //   3. FEM: elastic stress of the current (pre-update) sample under the stage-averaged face
 //      forces F_f = I_f / T_stage (sample frame, clamped bottom).
 //   4. Geometry: volume-exact recession of the worn faces, mesh motion, remeshing when the
@@ -329,7 +330,25 @@ meshes::FaceField<double> CoupledRun::compute_wear(StageRecord& r) {
     factor_area += s * area[f];
     wear_area += area[f];
   }
-  const DepthCheck depth = vertex_depths(surface, removed.values(), area);
+  DepthCheck depth = vertex_depths(surface, removed.values(), area);
+  // The depth is linear in the amplification, so the stage that brings the deepest vertex to
+  // the cap is this one scaled by cap / fraction (the factor just below it, so rounding in the
+  // recomputed check cannot exceed the cap).
+  const double cap = p_.coupling.max_depth_fraction;
+  if (Scheme(r.scheme) == Scheme::staged && p_.coupling.adaptive_amplification &&
+      depth.max_fraction > cap &&
+      r.amplification * cap / depth.max_fraction >= p_.coupling.min_amplification) {
+    const double scale = cap / depth.max_fraction * (1 - 1e-9);
+    log_ << format("stage %d: amplification %g -> %.4g: at %g it would recede vertex %ld (%s) "
+                   "by %.3g mm, %.3g of its longest edge (Maximum depth fraction %g)\n",
+                   r.stage, r.amplification, r.amplification * scale, r.amplification, depth.vertex,
+                   meshes::label::name(depth.label).c_str(), 1e3 * depth.depth_there,
+                   depth.max_fraction, cap);
+    r.amplification *= scale;
+    for (std::size_t f = 0; f < nf; ++f)
+      removed[f] *= scale;
+    depth = vertex_depths(surface, removed.values(), area);
+  }
   r.max_depth = depth.max_depth;
   r.max_depth_fraction = depth.max_fraction;
   r.mean_stress_factor = wear_area > 0 ? factor_area / wear_area : 1;
@@ -338,7 +357,7 @@ meshes::FaceField<double> CoupledRun::compute_wear(StageRecord& r) {
     r.applied_volume = removed.sum();
     r.cumulative_applied =
         (stages_.empty() ? 0 : stages_.back().cumulative_applied) + r.applied_volume;
-    if (r.max_depth_fraction > p_.coupling.max_depth_fraction)
+    if (r.max_depth_fraction > cap)
       throw std::runtime_error(
           "stage " + std::to_string(r.stage) + " would recede the surface by " +
           format("%.4g", 1e3 * depth.depth_there) + " mm at vertex " +
@@ -347,9 +366,12 @@ meshes::FaceField<double> CoupledRun::compute_wear(StageRecord& r) {
           " of its longest edge; Coupling/Maximum depth fraction allows " +
           format("%.3g", p_.coupling.max_depth_fraction) + ". Lower Coupling/Amplification (now " +
           format("%g", r.amplification) +
-          ") or Coupling/Revolutions per stage, or raise Coupling/Maximum depth fraction (up to "
-          "10: the wear stage then splits itself where the surface would fold); a finer mesh "
-          "raises the fraction");
+          ") or Coupling/Revolutions per stage, raise Coupling/Maximum depth fraction (up to "
+          "10: the wear stage then splits itself where the surface would fold), or set "
+          "Coupling/Adaptive amplification (a stage would need " +
+          format("%.3g", r.amplification * cap / r.max_depth_fraction) +
+          "; Coupling/Minimum amplification is " + format("%g", p_.coupling.min_amplification) +
+          "); a finer mesh raises the fraction");
   } else if (Scheme(r.scheme) == Scheme::dem_only && !sample_) {
     for (std::size_t f = 0; f < nf; ++f)
       dem_cumulative_[f] += removed[f];
@@ -405,6 +427,14 @@ void CoupledRun::update_geometry(const meshes::FaceField<double>& removed, Stage
   if (report.n_relaxation_halvings > 0)
     log_ << "stage " << r.stage << ": the surface relaxation alone folded the surface and was "
          << "halved " << report.n_relaxation_halvings << " time(s)\n";
+  if (report.n_held_restorations > 0)
+    log_ << "stage " << r.stage << ": after " << report.n_held_restorations
+         << " remesh(es) the volume-restoring offset would have folded the surface and was held "
+            "still around the fold"
+         << (report.volume_not_restored != 0 ? format(" (%.3g mm^3 of chord volume not given back)",
+                                                      report.volume_not_restored * 1e9)
+                                             : std::string())
+         << '\n';
   for (const auto& refusal : report.remesh_refusals)
     log_ << "stage " << r.stage << ": a remesh needed more than one attempt; refused:" << refusal
          << '\n';

@@ -82,6 +82,9 @@ void validate(const CouplingParameters& c, const FemParameters& f) {
           "must be positive");
   require(c.max_depth_fraction > 0 && c.max_depth_fraction <= 10, "Coupling/Maximum depth fraction",
           "must lie in (0, 10]");
+  require(!c.adaptive_amplification ||
+              (c.min_amplification > 0 && c.min_amplification <= c.amplification),
+          "Coupling/Minimum amplification", "must lie in (0, Coupling/Amplification]");
   require(c.push_tolerance >= 0 && c.push_tolerance < 0.5, "Coupling/Push tolerance",
           "must lie in [0, 0.5)");
   const auto& s = c.stress_informed;

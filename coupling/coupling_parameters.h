@@ -35,12 +35,14 @@ struct StressInformedWear {
 };
 
 struct CouplingParameters {
-  std::string schedule = "2 staged"; ///< "N scheme, N scheme, ..." in order
-  int revolutions_per_stage = 1;     ///< DEM revolutions per stage
-  double amplification = 1;          ///< [-] declared factor on the removed volume
-  double max_depth_fraction = 0.5;   ///< [-] of the longest edge at a vertex, per stage
-  double push_tolerance = 0.01;      ///< [-] of the radius: overlaps above it are pushed out
-  bool checkpoints = true;           ///< after every stage (staged and dem-only schemes)
+  std::string schedule = "2 staged";   ///< "N scheme, N scheme, ..." in order
+  int revolutions_per_stage = 1;       ///< DEM revolutions per stage
+  double amplification = 1;            ///< [-] declared factor on the removed volume
+  double max_depth_fraction = 0.5;     ///< [-] of the longest edge at a vertex, per stage
+  bool adaptive_amplification = false; ///< lower a stage's amplification to meet the cap
+  double min_amplification = 1;        ///< [-] below it an adaptive stage stops the run
+  double push_tolerance = 0.01;        ///< [-] of the radius: overlaps above it are pushed out
+  bool checkpoints = true;             ///< after every stage (staged and dem-only schemes)
   StressInformedWear stress_informed;
 };
 

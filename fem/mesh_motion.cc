@@ -32,6 +32,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -227,15 +228,25 @@ Recession compute_recession(const meshes::SurfaceMesh& surface,
   return r;
 }
 
-Recession volume_restoring_offset(const meshes::SurfaceMesh& surface, double target_volume) {
-  // Unit inward offset of the wear face: the recession of a depth of 1 m everywhere.
+Recession volume_restoring_offset(const meshes::SurfaceMesh& surface, double target_volume,
+                                  const std::vector<char>* held_faces) {
+  // Unit inward offset of the wear face: the recession of a depth of 1 m everywhere, 0 on
+  // held faces (their vertices shared with free faces take the area-weighted mean: a taper).
   std::vector<double> unit_depth = meshes::face_areas(surface);
+  if (held_faces) {
+    if (held_faces->size() != surface.n_faces())
+      throw std::invalid_argument("volume-restoring offset: mask of the wrong size");
+    for (std::size_t f = 0; f < unit_depth.size(); ++f)
+      if ((*held_faces)[f])
+        unit_depth[f] = 0;
+  }
   const std::vector<Vec3> unit = constrained_recession(surface, unit_depth);
   Recession r;
   r.removed_volume = meshes::enclosed_volume(surface) - target_volume;
   r.displacement.assign(surface.n_vertices(), {});
-  if (r.removed_volume == 0)
-    return r;
+  if (r.removed_volume == 0 ||
+      std::none_of(unit.begin(), unit.end(), [](const Vec3& u) { return meshes::norm(u) > 0; }))
+    return r; // nothing to give back, or nothing free to move
   r.scale = scale_to_volume_loss(surface, unit, r.removed_volume, &r.swept_volume, 0);
   for (std::size_t v = 0; v < surface.n_vertices(); ++v)
     r.displacement[v] = unit[v] * r.scale;

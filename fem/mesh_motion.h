@@ -29,7 +29,9 @@ Recession compute_recession(const meshes::SurfaceMesh& surface,
 /// A uniform offset of the wear face along its inward vertex normals (outward for a negative
 /// scale) that brings the enclosed volume to `target_volume`: gives back the volume a
 /// remeshing cut off as chords across curved regions. removed_volume = current - target.
-Recession volume_restoring_offset(const meshes::SurfaceMesh& surface, double target_volume);
+/// Faces marked in `held_faces` (one flag per face) do not move, and the rest takes their share.
+Recession volume_restoring_offset(const meshes::SurfaceMesh& surface, double target_volume,
+                                  const std::vector<char>* held_faces = nullptr);
 
 /// Tangential relaxation of a worn region: every vertex with `moving[v]` whose faces all
 /// carry one wearing label moves by `weight` times the tangential part (normal component

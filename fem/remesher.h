@@ -33,11 +33,15 @@ struct RemeshParameters {
 struct RemeshReport {
   std::size_t n_tetrahedra = 0;
   std::size_t n_faces_before = 0, n_faces_after = 0;
-  std::size_t n_patches = 0;         ///< discrete surfaces gmsh reparametrised
-  std::size_t n_mixed_faces = 0;     ///< input faces in a patch of another label (0 expected)
-  double volume_before = 0;          ///< [m^3] enclosed by the input surface
-  double volume_after = 0;           ///< [m^3] sum of the new tetrahedra
-  double volume_restored = 0;        ///< [m^3] after WornSample's volume-restoring offset
+  std::size_t n_patches = 0;     ///< discrete surfaces gmsh reparametrised
+  std::size_t n_mixed_faces = 0; ///< input faces in a patch of another label (0 expected)
+  double volume_before = 0;      ///< [m^3] enclosed by the input surface
+  double volume_after = 0;       ///< [m^3] sum of the new tetrahedra
+  double volume_restored = 0;    ///< [m^3] after WornSample's volume-restoring offset
+  /// vertex rings around a fold within which that offset was held still (0: nowhere)
+  int restore_held_rings = 0;
+  /// [m^3] enclosed volume the offset could not give back without folding (new - worn)
+  double volume_not_restored = 0;
   double surface_distance = 0;       ///< [m] largest distance of new surface points to the old
   std::map<int, double> area_before; ///< [m^2] per label
   std::map<int, double> area_after;  ///< [m^2] per label

@@ -47,7 +47,11 @@ struct WearStageReport {
   /// [m^3] asked of faces worn through (within worn_through_thickness of the bottom): not
   /// removed; volume_change = removed_volume - worn_through_volume
   double worn_through_volume = 0;
-  int n_worn_through = 0;   ///< faces worn through when the stage ended
+  int n_worn_through = 0; ///< faces worn through when the stage ended
+  /// remeshes whose volume-restoring offset was held still around a fold it would make
+  int n_held_restorations = 0;
+  /// [m^3] chord volume of remeshes whose every restoring offset folded (new - worn surface)
+  double volume_not_restored = 0;
   RemeshReport last_remesh; ///< valid when n_remeshes > 0
   /// RemeshReport::failed_attempts of each remesh in the stage that needed more than one
   /// attempt (the refused inputs are kept beside the meshes)

@@ -39,8 +39,8 @@ std::vector<Vec3> area_weighted_recession(const SurfaceMesh& m,
   return out;
 }
 
-double spread_removed_volume(const SurfaceMesh& m, std::vector<double>& removed_volume,
-                             const std::vector<std::uint32_t>& seeds, int rings) {
+std::vector<char> faces_within_rings(const SurfaceMesh& m, const std::vector<std::uint32_t>& seeds,
+                                     int rings) {
   const std::size_t nf = m.n_faces();
   const auto vf = vertex_faces(m);
   std::vector<char> in_region(nf, 0);
@@ -63,6 +63,13 @@ double spread_removed_volume(const SurfaceMesh& m, std::vector<double>& removed_
         }
     front.swap(next);
   }
+  return in_region;
+}
+
+double spread_removed_volume(const SurfaceMesh& m, std::vector<double>& removed_volume,
+                             const std::vector<std::uint32_t>& seeds, int rings) {
+  const std::size_t nf = m.n_faces();
+  std::vector<char> in_region = faces_within_rings(m, seeds, rings);
   for (std::size_t f = 0; f < nf; ++f)
     if (!label::wears(m.face_labels[f]))
       in_region[f] = 0;

@@ -3,6 +3,7 @@
 // FEM boundary recession (fem/).
 #include "meshes/surface_mesh.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace wear::meshes {
@@ -12,6 +13,10 @@ namespace wear::meshes {
 /// for vertices without wearing faces. `removed_volume` is per face [m^3], extensive.
 std::vector<Vec3> area_weighted_recession(const SurfaceMesh& m,
                                           const std::vector<double>& removed_volume);
+
+/// Per face: 1 for the seeds and the faces within `rings` vertex rings of them, else 0.
+std::vector<char> faces_within_rings(const SurfaceMesh& m, const std::vector<std::uint32_t>& seeds,
+                                     int rings);
 
 /// Spreads removed volume [m^3 per face] around `seeds` (e.g. the faces where a recession
 /// folds): within `rings` vertex rings of a seed, over wearing faces only, the depth V_f / A_f

@@ -189,6 +189,45 @@ TEST_CASE("wearsim run: bad input stops clearly and keeps the last good checkpoi
              Catch::Matchers::Contains("Coupling/Schedule"));
 }
 
+TEST_CASE("wearsim run: adaptive amplification brings the deepest vertex to the depth cap",
+          "[coupling][run]") {
+  // The case that stops the bad-input test (10^5 times the wear: 46 edge lengths at a vertex)
+  // runs with Adaptive amplification: the stage carries A x cap / fraction.
+  const std::string dir = "coupled_run_adaptive";
+  std::filesystem::remove_all(dir);
+  auto p = small_case(dir, "1 staged", 1e5);
+  p.coupling.adaptive_amplification = true;
+  const std::string log = run_case(p);
+  INFO(log);
+  CHECK(log.find("stage 1: amplification 100000 -> ") != std::string::npos);
+  const auto c = read_checkpoint(dir + "/checkpoint.h5");
+  REQUIRE(c.stages.size() == 1);
+  const auto& s = c.stages[0];
+  CHECK(s.amplification < 1e5);
+  CHECK(s.amplification >= p.coupling.min_amplification);
+  // The asked volume is the stage's amplification times the wear law's (no stress factor yet),
+  // the deepest vertex recedes by the cap to the 1e-9 the scale keeps below it, and the
+  // geometry loses what was asked.
+  CHECK(s.applied_volume == Approx(s.amplification * s.dem_wear_volume).epsilon(1e-12));
+  CHECK(s.max_depth_fraction <= p.coupling.max_depth_fraction);
+  CHECK(s.max_depth_fraction == Approx(p.coupling.max_depth_fraction).epsilon(1e-8));
+  CHECK(std::abs(s.geometry_volume_change - s.applied_volume) < 5e-3 * s.applied_volume);
+  CHECK(s.min_scaled_jacobian > 0);
+  // The same stage at the amplification it ran with stays below the cap without adapting.
+  auto fixed = small_case(dir + "_fixed", "1 staged", s.amplification);
+  std::filesystem::remove_all(fixed.output.directory);
+  CHECK(error_of(fixed).empty());
+  // A floor above what the stage needs stops the run as without adaptation, and says what
+  // the stage would need.
+  p.coupling.min_amplification = 2 * s.amplification;
+  std::filesystem::remove_all(dir);
+  const std::string e = error_of(p);
+  CHECK_THAT(e, Catch::Matchers::Contains("Coupling/Minimum amplification") &&
+                    Catch::Matchers::Contains("Coupling/Maximum depth fraction"));
+  p.coupling.min_amplification = 2e5;
+  CHECK_THAT(error_of(p), Catch::Matchers::Contains("Coupling/Minimum amplification: must lie"));
+}
+
 TEST_CASE("wearsim run: past the node-moving method's distortion limit the staged scheme goes on",
           "[coupling][run][long]") {
   // The same tester, amplification (100) and cadence for both schemes: the reference method

@@ -312,4 +312,43 @@ TEST_CASE("volume-restoring offset reaches the target volume", "[fem][motion]") 
       if (surface.vertices[v].z > c * (1 - 1e-9))
         CHECK(r.displacement[v].z == Approx((target - v0) / (a * b)).epsilon(1e-6));
   }
+  // Held faces (where the offset would fold a remeshed surface): the half x < a/2 of the top
+  // stays still, the other half takes its share, and the volume still reaches the target.
+  std::vector<char> held(surface.n_faces(), 0), touches_held(surface.n_vertices(), 0);
+  for (std::size_t f = 0; f < surface.n_faces(); ++f) {
+    double x = 0;
+    for (const auto v : surface.triangles[f])
+      x += surface.vertices[v].x / 3;
+    held[f] = x < a / 2;
+    for (const auto v : surface.triangles[f])
+      touches_held[v] |= held[f];
+  }
+  const double target = v0 * (1 + 1e-3);
+  const auto r = volume_restoring_offset(surface, target, &held);
+  auto moved = surface;
+  for (std::size_t v = 0; v < moved.n_vertices(); ++v)
+    moved.vertices[v] += r.displacement[v];
+  CHECK(wear::meshes::enclosed_volume(moved) == Approx(target).epsilon(1e-12));
+  std::size_t n_still = 0, n_free = 0;
+  for (std::size_t v = 0; v < moved.n_vertices(); ++v) {
+    if (surface.vertices[v].z < c * (1 - 1e-9))
+      continue;
+    if (surface.vertices[v].x < a / 2 - 1e-9 && touches_held[v]) {
+      bool only_held = true;
+      for (std::size_t f = 0; f < surface.n_faces(); ++f)
+        for (const auto w : surface.triangles[f])
+          if (w == v && !held[f] && wear::meshes::label::wears(surface.face_labels[f]))
+            only_held = false;
+      if (only_held) {
+        CHECK(wear::meshes::norm(r.displacement[v]) == 0);
+        ++n_still;
+      }
+    } else if (!touches_held[v]) {
+      // the free half lifts by more than the uniform offset: at least the whole top's share
+      CHECK(r.displacement[v].z > (target - v0) / (a * b));
+      ++n_free;
+    }
+  }
+  CHECK(n_still > 0);
+  CHECK(n_free > 0);
 }
