@@ -33,6 +33,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -289,6 +290,39 @@ std::vector<Vec3> tangential_relaxation(const meshes::SurfaceMesh& surface,
       const Vec3& d = offset[v];
       out[v] = (sharp[v] ? d : d - normal[v] * meshes::dot(d, normal[v])) * weight;
     }
+  return out;
+}
+
+std::vector<Vec3> crease_relaxation(const meshes::SurfaceMesh& surface, double weight) {
+  const std::size_t nv = surface.n_vertices();
+  // The crease neighbours of each vertex: across edges between a wearing and an unworn face.
+  std::vector<std::array<std::int64_t, 2>> along(nv, {-1, -1});
+  std::vector<int> n_along(nv, 0);
+  for (const auto& [edge, faces] : meshes::edge_faces(surface)) {
+    if (faces.size() != 2 || meshes::label::wears(surface.face_labels[faces[0]]) ==
+                                 meshes::label::wears(surface.face_labels[faces[1]]))
+      continue;
+    for (const auto [v, w] : {std::pair{edge.first, edge.second}, {edge.second, edge.first}}) {
+      if (n_along[v] < 2)
+        along[v][std::size_t(n_along[v])] = w;
+      ++n_along[v];
+    }
+  }
+  const auto constraint = meshes::sliding_constraints(surface);
+  std::vector<Vec3> out(nv);
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (n_along[v] != 2 || constraint[v].n_free != 2)
+      continue; // a corner of the crease, or a vertex not on one flat side
+    const Vec3& a = surface.vertices[std::size_t(along[v][0])];
+    const Vec3& b = surface.vertices[std::size_t(along[v][1])];
+    const Vec3 chord = b - a;
+    const double length = meshes::norm(chord);
+    if (!(length > 0))
+      continue;
+    const Vec3 t = chord * (1 / length);
+    const Vec3 to_mean = (a + b) * 0.5 - surface.vertices[v];
+    out[v] = constraint[v].apply(t * (meshes::dot(to_mean, t) * weight));
+  }
   return out;
 }
 

@@ -46,6 +46,17 @@ std::vector<meshes::Vec3> tangential_relaxation(const meshes::SurfaceMesh& surfa
                                                 const std::vector<char>& moving,
                                                 double weight = 0.5, double spike_cos = -0.9);
 
+/// Relaxation along the crease where the wear face meets a flat side: a vertex there moves by
+/// `weight` times the part, along the chord between its two crease neighbours, of the offset
+/// to their midpoint, kept in the side's plane. The recession moves crease vertices down the
+/// side along the wear face's normals, which tilt along the crease beside a groove; uneven
+/// there, neighbours close up and cross, and the crease doubles back (the wear-out case at
+/// 100x, stage 29). Moving along the chord evens the spacing and leaves the crease's shape
+/// unchanged to first order. Corners of the crease (three faces' planes) stay. Returns the
+/// displacement per vertex [m].
+std::vector<meshes::Vec3> crease_relaxation(const meshes::SurfaceMesh& surface,
+                                            double weight = 0.5);
+
 /// Relaxation of the unworn surface (sides, bottom) as the wear face recedes past it: every
 /// vertex whose faces all do not wear moves by `weight` times the offset to the mean of its edge
 /// neighbours, kept in its flat face group or along its crease (meshes::sliding_constraints),

@@ -219,6 +219,7 @@ WearStageReport WornSample::apply_wear(const meshes::FaceField<double>& removed)
           worn_vertex[v] = 1;
       }
     const auto unworn = unworn_relaxation(s);
+    const auto crease = crease_relaxation(s);
     std::vector<meshes::Vec3> displacement;
     meshes::SurfaceMesh candidate;
     double relaxation_loss = 0;
@@ -227,7 +228,7 @@ WearStageReport WornSample::apply_wear(const meshes::FaceField<double>& removed)
     for (const double spike_cos : {-0.9, -2.0}) {
       displacement = tangential_relaxation(s, worn_vertex, 0.5 * relax, spike_cos);
       for (std::size_t v = 0; v < displacement.size(); ++v)
-        displacement[v] += unworn[v] * relax;
+        displacement[v] += (unworn[v] + crease[v]) * relax;
       candidate = s;
       for (std::size_t v = 0; v < candidate.n_vertices(); ++v)
         candidate.vertices[v] += displacement[v];

@@ -295,6 +295,60 @@ TEST_CASE("the unworn sides stay flat as the wear face recedes past their first 
   CHECK(lowest_top_edge < c * 2 / 3); // the top edge did pass the first row's height
 }
 
+TEST_CASE("crease relaxation evens out crease vertices that have closed up", "[fem][motion]") {
+  // The rim of a box's top (label base) against its sides: on the side y = 0 the crease is the
+  // line z = c, crease vertices at x = 0, 10, ..., 60 mm. Evenly spaced, nothing moves; with a
+  // vertex pushed to within 1 mm of its neighbour (closing up before the crease doubles back,
+  // as in the wear-out case's stage 29), every sweep widens the narrowest gap and 60 sweeps
+  // bring every gap to 10 +- 0.5 mm, moving only along the line and only on the rim.
+  dealii::Triangulation<3> tria;
+  const double a = 0.06, b = 0.04, c = 0.01;
+  make_box(tria, a, b, c);
+  auto surface = extract_boundary_surface(tria);
+  const auto even = crease_relaxation(surface);
+  for (const auto& d : even)
+    CHECK(wear::meshes::norm(d) < 1e-15);
+  std::vector<std::size_t> rim(7, surface.n_vertices());
+  for (std::size_t v = 0; v < surface.n_vertices(); ++v) {
+    const auto& x = surface.vertices[v];
+    if (x.y < 1e-12 && x.z > c * (1 - 1e-12))
+      rim[std::size_t(std::lround(x.x / 0.01))] = v;
+  }
+  for (const auto v : rim)
+    REQUIRE(v < surface.n_vertices());
+  surface.vertices[rim[2]].x = 0.029; // 1 mm from rim[3]
+  const auto narrowest = [&] {
+    double g = 1;
+    for (std::size_t k = 0; k + 1 < rim.size(); ++k)
+      g = std::min(g, surface.vertices[rim[k + 1]].x - surface.vertices[rim[k]].x);
+    return g;
+  };
+  for (int sweep = 0; sweep < 60; ++sweep) {
+    const auto d = crease_relaxation(surface);
+    for (std::size_t v = 0; v < surface.n_vertices(); ++v) {
+      const auto& x = surface.vertices[v];
+      const bool on_rim_y0 = x.y < 1e-12 && x.z > c * (1 - 1e-12) && x.x > 1e-12 && x.x < a - 1e-12;
+      if (!on_rim_y0) {
+        CHECK(wear::meshes::norm(d[v]) < 1e-15); // corners, other sides' rims untouched here
+        continue;
+      }
+      CHECK(std::abs(d[v].y) < 1e-15); // stays in the side's plane
+      CHECK(std::abs(d[v].z) < 1e-15); // and on the straight crease
+    }
+    const double before = narrowest();
+    for (std::size_t v = 0; v < surface.n_vertices(); ++v)
+      surface.vertices[v] += d[v];
+    if (before < 0.0095)
+      CHECK(narrowest() > before);
+  }
+  for (std::size_t k = 0; k + 1 < rim.size(); ++k)
+    CHECK(surface.vertices[rim[k + 1]].x - surface.vertices[rim[k]].x ==
+          Approx(0.01).margin(0.5e-3));
+  // The corners of the rim (two side planes) have not moved.
+  CHECK(surface.vertices[rim[0]].x == 0);
+  CHECK(surface.vertices[rim[6]].x == a);
+}
+
 TEST_CASE("volume-restoring offset reaches the target volume", "[fem][motion]") {
   dealii::Triangulation<3> tria;
   const double a = 0.06, b = 0.04, c = 0.01;
