@@ -291,8 +291,9 @@ WearStageReport WornSample::apply_wear(const meshes::FaceField<double>& removed)
                       std::to_string(at.x * 1e3) + ", " + std::to_string(at.y * 1e3) + ") mm"
                 : std::string();
         throw std::runtime_error(
-            "wear stage: the worn surface folds" + where + " even in " + std::to_string(n_left) +
-            " increments" +
+            "wear stage: the worn surface folds" + where + " even in increments of 1/" +
+            std::to_string(1 << halvings) + " of the stage (" + std::to_string(r.increments) +
+            " taken before)" +
             (folded_before ? " (the surface before this increment already folds)" : "") +
             thickness +
             "; reduce the wear per stage (surface before and after the increment, bad faces "
