@@ -363,9 +363,8 @@ meshes::FaceField<double> CoupledRun::compute_wear(StageRecord& r) {
           format("%.4g", 1e3 * depth.depth_there) + " mm at vertex " +
           std::to_string(depth.vertex) + " (" + meshes::label::name(depth.label) + "), " +
           format("%.3g", r.max_depth_fraction) +
-          " of its longest edge; Coupling/Maximum depth fraction allows " +
-          format("%.3g", p_.coupling.max_depth_fraction) + ". Lower Coupling/Amplification (now " +
-          format("%g", r.amplification) +
+          " of its longest edge; Coupling/Maximum depth fraction allows " + format("%.3g", cap) +
+          ". Lower Coupling/Amplification (now " + format("%g", r.amplification) +
           ") or Coupling/Revolutions per stage, raise Coupling/Maximum depth fraction (up to "
           "10: the wear stage then splits itself where the surface would fold), or set "
           "Coupling/Adaptive amplification (a stage would need " +

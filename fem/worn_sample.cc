@@ -384,7 +384,7 @@ RemeshReport WornSample::remesh_from(const meshes::SurfaceMesh& worn) {
   const auto normals = meshes::face_normals(fresh);
   std::vector<char> held(fresh.n_faces(), 0);
   std::vector<meshes::Vec3> offset;
-  for (int rings = 0;; rings = rings == 0 ? 1 : 2 * rings) {
+  for (int rings = 0;;) {
     offset = volume_restoring_offset(fresh, target, rings > 0 ? &held : nullptr).displacement;
     meshes::SurfaceMesh candidate = fresh;
     for (std::size_t v = 0; v < candidate.n_vertices(); ++v)
@@ -399,10 +399,11 @@ RemeshReport WornSample::remesh_from(const meshes::SurfaceMesh& worn) {
       report.volume_not_restored = meshes::enclosed_volume(fresh) - target;
       break;
     }
-    const auto around = meshes::faces_within_rings(fresh, q.bad_faces, rings == 0 ? 1 : 2 * rings);
+    rings = rings == 0 ? 1 : 2 * rings;
+    const auto around = meshes::faces_within_rings(fresh, q.bad_faces, rings);
     for (std::size_t f = 0; f < held.size(); ++f)
       held[f] |= around[f];
-    report.restore_held_rings = rings == 0 ? 1 : 2 * rings;
+    report.restore_held_rings = rings;
   }
   MotionReport motion;
   auto restored = move_mesh(*tria, *map, offset, &motion);
