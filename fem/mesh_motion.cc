@@ -293,7 +293,8 @@ std::vector<Vec3> tangential_relaxation(const meshes::SurfaceMesh& surface,
   return out;
 }
 
-std::vector<Vec3> crease_relaxation(const meshes::SurfaceMesh& surface, double weight) {
+std::vector<Vec3> crease_relaxation(const meshes::SurfaceMesh& surface, double weight,
+                                    const std::vector<meshes::SlidingConstraint>* constraint) {
   const std::size_t nv = surface.n_vertices();
   // The crease neighbours of each vertex: across edges between a wearing and an unworn face.
   std::vector<std::array<std::int64_t, 2>> along(nv, {-1, -1});
@@ -308,10 +309,12 @@ std::vector<Vec3> crease_relaxation(const meshes::SurfaceMesh& surface, double w
       ++n_along[v];
     }
   }
-  const auto constraint = meshes::sliding_constraints(surface);
+  std::vector<meshes::SlidingConstraint> own;
+  if (!constraint)
+    constraint = &(own = meshes::sliding_constraints(surface));
   std::vector<Vec3> out(nv);
   for (std::size_t v = 0; v < nv; ++v) {
-    if (n_along[v] != 2 || constraint[v].n_free != 2)
+    if (n_along[v] != 2 || (*constraint)[v].n_free != 2)
       continue; // a corner of the crease, or a vertex not on one flat side
     const Vec3& a = surface.vertices[std::size_t(along[v][0])];
     const Vec3& b = surface.vertices[std::size_t(along[v][1])];
@@ -321,12 +324,13 @@ std::vector<Vec3> crease_relaxation(const meshes::SurfaceMesh& surface, double w
       continue;
     const Vec3 t = chord * (1 / length);
     const Vec3 to_mean = (a + b) * 0.5 - surface.vertices[v];
-    out[v] = constraint[v].apply(t * (meshes::dot(to_mean, t) * weight));
+    out[v] = (*constraint)[v].apply(t * (meshes::dot(to_mean, t) * weight));
   }
   return out;
 }
 
-std::vector<Vec3> unworn_relaxation(const meshes::SurfaceMesh& surface, double weight) {
+std::vector<Vec3> unworn_relaxation(const meshes::SurfaceMesh& surface, double weight,
+                                    const std::vector<meshes::SlidingConstraint>* constraint) {
   const std::size_t nv = surface.n_vertices();
   std::vector<char> unworn(nv, 1);
   for (std::size_t f = 0; f < surface.n_faces(); ++f)
@@ -334,11 +338,13 @@ std::vector<Vec3> unworn_relaxation(const meshes::SurfaceMesh& surface, double w
       for (const auto v : surface.triangles[f])
         unworn[v] = 0;
   const auto offset = neighbour_offsets(surface);
-  const auto constraint = meshes::sliding_constraints(surface);
+  std::vector<meshes::SlidingConstraint> own;
+  if (!constraint)
+    constraint = &(own = meshes::sliding_constraints(surface));
   std::vector<Vec3> out(nv);
   for (std::size_t v = 0; v < nv; ++v)
     if (unworn[v])
-      out[v] = constraint[v].apply(offset[v]) * weight;
+      out[v] = (*constraint)[v].apply(offset[v]) * weight;
   return out;
 }
 

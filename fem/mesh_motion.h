@@ -2,6 +2,7 @@
 // Wear applied to the volume mesh: recession of the worn boundary from an extensive
 // removed-volume field, interior mesh motion, and volume-mesh quality.
 #include "fem/boundary_face_map.h"
+#include "meshes/sliding_constraint.h"
 #include "meshes/surface_mesh.h"
 
 #include <deal.II/grid/tria.h>
@@ -53,18 +54,21 @@ std::vector<meshes::Vec3> tangential_relaxation(const meshes::SurfaceMesh& surfa
 /// there, neighbours close up and cross, and the crease doubles back (the wear-out case at
 /// 100x, stage 29). Moving along the chord evens the spacing and leaves the crease's shape
 /// unchanged to first order. Corners of the crease (three faces' planes) stay. Returns the
-/// displacement per vertex [m].
-std::vector<meshes::Vec3> crease_relaxation(const meshes::SurfaceMesh& surface,
-                                            double weight = 0.5);
+/// displacement per vertex [m]. `constraint`: meshes::sliding_constraints(surface) if the
+/// caller has it already (computed here when null).
+std::vector<meshes::Vec3>
+crease_relaxation(const meshes::SurfaceMesh& surface, double weight = 0.5,
+                  const std::vector<meshes::SlidingConstraint>* constraint = nullptr);
 
 /// Relaxation of the unworn surface (sides, bottom) as the wear face recedes past it: every
 /// vertex whose faces all do not wear moves by `weight` times the offset to the mean of its edge
 /// neighbours, kept in its flat face group or along its crease (meshes::sliding_constraints),
 /// so the unworn shape and the enclosed volume stay as they are. Without it, the strip of side
 /// triangles under a receding wear face edge is squeezed until it folds. Returns the
-/// displacement per vertex [m].
-std::vector<meshes::Vec3> unworn_relaxation(const meshes::SurfaceMesh& surface,
-                                            double weight = 0.5);
+/// displacement per vertex [m]. `constraint` as for crease_relaxation.
+std::vector<meshes::Vec3>
+unworn_relaxation(const meshes::SurfaceMesh& surface, double weight = 0.5,
+                  const std::vector<meshes::SlidingConstraint>* constraint = nullptr);
 
 struct VolumeQuality {
   double min_scaled_jacobian = 1; ///< [-] 1 for the regular tetrahedron, <= 0 inverted

@@ -34,6 +34,7 @@
 #include "meshes/face_transfer.h"
 #include "meshes/mesh_quality.h"
 #include "meshes/recession.h"
+#include "meshes/sliding_constraint.h"
 #include "meshes/vtu_writer.h"
 
 #include <deal.II/grid/tria_description.h>
@@ -218,8 +219,9 @@ WearStageReport WornSample::apply_wear(const meshes::FaceField<double>& removed)
         for (const auto v : s.triangles[f])
           worn_vertex[v] = 1;
       }
-    const auto unworn = unworn_relaxation(s);
-    const auto crease = crease_relaxation(s);
+    const auto constraint = meshes::sliding_constraints(s);
+    const auto unworn = unworn_relaxation(s, 0.5, &constraint);
+    const auto crease = crease_relaxation(s, 0.5, &constraint);
     std::vector<meshes::Vec3> displacement;
     meshes::SurfaceMesh candidate;
     double relaxation_loss = 0;
