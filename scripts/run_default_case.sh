@@ -17,5 +17,5 @@ echo
 echo "plots: output/quick-plain/plots/, output/quick-convex/plots/, output/quick-compare/compare.png"
 echo "ParaView: output/quick-convex/history.xdmf (sample surface and volume per stage)"
 echo "one run of this 30-degree sector is one draw of an intermittent bed: the reduction spreads"
-echo "from 15 to 64 % with the seed (53 % over six seeds); bash cases/quick/ensemble.sh runs the"
-echo "ensemble (9 min), cases/quick/README.md explains it"
+echo "from 24 to 59 % with the seed (49 % over six seeds); bash cases/quick/ensemble.sh runs the"
+echo "ensemble (13 min), cases/quick/README.md explains it"

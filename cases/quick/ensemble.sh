@@ -5,8 +5,8 @@
 # the seed, or with the last bit of a force sum. This runs plain and convex for each seed
 # and prints the ensemble table (cases/quick/ensemble_report.py).
 #
-# usage: bash cases/quick/ensemble.sh [seed ...]     (default: 20111 1 2 3 4 5; about 45 s
-#        per run on 2 cores, 9 min for the default twelve)
+# usage: bash cases/quick/ensemble.sh [seed ...]     (default: 20111 1 2 3 4 5; on 2 cores
+#        about 35 s per plain and 1 to 2 min per convex run, 13 min for the default twelve)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 seeds=("$@")
