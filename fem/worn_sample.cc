@@ -26,7 +26,9 @@
 // there (a hole would change the topology), so the wear asked of it is recorded as worn-through
 // volume instead of removed, and the stage ends with volume change = asked - worn through.
 // Increments that would take a vertex more than halfway through that layer are split like folding
-// ones.
+// ones, and so are increments whose recession cannot reach the asked volume (one vertex carried
+// far past its neighbours: the swept volume stops growing with the offset); at the last split
+// that stops the stage with a message instead of handing on a surface short of the wear.
 #include "fem/worn_sample.h"
 
 #include "fem/sample_triangulation.h"
@@ -247,6 +249,25 @@ WearStageReport WornSample::apply_wear(const meshes::FaceField<double>& removed)
     for (std::size_t v = 0; v < candidate.n_vertices(); ++v) {
       candidate.vertices[v] += rec.displacement[v];
       displacement[v] += rec.displacement[v];
+    }
+    // One increment that would carry a vertex far past its neighbours can leave no offset at
+    // which the enclosed volume drops by the asked amount (the swept volume stops growing
+    // with the offset); the secant scaling then ends short of it, on a surface that looks
+    // valid. Such an increment is taken in smaller steps, never handed on short.
+    const double volume_miss = std::abs(rec.swept_volume - rec.removed_volume);
+    if (volume_miss > 1e-4 * rec.removed_volume) {
+      if (halvings < p_.max_halvings) {
+        n_left *= 2;
+        ++halvings;
+        continue;
+      }
+      throw std::runtime_error(
+          "wear stage: the recession removes " + std::to_string(rec.swept_volume * 1e9) +
+          " mm^3 where " + std::to_string(rec.removed_volume * 1e9) +
+          " mm^3 is asked, even in increments of 1/" + std::to_string(1 << halvings) +
+          " of the stage (" + std::to_string(r.increments) +
+          " taken before); reduce the wear per stage (Coupling/Amplification or "
+          "Coupling/Maximum depth fraction)");
     }
     const auto normals = meshes::face_normals(s);
     const auto sq = meshes::surface_quality(candidate, &normals);

@@ -243,18 +243,25 @@ TEST_CASE("wearsim run: past the node-moving method's distortion limit the stage
   const auto ref_applied =
       Hdf5Reader(ref.output.directory + "/history.h5").doubles("/stages/cumulative_applied_m3");
   const double distorted_at = ref_applied.back(); // [m^3] applied when it distorted
-  // Both schemes remove about the same volume per stage (same DEM, same amplification), so
-  // 3.5 times the reference's stages reach three times its volume with a margin.
-  const int n_staged = int(std::ceil(3.5 * double(ref_applied.size())));
+  // Both schemes remove about the same volume per stage at the same amplification; the staged
+  // stages that the depth cap slows (below) remove less, so 5 times the reference's stages
+  // leave a margin for reaching three times its volume.
+  const int n_staged = int(std::ceil(5.0 * double(ref_applied.size())));
 
   // The staged scheme remeshes and keeps every mesh valid to three times that volume, i.e.
-  // three times the mean wear depth. Wear gathers at the sharpening leading tip of an
-  // element, which the remesher refines (0.6 mm edges at stage 17), so the cap per stage is
-  // set loose here (10 edge lengths); the wear stage splits itself where the surface would
-  // fold, and spreads the wear around a tip that folds even so.
+  // three times the mean wear depth. Wear gathers at the sharpening leading tips of the
+  // elements and in a groove along the sample's exposed leading edge, which the remesher
+  // refines, so the cap per stage is set loose here (10 edge lengths); the wear stage splits
+  // itself where the surface would fold, and spreads the wear around a tip that folds even
+  // so. Where one revolution at 100x would still recede a groove vertex past the cap (8.3 mm
+  // at a 0.7 mm edge in stage 10 of a run at fixed 100x), the stage runs at the amplification
+  // that meets the cap, as the wear-out case does; the reference method has no such way out,
+  // its distortion being a matter of the accumulated shape, not of the step.
   auto staged =
       small_case("coupled_run_staged", std::to_string(n_staged) + " staged", amplification);
   staged.coupling.max_depth_fraction = 10.0;
+  staged.coupling.adaptive_amplification = true;
+  staged.coupling.min_amplification = 5.0;
   std::filesystem::remove_all(staged.output.directory);
   std::ostringstream log;
   CoupledRun run(staged, log, {false, false, 0});
@@ -271,7 +278,8 @@ TEST_CASE("wearsim run: past the node-moving method's distortion limit the stage
   // Where the wear face reaches the clamped bottom (the sample has no holder; wear gathers
   // at its exposed leading corner) the sample is worn through and that wear is recorded, not
   // removed: the criterion counts the volume actually removed from the mesh.
-  double removed = 0, worn_through = 0;
+  double removed = 0, worn_through = 0, lowest_amplification = amplification;
+  int n_slowed = 0;
   for (const auto& s : stages) {
     INFO("stage " << s.stage);
     CHECK(s.min_scaled_jacobian > 0); // no inverted or flat cell handed on
@@ -279,11 +287,15 @@ TEST_CASE("wearsim run: past the node-moving method's distortion limit the stage
           5e-3 * s.applied_volume);
     removed += s.geometry_volume_change;
     worn_through += s.worn_through_volume;
+    lowest_amplification = std::min(lowest_amplification, s.amplification);
+    n_slowed += s.amplification < amplification;
   }
   INFO(log.str() << "\nstopped early: " << stopped << "\nremoved " << removed / distorted_at
                  << " times the reference's distortion volume in " << stages.size()
                  << " stages; worn through (asked, not removed): " << worn_through * 1e9
-                 << " mm^3 of " << stages.back().cumulative_applied * 1e9 << " mm^3");
+                 << " mm^3 of " << stages.back().cumulative_applied * 1e9 << " mm^3; " << n_slowed
+                 << " stages below " << amplification << "x, lowest " << lowest_amplification
+                 << "x");
   CHECK(stages.back().total_remeshes > 0);
   CHECK(removed > 3 * distorted_at);
   // The worn-through wear is the exposed corner's, a small part of the whole.
