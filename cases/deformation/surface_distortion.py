@@ -20,7 +20,7 @@ import numpy as np
 
 def read_stage(path):
     with h5py.File(path, "r") as f:
-        return f["points"][...], f["triangles"][...], f["cell/label"][...].ravel()
+        return f["points"][...], f["triangles"][...]
 
 
 def normals_and_quality(x, t):
@@ -48,13 +48,13 @@ def report(run):
     files = sorted(glob.glob(os.path.join(run, "surface", "stage_*.h5")))
     if len(files) < 2:
         sys.exit(f"surface_distortion.py: {run}/surface holds fewer than two stage_*.h5 files")
-    x0, t0, _ = read_stage(files[0])
+    x0, t0 = read_stage(files[0])
     n0, q0 = normals_and_quality(x0, t0)
     edge0 = longest_edge_at_vertex(x0, t0)
     print(f"{run}: {len(t0)} faces, unworn smallest quality {q0.min():.3f}")
     print("stage  deepest[mm]  /longest edge  max normal turn[deg]  at x, y [mm]    min quality")
     for path in files[1:]:
-        x, t, _ = read_stage(path)
+        x, t = read_stage(path)
         if len(x) != len(x0) or not np.array_equal(t, t0):
             print(f"{os.path.basename(path)}: other connectivity (remeshed); not a node-moving run")
             return
