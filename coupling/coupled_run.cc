@@ -424,16 +424,18 @@ void CoupledRun::update_geometry(const meshes::FaceField<double>& removed, Stage
   r.motion_seconds = report.motion_seconds;
   r.remesh_seconds = report.remesh_seconds;
   if (report.n_relaxation_halvings > 0)
-    log_ << "stage " << r.stage << ": the surface relaxation alone folded the surface and was "
-         << "halved " << report.n_relaxation_halvings << " time(s)\n";
+    log_ << "stage " << r.stage << ": the surface relaxation was halved "
+         << report.n_relaxation_halvings
+         << " time(s) (alone it folded the surface or removed the whole increment)\n";
   if (report.n_held_restorations > 0)
     log_ << "stage " << r.stage << ": after " << report.n_held_restorations
          << " remesh(es) the volume-restoring offset would have folded the surface and was held "
-            "still around the fold"
-         << (report.volume_not_restored != 0 ? format(" (%.3g mm^3 of chord volume not given back)",
-                                                      report.volume_not_restored * 1e9)
-                                             : std::string())
-         << '\n';
+            "still around the fold\n";
+  if (report.volume_not_restored != 0)
+    log_ << "stage " << r.stage
+         << format(": %.3g mm^3 of chord volume not given back after remeshing (the restoring "
+                   "offset folded or fell short)\n",
+                   report.volume_not_restored * 1e9);
   for (const auto& refusal : report.remesh_refusals)
     log_ << "stage " << r.stage << ": a remesh needed more than one attempt; refused:" << refusal
          << '\n';

@@ -40,7 +40,8 @@ struct RemeshReport {
   double volume_restored = 0;    ///< [m^3] after WornSample's volume-restoring offset
   /// vertex rings around a fold within which that offset was held still (0: nowhere)
   int restore_held_rings = 0;
-  /// [m^3] enclosed volume the offset could not give back without folding (new - worn)
+  /// [m^3] enclosed volume the offset could not give back, because it folded or fell short
+  /// of the target (new - worn)
   double volume_not_restored = 0;
   double surface_distance = 0;       ///< [m] largest distance of new surface points to the old
   std::map<int, double> area_before; ///< [m^2] per label

@@ -10,7 +10,8 @@
 // normals folds where the depth exceeds the local radius of curvature, and smaller steps on the
 // updated surface follow the receding front instead. If the relaxation alone already folds the
 // surface (large umbrella offsets beside the small triangles of a graded remesh), no smaller step
-// helps: it is halved for the rest of the stage, and turned off after six halvings. Where even
+// helps: it is halved for the rest of the stage, and turned off after six halvings (so it is
+// when its own volume loss would be the whole increment, leaving the recession nothing). Where even
 // small steps fold (a tip sharpened by wear on one flank: the fronts of its two flanks meet), the
 // remaining wear is spread over the fold's neighbourhood (meshes::spread_removed_volume, total
 // kept), so the tip recedes as a whole instead of being cut into a sliver. The interior follows
@@ -19,16 +20,17 @@
 // back by a uniform normal offset of the wear face, so volume is conserved across remeshing to
 // round-off of the secant (the wear record is the volume, not the chord geometry); where that
 // offset would fold the surface, it is held still within 1, 2, 4, 8 rings of the fold, and
-// given up (volume not restored, reported) if it still folds. Accumulated
-// fields follow the faces while the topology is kept and are transferred (FaceTransfer: extensive
-// per label, exactly; intensive by area) across a remesh. A wearing face with a vertex within
-// `worn_through_thickness` of the clamped bottom is worn through: the model has no material left
-// there (a hole would change the topology), so the wear asked of it is recorded as worn-through
-// volume instead of removed, and the stage ends with volume change = asked - worn through.
-// Increments that would take a vertex more than halfway through that layer are split like folding
-// ones, and so are increments whose recession cannot reach the asked volume (one vertex carried
-// far past its neighbours: the swept volume stops growing with the offset); at the last split
-// that stops the stage with a message instead of handing on a surface short of the wear.
+// given up if it still folds; what it does not give back (given up, or a valid offset short
+// of the target) is reported as volume not restored.
+// Accumulated fields follow the faces while the topology is kept and are transferred (FaceTransfer:
+// extensive per label, exactly; intensive by area) across a remesh. A wearing face with a vertex
+// within `worn_through_thickness` of the clamped bottom is worn through: the model has no material
+// left there (a hole would change the topology), so the wear asked of it is recorded as
+// worn-through volume instead of removed, and the stage ends with volume change = asked - worn
+// through. Increments that would take a vertex more than halfway through that layer are split like
+// folding ones, and so are increments whose recession cannot reach the asked volume (one vertex
+// carried far past its neighbours: the swept volume stops growing with the offset); at the last
+// split that stops the stage with a message instead of handing on a surface short of the wear.
 #include "fem/worn_sample.h"
 
 #include "fem/sample_triangulation.h"
@@ -240,6 +242,13 @@ WearStageReport WornSample::apply_wear(const meshes::FaceField<double>& removed)
       if (std::abs(relaxation_loss) <= 0.25 * part_sum)
         break;
     }
+    // A relaxation that alone removes the whole increment would leave the recession nothing
+    // to scale (and the increment would remove more than asked): relax less.
+    if (part_sum > 0 && relaxation_loss >= part_sum && relax > 0) {
+      relax = relax > 1.0 / 32 ? 0.5 * relax : 0.0;
+      ++r.n_relaxation_halvings;
+      continue;
+    }
     std::vector<double> recede = part;
     if (part_sum > 0)
       for (auto& v : recede)
@@ -408,13 +417,21 @@ RemeshReport WornSample::remesh_from(const meshes::SurfaceMesh& worn) {
   std::vector<char> held(fresh.n_faces(), 0);
   std::vector<meshes::Vec3> offset;
   for (int rings = 0;;) {
-    offset = volume_restoring_offset(fresh, target, rings > 0 ? &held : nullptr).displacement;
+    const auto restoring = volume_restoring_offset(fresh, target, rings > 0 ? &held : nullptr);
+    offset = restoring.displacement;
     meshes::SurfaceMesh candidate = fresh;
     for (std::size_t v = 0; v < candidate.n_vertices(); ++v)
       candidate.vertices[v] += offset[v];
     const auto q = meshes::surface_quality(candidate, &normals);
-    if (q.valid())
+    if (q.valid()) {
+      // The secant scaling can end short of the target (an offset that stops sweeping volume,
+      // or free faces too few to hold it): the valid offset is kept, and what it does not
+      // give back is reported, never counted as restored.
+      const double miss = restoring.swept_volume - restoring.removed_volume;
+      if (std::abs(miss) > 1e-4 * std::abs(restoring.removed_volume))
+        report.volume_not_restored = meshes::enclosed_volume(candidate) - target;
       break;
+    }
     if (rings == 8) {
       // Every restoring offset folded: hand on the remeshed surface (valid: remesh_sample
       // refuses folds) with the chord volume not given back.

@@ -50,7 +50,8 @@ struct WearStageReport {
   int n_worn_through = 0; ///< faces worn through when the stage ended
   /// remeshes whose volume-restoring offset was held still around a fold it would make
   int n_held_restorations = 0;
-  /// [m^3] chord volume of remeshes whose every restoring offset folded (new - worn surface)
+  /// [m^3] chord volume the remeshes did not give back: every restoring offset folded, or the
+  /// valid one fell short of the target (new - worn surface)
   double volume_not_restored = 0;
   RemeshReport last_remesh; ///< valid when n_remeshes > 0
   /// RemeshReport::failed_attempts of each remesh in the stage that needed more than one
