@@ -7,6 +7,7 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <cmath>
 #include <vector>
 
 namespace wear::fem {
@@ -16,6 +17,11 @@ struct Recession {
   double removed_volume = 0;              ///< [m^3] requested (sum of the field)
   double swept_volume = 0;                ///< [m^3] enclosed-volume loss after correction
   double scale = 1;                       ///< correction applied to the area-weighted depths
+  /// The secant scaling can end short of the target (an offset that stops sweeping volume):
+  /// true when the swept volume misses the requested one by more than 1e-4 of it.
+  bool missed_target() const {
+    return std::abs(swept_volume - removed_volume) > 1e-4 * std::abs(removed_volume);
+  }
 };
 
 /// Per-vertex recession of the wear face (labels base and C<j><k>) along the inward

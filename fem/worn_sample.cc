@@ -195,6 +195,10 @@ WearStageReport WornSample::apply_wear(const meshes::FaceField<double>& removed)
   // vertex at once can turn one of them over whatever the increment; then the relaxation, not
   // the recession, folds the surface, and it is halved for the rest of the stage.
   double relax = 1;
+  const auto relax_less = [&] {
+    relax = relax > 1.0 / 32 ? 0.5 * relax : 0.0;
+    ++r.n_relaxation_halvings;
+  };
   while (n_left > 0) {
     const auto& s = surface();
     // Faces worn down to the clamped bottom have no material left: what is asked of them is
@@ -245,14 +249,13 @@ WearStageReport WornSample::apply_wear(const meshes::FaceField<double>& removed)
     // A relaxation that alone removes the whole increment would leave the recession nothing
     // to scale (and the increment would remove more than asked): relax less.
     if (part_sum > 0 && relaxation_loss >= part_sum && relax > 0) {
-      relax = relax > 1.0 / 32 ? 0.5 * relax : 0.0;
-      ++r.n_relaxation_halvings;
+      relax_less();
       continue;
     }
     std::vector<double> recede = part;
     if (part_sum > 0)
       for (auto& v : recede)
-        v *= std::max(0.0, 1 - relaxation_loss / part_sum);
+        v *= 1 - relaxation_loss / part_sum; // > 0: checked above (relax = 0 loses nothing)
     const meshes::SurfaceMesh relaxed = candidate;
     const auto rec = compute_recession(candidate, recede);
     for (std::size_t v = 0; v < candidate.n_vertices(); ++v) {
@@ -263,8 +266,7 @@ WearStageReport WornSample::apply_wear(const meshes::FaceField<double>& removed)
     // which the enclosed volume drops by the asked amount (the swept volume stops growing
     // with the offset); the secant scaling then ends short of it, on a surface that looks
     // valid. Such an increment is taken in smaller steps, never handed on short.
-    const double volume_miss = std::abs(rec.swept_volume - rec.removed_volume);
-    if (volume_miss > 1e-4 * rec.removed_volume) {
+    if (rec.missed_target()) {
       if (halvings < p_.max_halvings) {
         n_left *= 2;
         ++halvings;
@@ -292,8 +294,7 @@ WearStageReport WornSample::apply_wear(const meshes::FaceField<double>& removed)
       continue;
     }
     if (!sq.valid() && relax > 0 && !meshes::surface_quality(relaxed, &normals).valid()) {
-      relax = relax > 1.0 / 32 ? 0.5 * relax : 0.0;
-      ++r.n_relaxation_halvings;
+      relax_less();
       continue;
     }
     if (!sq.valid()) {
@@ -427,9 +428,8 @@ RemeshReport WornSample::remesh_from(const meshes::SurfaceMesh& worn) {
       // The secant scaling can end short of the target (an offset that stops sweeping volume,
       // or free faces too few to hold it): the valid offset is kept, and what it does not
       // give back is reported, never counted as restored.
-      const double miss = restoring.swept_volume - restoring.removed_volume;
-      if (std::abs(miss) > 1e-4 * std::abs(restoring.removed_volume))
-        report.volume_not_restored = meshes::enclosed_volume(candidate) - target;
+      if (restoring.missed_target())
+        report.volume_not_restored = restoring.removed_volume - restoring.swept_volume;
       break;
     }
     if (rings == 8) {

@@ -473,7 +473,7 @@ TEST_CASE("an offset that cannot reach its volume reports what it reaches", "[fe
       moved.vertices[v] += rec.displacement[v];
     return v0 - wear::meshes::enclosed_volume(moved);
   };
-  // Within reach: a quarter of the volume, 1e-12 relative as in the box test above.
+  // Within reach: a quarter of the volume, to 1e-10.
   const auto in_reach = volume_restoring_offset(m, 0.75 * v0);
   CHECK(in_reach.swept_volume == Approx(0.25 * v0).epsilon(1e-10));
   CHECK(achieved(in_reach) == Approx(0.25 * v0).epsilon(1e-10));
