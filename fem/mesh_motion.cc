@@ -303,7 +303,7 @@ std::vector<Vec3> crease_relaxation(const meshes::SurfaceMesh& surface, double w
     if (faces.size() != 2 || meshes::label::wears(surface.face_labels[faces[0]]) ==
                                  meshes::label::wears(surface.face_labels[faces[1]]))
       continue;
-    for (const auto [v, w] : {std::pair{edge.first, edge.second}, {edge.second, edge.first}}) {
+    for (const auto& [v, w] : {std::pair{edge.first, edge.second}, {edge.second, edge.first}}) {
       if (n_along[v] < 2)
         along[v][std::size_t(n_along[v])] = w;
       ++n_along[v];
