@@ -13,6 +13,8 @@
 // maxima use every quadrature point.
 #include "fem/elasticity.h"
 
+#include "meshes/stopwatch.h"
+
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -27,7 +29,6 @@
 #include <Epetra_Map.h>
 #include <Teuchos_ParameterList.hpp>
 
-#include <chrono>
 #include <stdexcept>
 
 namespace wear::fem {
@@ -35,9 +36,6 @@ namespace wear::fem {
 using namespace dealii;
 
 namespace {
-double seconds_since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
 
 SymmetricTensor<4, 3> stiffness(double E, double nu) {
   const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
@@ -62,6 +60,48 @@ double von_mises_of(const SymmetricTensor<2, 3>& s) {
   const auto d = deviator(s);
   return std::sqrt(1.5 * scalar_product(d, d));
 }
+
+// Adds the nodal residual K_c u_c of one cell (K_c its stiffness matrix, fv reinitialised on
+// it, `dofs` its DoFs) to `residual`.
+void add_cell_residual(const FEValues<3>& fv, const SymmetricTensor<4, 3>& C,
+                       const std::vector<types::global_dof_index>& dofs, const Vector<double>& u,
+                       Vector<double>& residual) {
+  const unsigned int n = dofs.size();
+  const FEValuesExtractors::Vector displacement(0);
+  FullMatrix<double> cell_matrix(n, n);
+  Vector<double> u_local(n), ku(n);
+  for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
+    for (unsigned int i = 0; i < n; ++i) {
+      const auto Ce = C * fv[displacement].symmetric_gradient(i, q);
+      for (unsigned int j = 0; j < n; ++j)
+        cell_matrix(i, j) += (Ce * fv[displacement].symmetric_gradient(j, q)) * fv.JxW(q);
+    }
+  for (unsigned int i = 0; i < n; ++i)
+    u_local(i) = u(dofs[i]);
+  cell_matrix.vmult(ku, u_local);
+  for (unsigned int i = 0; i < n; ++i)
+    residual(dofs[i]) += ku(i);
+}
+
+// Adds the force the clamped face exerts on the sample [N] to `reaction`: the nodal residual
+// K u - f of the unconstrained system (`residual` = K u), summed per component over the
+// clamped DoFs.
+void add_reaction_force(const DoFHandler<3>& dof_handler, const FESystem<3>& fe,
+                        const AffineConstraints<double>& constraints,
+                        const Vector<double>& residual, const Vector<double>& unconstrained_rhs,
+                        meshes::Vec3& reaction) {
+  // Component of each DoF from the finite element (robust to DoF numbering).
+  std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+  std::vector<unsigned int> component(dof_handler.n_dofs(), 0);
+  for (const auto& cell : dof_handler.active_cell_iterators()) {
+    cell->get_dof_indices(dofs);
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      component[dofs[i]] = fe.system_to_component_index(i).first;
+  }
+  for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+    if (constraints.is_constrained(i))
+      reaction[component[i]] += residual(i) - unconstrained_rhs(i);
+}
 } // namespace
 
 ElasticitySolver::ElasticitySolver(const Triangulation<3>& tria, const BoundaryFaceMap& faces,
@@ -82,16 +122,16 @@ ElasticityResult ElasticitySolver::run(const meshes::FaceField<meshes::Vec3>& fo
     throw std::invalid_argument("face field '" + forces.name() +
                                 "' must be extensive (forces per face, not tractions)");
   ElasticityResult r;
-  auto t = std::chrono::steady_clock::now();
+  meshes::Stopwatch clock;
   setup_system();
-  r.setup_seconds = seconds_since(t);
+  r.setup_seconds = clock.seconds();
   r.n_dofs = dof_handler_.n_dofs();
-  t = std::chrono::steady_clock::now();
+  clock.restart();
   assemble_system(forces, r);
-  r.assemble_seconds = seconds_since(t);
-  t = std::chrono::steady_clock::now();
+  r.assemble_seconds = clock.seconds();
+  clock.restart();
   solve(r);
-  r.solve_seconds = seconds_since(t);
+  r.solve_seconds = clock.seconds();
   compute_stresses(r);
   return r;
 }
@@ -232,8 +272,7 @@ void ElasticitySolver::compute_stresses(ElasticityResult& r) {
   const QGaussSimplex<3> quadrature(fe_.degree + 1);
   FEValues<3> fv(mapping_, fe_, quadrature, update_gradients | update_JxW_values);
   const auto C = stiffness(p_.youngs_modulus, p_.poisson_ratio);
-  const unsigned int n = fe_.n_dofs_per_cell();
-  std::vector<types::global_dof_index> dofs(n);
+  std::vector<types::global_dof_index> dofs(fe_.n_dofs_per_cell());
   std::vector<SymmetricTensor<2, 3>> strain(quadrature.size());
   von_mises_.reinit(tria_.n_active_cells());
   for (auto& p : principal_)
@@ -241,8 +280,6 @@ void ElasticitySolver::compute_stresses(ElasticityResult& r) {
   std::vector<double> cell_max(tria_.n_active_cells(), 0);
   // Reaction: (K u - f) of the unconstrained system on the clamped DoFs.
   Vector<double> residual(dof_handler_.n_dofs());
-  FullMatrix<double> cell_matrix(n, n);
-  Vector<double> u_local(n), ku(n);
   for (const auto& cell : dof_handler_.active_cell_iterators()) {
     fv.reinit(cell);
     fv[FEValuesExtractors::Vector(0)].get_function_symmetric_gradients(solution_, strain);
@@ -272,34 +309,13 @@ void ElasticitySolver::compute_stresses(ElasticityResult& r) {
       }
     // Vertices on the clamped face may belong to cells without a clamped face.
     cell->get_dof_indices(dofs);
-    for (unsigned int i = 0; i < n && !clamped; ++i)
+    for (unsigned int i = 0; i < dofs.size() && !clamped; ++i)
       clamped = constraints_.is_constrained(dofs[i]);
-    if (!clamped)
-      continue;
-    cell_matrix = 0;
-    for (unsigned int q = 0; q < quadrature.size(); ++q)
-      for (unsigned int i = 0; i < n; ++i) {
-        const auto Ce = C * fv[FEValuesExtractors::Vector(0)].symmetric_gradient(i, q);
-        for (unsigned int j = 0; j < n; ++j)
-          cell_matrix(i, j) +=
-              (Ce * fv[FEValuesExtractors::Vector(0)].symmetric_gradient(j, q)) * fv.JxW(q);
-      }
-    for (unsigned int i = 0; i < n; ++i)
-      u_local(i) = solution_(dofs[i]);
-    cell_matrix.vmult(ku, u_local);
-    for (unsigned int i = 0; i < n; ++i)
-      residual(dofs[i]) += ku(i);
+    if (clamped)
+      add_cell_residual(fv, C, dofs, solution_, residual);
   }
-  // Component of each DoF from the finite element (robust to DoF numbering).
-  std::vector<unsigned int> component(dof_handler_.n_dofs(), 0);
-  for (const auto& cell : dof_handler_.active_cell_iterators()) {
-    cell->get_dof_indices(dofs);
-    for (unsigned int i = 0; i < n; ++i)
-      component[dofs[i]] = fe_.system_to_component_index(i).first;
-  }
-  for (types::global_dof_index i = 0; i < dof_handler_.n_dofs(); ++i)
-    if (constraints_.is_constrained(i))
-      r.reaction_force[component[i]] += residual(i) - unconstrained_rhs_(i);
+  add_reaction_force(dof_handler_, fe_, constraints_, residual, unconstrained_rhs_,
+                     r.reaction_force);
   r.safety_factor = r.max_von_mises > 0 ? p_.yield_stress / r.max_von_mises : 0;
   r.max_displacement = solution_.linfty_norm();
 }

@@ -1,10 +1,9 @@
-// Boundary recession, interior mesh motion and tetrahedron quality.
+// Surface relaxation before a recession, interior mesh motion and tetrahedron quality.
 //
-// Recession (model.md section 6): node v of the wear face moves by -s * D_v n_v with
-//   D_v = sum_{f in W(v)} V_f / sum_{f in W(v)} A_f,  n_v = normalized(sum_{f in W(v)} A_f n_f)
-// over the wearing faces W(v) around v. The averaging smooths the depth field and does not
-// conserve volume where wear is concentrated, so the scale s is found by secant steps on
-// g(s) = volume loss(s) - sum V_f, which is smooth and monotone for small recessions.
+// The recession itself (model.md section 6) is in meshes/recession.cc.
+// Relaxation: a vertex moves by a weight times the offset to the mean of its edge neighbours,
+// restricted to its tangent plane (worn region), its flat face group or crease (unworn
+// surface), or the chord between its crease neighbours (where the wear face meets a side).
 // Mesh motion: for each component, -div(gamma grad d) = 0 with gamma = 1 / |K| per cell
 // (Jasak & Tukovic: small cells near the worn surface stiffen and move rigidly), P1 on the
 // current mesh, d prescribed on every boundary vertex (the recession on the wear face, zero
@@ -15,8 +14,8 @@
 //   dihedral angle at edge (i, j) = pi - angle between the outward normals of its two faces.
 #include "fem/mesh_motion.h"
 
-#include "meshes/recession.h"
 #include "meshes/sliding_constraint.h"
+#include "meshes/stopwatch.h"
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -34,7 +33,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
@@ -52,49 +50,6 @@ Vec3 point(const dealii::Point<3>& p) {
 double signed_volume(const Vec3 v[4]) {
   return meshes::dot(v[1] - v[0], meshes::cross(v[2] - v[0], v[3] - v[0])) / 6.0;
 }
-// The scale s of the displacement field `unit` at which the enclosed volume drops by
-// `target` (negative: grows), by secant steps from s = first_guess and s = 0.
-double scale_to_volume_loss(const meshes::SurfaceMesh& surface, const std::vector<Vec3>& unit,
-                            double target, double* achieved, double first_guess = 1) {
-  const std::size_t nv = surface.n_vertices();
-  const double v0 = meshes::enclosed_volume(surface);
-  meshes::SurfaceMesh moved = surface;
-  const auto loss = [&](double s) {
-    for (std::size_t v = 0; v < nv; ++v)
-      moved.vertices[v] = surface.vertices[v] + unit[v] * s;
-    return v0 - meshes::enclosed_volume(moved);
-  };
-  if (first_guess == 0) {
-    // Linearised first step: d(loss)/ds at s = 0 is the area swept per unit offset.
-    const double eps = 1e-9 * std::cbrt(std::abs(v0));
-    first_guess = target * eps / loss(eps);
-  }
-  double s0 = 0, g0 = -target, s1 = first_guess, g1 = loss(s1) - target;
-  // The enclosed volume is a sum over all faces: its round-off, not the target, limits the
-  // attainable accuracy; stop there rather than divide by a vanishing secant.
-  const double tolerance = std::max(1e-12 * std::abs(target), 1e-14 * std::abs(v0));
-  for (int k = 0; k < 20 && std::abs(g1) > tolerance && g1 != g0; ++k) {
-    const double s2 = s1 - g1 * (s1 - s0) / (g1 - g0);
-    s0 = s1;
-    g0 = g1;
-    s1 = s2;
-    g1 = loss(s1) - target;
-  }
-  *achieved = g1 + target;
-  return s1;
-}
-
-// The area-weighted recession with the vertices the wear face shares with the unworn
-// surface kept on it: they slide down a flat side instead of leaving its plane.
-std::vector<Vec3> constrained_recession(const meshes::SurfaceMesh& surface,
-                                        const std::vector<double>& removed_volume) {
-  std::vector<Vec3> unit = meshes::area_weighted_recession(surface, removed_volume);
-  const auto constraint = meshes::sliding_constraints(surface);
-  for (std::size_t v = 0; v < unit.size(); ++v)
-    unit[v] = constraint[v].apply(unit[v]);
-  return unit;
-}
-
 // Per vertex, the mean of its edge neighbours minus its position; each interior edge is seen
 // from both of its faces, so every neighbour counts twice.
 std::vector<Vec3> neighbour_offsets(const meshes::SurfaceMesh& surface) {
@@ -204,55 +159,6 @@ unsigned int laplace_step(dealii::Triangulation<3>& tria, const std::vector<Vec3
 }
 
 } // namespace
-
-Recession compute_recession(const meshes::SurfaceMesh& surface,
-                            const std::vector<double>& removed_volume) {
-  const std::size_t nf = surface.n_faces(), nv = surface.n_vertices();
-  if (removed_volume.size() != nf)
-    throw std::invalid_argument("recession: " + std::to_string(removed_volume.size()) +
-                                " face volumes for a surface of " + std::to_string(nf) + " faces");
-  Recession r;
-  for (std::size_t f = 0; f < nf; ++f) {
-    if (!(removed_volume[f] >= 0) || !std::isfinite(removed_volume[f]))
-      throw std::invalid_argument("recession: removed volume of face " + std::to_string(f) +
-                                  " is negative or not finite");
-    if (meshes::label::wears(surface.face_labels[f]))
-      r.removed_volume += removed_volume[f];
-  }
-  const std::vector<Vec3> unit = constrained_recession(surface, removed_volume);
-  r.displacement.assign(nv, {});
-  if (r.removed_volume == 0)
-    return r;
-  r.scale = scale_to_volume_loss(surface, unit, r.removed_volume, &r.swept_volume);
-  for (std::size_t v = 0; v < nv; ++v)
-    r.displacement[v] = unit[v] * r.scale;
-  return r;
-}
-
-Recession volume_restoring_offset(const meshes::SurfaceMesh& surface, double target_volume,
-                                  const std::vector<char>* held_faces) {
-  // Unit inward offset of the wear face: the recession of a depth of 1 m everywhere, 0 on
-  // held faces (their vertices shared with free faces take the area-weighted mean: a taper).
-  std::vector<double> unit_depth = meshes::face_areas(surface);
-  if (held_faces) {
-    if (held_faces->size() != surface.n_faces())
-      throw std::invalid_argument("volume-restoring offset: mask of the wrong size");
-    for (std::size_t f = 0; f < unit_depth.size(); ++f)
-      if ((*held_faces)[f])
-        unit_depth[f] = 0;
-  }
-  const std::vector<Vec3> unit = constrained_recession(surface, unit_depth);
-  Recession r;
-  r.removed_volume = meshes::enclosed_volume(surface) - target_volume;
-  r.displacement.assign(surface.n_vertices(), {});
-  if (r.removed_volume == 0 ||
-      std::none_of(unit.begin(), unit.end(), [](const Vec3& u) { return meshes::norm(u) > 0; }))
-    return r; // nothing to give back, or nothing free to move
-  r.scale = scale_to_volume_loss(surface, unit, r.removed_volume, &r.swept_volume, 0);
-  for (std::size_t v = 0; v < surface.n_vertices(); ++v)
-    r.displacement[v] = unit[v] * r.scale;
-  return r;
-}
 
 std::vector<Vec3> tangential_relaxation(const meshes::SurfaceMesh& surface,
                                         const std::vector<char>& moving, double weight,
@@ -408,7 +314,7 @@ VolumeQuality volume_quality(const dealii::Triangulation<3>& tria, std::vector<d
 meshes::SurfaceMesh move_mesh(dealii::Triangulation<3>& tria, const BoundaryFaceMap& map,
                               const std::vector<Vec3>& surface_displacement, MotionReport* report) {
   using namespace dealii;
-  const auto start = std::chrono::steady_clock::now();
+  const meshes::Stopwatch start;
   const auto& surface = map.surface();
   if (surface_displacement.size() != surface.n_vertices())
     throw std::invalid_argument(
@@ -458,8 +364,7 @@ meshes::SurfaceMesh move_mesh(dealii::Triangulation<3>& tria, const BoundaryFace
     report->iterations = iterations;
     report->substeps = n_sub;
     report->quality = volume_quality(tria);
-    report->seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    report->seconds = start.seconds();
   }
   return out;
 }

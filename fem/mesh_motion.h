@@ -1,44 +1,15 @@
 #pragma once
-// Wear applied to the volume mesh: recession of the worn boundary from an extensive
-// removed-volume field, interior mesh motion, and volume-mesh quality.
+// Wear applied to the volume mesh: relaxation of the worn surface before its recession
+// (meshes/recession.h), interior mesh motion, and volume-mesh quality.
 #include "fem/boundary_face_map.h"
 #include "meshes/sliding_constraint.h"
 #include "meshes/surface_mesh.h"
 
 #include <deal.II/grid/tria.h>
 
-#include <cmath>
 #include <vector>
 
 namespace wear::fem {
-
-struct Recession {
-  std::vector<meshes::Vec3> displacement; ///< [m] per surface vertex (zero off the wear face)
-  double removed_volume = 0;              ///< [m^3] requested (sum of the field)
-  double swept_volume = 0;                ///< [m^3] enclosed-volume loss after correction
-  double scale = 1;                       ///< correction applied to the area-weighted depths
-  /// The secant scaling can end short of the target (an offset that stops sweeping volume):
-  /// true when the swept volume misses the requested one by more than 1e-4 of it.
-  bool missed_target() const {
-    return std::abs(swept_volume - removed_volume) > 1e-4 * std::abs(removed_volume);
-  }
-};
-
-/// Per-vertex recession of the wear face (labels base and C<j><k>) along the inward
-/// area-weighted normal of the wearing faces around each vertex, by the area-weighted mean
-/// depth sum(V_f) / sum(A_f), with the vertices it shares with the unworn surface kept on that
-/// surface (meshes::sliding_constraints: down a flat side, along a crease), then scaled (a few
-/// secant steps) so that the enclosed volume of the closed surface drops by exactly the removed
-/// volume. Throws for a field of the wrong size or a negative volume.
-Recession compute_recession(const meshes::SurfaceMesh& surface,
-                            const std::vector<double>& removed_volume);
-
-/// A uniform offset of the wear face along its inward vertex normals (outward for a negative
-/// scale) that brings the enclosed volume to `target_volume`: gives back the volume a
-/// remeshing cut off as chords across curved regions. removed_volume = current - target.
-/// Faces marked in `held_faces` (one flag per face) do not move, and the rest takes their share.
-Recession volume_restoring_offset(const meshes::SurfaceMesh& surface, double target_volume,
-                                  const std::vector<char>* held_faces = nullptr);
 
 /// Tangential relaxation of a worn region: every vertex with `moving[v]` whose faces all
 /// carry one wearing label moves by `weight` times the tangential part (normal component

@@ -18,12 +18,12 @@
 #include "meshes/mesh_quality.h"
 #include "meshes/planar_flip.h"
 #include "meshes/sample_generator.h"
+#include "meshes/stopwatch.h"
 #include "meshes/surface_locator.h"
 
 #include <gmsh.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <iomanip>
 #include <set>
@@ -175,35 +175,35 @@ constexpr int keep_surface = 0; // attempt that keeps the input triangles, meshi
 // which has no other attempt to fall back to.
 constexpr double flat_tet_quality = 1e-8;
 
-// One attempt: the discrete model, its parametrisation and the volume mesh with the given
-// 2D algorithm, written to msh_path. Fills the patch and mesh counts of r.
-meshes::SurfaceMesh mesh_discrete_volume(const meshes::SurfaceMesh& worn, const RemeshParameters& p,
-                                         int algorithm, double feature_angle_deg,
-                                         const std::string& msh_path, RemeshReport& r) {
-  meshes::GmshSession session("remesh");
-  // With keep_surface the input entities stay and only the volume is meshed anew.
-  auto label_of = add_discrete_surfaces(worn);
-  r.n_mixed_faces = 0;
-  if (algorithm != keep_surface) {
-    add_label_boundaries(worn);
-    gmsh::model::mesh::classifySurfaces(feature_angle_deg * pi / 180, true, true, pi);
-    label_of = patch_labels(worn, &r.n_mixed_faces);
-    // A small worn region can end up inside a neighbour's patch and lose its label in the
-    // vote; fail this attempt so the next one (finally: keep the worn triangles) is tried.
-    std::set<int> kept;
-    for (const auto& [tag, label] : label_of)
-      kept.insert(label);
-    for (const int label : worn.labels())
-      if (!kept.count(label))
-        throw std::runtime_error("no patch kept label '" + meshes::label::name(label) + "'");
-    // Where wear has rounded the edge between the wear face and a side below the feature
-    // angle, gmsh joins them into one patch, and the vote would relabel a whole side as
-    // wearing down to the clamped bottom: refuse, so the next attempt is tried.
-    if (r.n_mixed_faces > 0)
-      throw std::runtime_error(std::to_string(r.n_mixed_faces) +
-                               " input faces fell into a patch of another label");
-    gmsh::model::mesh::createGeometry();
-  }
+// The patches gmsh splits the input into (at the label boundaries, at feature edges, and
+// where one map cannot parametrise them), with their parametrisation; returns the label of
+// each patch. Refuses (throws) a classification that loses a label or mixes labels in a patch.
+std::map<int, int> classify_patches(const meshes::SurfaceMesh& worn, double feature_angle_deg,
+                                    RemeshReport& r) {
+  add_label_boundaries(worn);
+  gmsh::model::mesh::classifySurfaces(feature_angle_deg * pi / 180, true, true, pi);
+  auto label_of = patch_labels(worn, &r.n_mixed_faces);
+  // A small worn region can end up inside a neighbour's patch and lose its label in the
+  // vote; fail this attempt so the next one (finally: keep the worn triangles) is tried.
+  std::set<int> kept;
+  for (const auto& [tag, label] : label_of)
+    kept.insert(label);
+  for (const int label : worn.labels())
+    if (!kept.count(label))
+      throw std::runtime_error("no patch kept label '" + meshes::label::name(label) + "'");
+  // Where wear has rounded the edge between the wear face and a side below the feature
+  // angle, gmsh joins them into one patch, and the vote would relabel a whole side as
+  // wearing down to the clamped bottom: refuse, so the next attempt is tried.
+  if (r.n_mixed_faces > 0)
+    throw std::runtime_error(std::to_string(r.n_mixed_faces) +
+                             " input faces fell into a patch of another label");
+  gmsh::model::mesh::createGeometry();
+  return label_of;
+}
+
+// The volume enclosed by the surface entities, and one physical group per label (patches
+// labelled by `label_of`) and for the volume, as generate_sample writes them.
+void add_volume(const std::map<int, int>& label_of, RemeshReport& r) {
   gmsh::vectorpair surfaces;
   gmsh::model::getEntities(surfaces, 2);
   std::vector<int> tags;
@@ -222,19 +222,14 @@ meshes::SurfaceMesh mesh_discrete_volume(const meshes::SurfaceMesh& worn, const 
   }
   gmsh::model::addPhysicalGroup(3, {volume}, 1);
   gmsh::model::setPhysicalName(3, 1, "sample");
-  set_size_field(worn, p);
-  if (algorithm != keep_surface)
-    gmsh::option::setNumber("Mesh.Algorithm", algorithm);
-  // gmsh would fall back to MeshAdapt on a patch the chosen algorithm fails on, which on
-  // discrete surfaces can take many minutes (closest-point searches); fail fast instead and
-  // let the next attempt (larger feature angle, other algorithm) take over.
-  gmsh::option::setNumber("Mesh.AlgorithmSwitchOnFailure", 0);
-  gmsh::model::mesh::generate(3);
-  auto remeshed =
-      meshes::gmsh_labelled_surface(&r.n_tetrahedra, &r.volume_after, &r.min_tet_quality);
+}
+
+// Refuses (throws) a new mesh with a tetrahedron of quality at most `lowest`, an open or
+// folding boundary, or a volume or label area that changed by more than the chords explain.
+// Fills r.area_after.
+void check_new_mesh(const meshes::SurfaceMesh& remeshed, double lowest, RemeshReport& r) {
   if (r.n_tetrahedra == 0)
     throw std::runtime_error("gmsh produced no tetrahedra");
-  const double lowest = algorithm == keep_surface ? flat_tet_quality : p.min_tet_quality;
   if (!(r.min_tet_quality > lowest)) {
     std::ostringstream m;
     m << std::setprecision(3) << "gmsh left a tetrahedron of quality " << r.min_tet_quality
@@ -272,15 +267,37 @@ meshes::SurfaceMesh mesh_discrete_volume(const meshes::SurfaceMesh& worn, const 
                                std::to_string(area * 1e6) + " to " + std::to_string(after * 1e6) +
                                " mm^2");
   }
+}
+
+// One attempt: the discrete model, its parametrisation and the volume mesh with the given
+// 2D algorithm, written to msh_path. Fills the patch and mesh counts of r.
+meshes::SurfaceMesh mesh_discrete_volume(const meshes::SurfaceMesh& worn, const RemeshParameters& p,
+                                         int algorithm, double feature_angle_deg,
+                                         const std::string& msh_path, RemeshReport& r) {
+  meshes::GmshSession session("remesh");
+  // With keep_surface the input entities stay and only the volume is meshed anew.
+  auto label_of = add_discrete_surfaces(worn);
+  r.n_mixed_faces = 0;
+  if (algorithm != keep_surface)
+    label_of = classify_patches(worn, feature_angle_deg, r);
+  add_volume(label_of, r);
+  set_size_field(worn, p);
+  if (algorithm != keep_surface)
+    gmsh::option::setNumber("Mesh.Algorithm", algorithm);
+  // gmsh would fall back to MeshAdapt on a patch the chosen algorithm fails on, which on
+  // discrete surfaces can take many minutes (closest-point searches); fail fast instead and
+  // let the next attempt (larger feature angle, other algorithm) take over.
+  gmsh::option::setNumber("Mesh.AlgorithmSwitchOnFailure", 0);
+  gmsh::model::mesh::generate(3);
+  auto remeshed =
+      meshes::gmsh_labelled_surface(&r.n_tetrahedra, &r.volume_after, &r.min_tet_quality);
+  check_new_mesh(remeshed, algorithm == keep_surface ? flat_tet_quality : p.min_tet_quality, r);
   meshes::gmsh_write_msh(msh_path);
   return remeshed;
 }
 
-} // namespace
-
-meshes::SurfaceMesh remesh_sample(const meshes::SurfaceMesh& worn, const RemeshParameters& p,
-                                  const std::string& msh_path, RemeshReport* report) {
-  const auto start = std::chrono::steady_clock::now();
+// Checks the input of remesh_sample: a closed surface and parameters in range.
+void check_remesh_input(const meshes::SurfaceMesh& worn, const RemeshParameters& p) {
   worn.validate("worn surface to remesh");
   const auto closed = meshes::check_closed(worn);
   if (!closed.closed())
@@ -294,37 +311,31 @@ meshes::SurfaceMesh remesh_sample(const meshes::SurfaceMesh& worn, const RemeshP
     throw std::invalid_argument(
         "remeshing: the smallest tetrahedron quality must lie in (0, 1), got " +
         std::to_string(p.min_tet_quality));
-  RemeshReport r;
-  // Relaxed flat sides hold non-Delaunay triangles, which a volume mesher that keeps them can
-  // only fill with flat tetrahedra; flipping them is exact (the same planes).
-  meshes::SurfaceMesh input = worn;
-  r.n_flat_flips = meshes::flip_flat_edges(input);
-  r.n_faces_before = worn.n_faces();
-  r.volume_before = meshes::enclosed_volume(worn);
-  r.area_before = meshes::area_per_label(worn);
+}
 
-  // Frontal-Delaunay at the configured feature angle first. A worn surface can hold creases
-  // of a few degrees more than the angle between its flank and a flattened top, which
-  // classify as jagged feature curves whose segments cut neighbouring facets ("PLC error"
-  // in the volume mesher); a larger angle smooths them out, then Delaunay. Last resort: keep
-  // the worn triangles and mesh only the volume (always possible for a valid closed surface;
-  // it repairs the interior, the surface triangles stay as relaxed by the wear stages).
+// The attempts in turn, until one succeeds (its algorithm and angle go to r); false when
+// none does. Frontal-Delaunay at the configured feature angle first. A worn surface can hold
+// creases of a few degrees more than the angle between its flank and a flattened top, which
+// classify as jagged feature curves whose segments cut neighbouring facets ("PLC error" in
+// the volume mesher); a larger angle smooths them out, then Delaunay. Last resort: keep the
+// worn triangles and mesh only the volume (always possible for a valid closed surface; it
+// repairs the interior, the surface triangles stay as relaxed by the wear stages). The
+// errors of the failed attempts are appended to `errors`.
+bool mesh_first_attempt_that_succeeds(const meshes::SurfaceMesh& input, const RemeshParameters& p,
+                                      const std::string& msh_path, meshes::SurfaceMesh& remeshed,
+                                      RemeshReport& r, std::string& errors) {
   const double angle = p.feature_angle_deg;
   const std::pair<int, double> attempts[] = {{p.surface_algorithm, angle},
                                              {p.surface_algorithm, std::min(89.0, angle + 20)},
                                              {5, std::min(89.0, angle + 20)},
                                              {keep_surface, angle}};
-  meshes::SurfaceMesh remeshed;
-  std::string errors;
-  bool done = false;
   for (const auto& [algorithm, feature_angle] : attempts) {
     try {
       remeshed = mesh_discrete_volume(input, p, algorithm, feature_angle, msh_path, r);
       r.surface_algorithm = algorithm;
       r.feature_angle_deg = feature_angle;
       r.failed_attempts = errors;
-      done = true;
-      break;
+      return true;
     } catch (const std::string& e) { // the gmsh API throws its last error as a string
       errors += " [algorithm " + std::to_string(algorithm) + ", angle " +
                 std::to_string(int(feature_angle)) + "] " + e;
@@ -333,7 +344,26 @@ meshes::SurfaceMesh remesh_sample(const meshes::SurfaceMesh& worn, const RemeshP
                 std::to_string(int(feature_angle)) + "] " + e.what();
     }
   }
-  if (!done) {
+  return false;
+}
+
+} // namespace
+
+meshes::SurfaceMesh remesh_sample(const meshes::SurfaceMesh& worn, const RemeshParameters& p,
+                                  const std::string& msh_path, RemeshReport* report) {
+  const meshes::Stopwatch start;
+  check_remesh_input(worn, p);
+  RemeshReport r;
+  // Relaxed flat sides hold non-Delaunay triangles, which a volume mesher that keeps them can
+  // only fill with flat tetrahedra; flipping them is exact (the same planes).
+  meshes::SurfaceMesh input = worn;
+  r.n_flat_flips = meshes::flip_flat_edges(input);
+  r.n_faces_before = worn.n_faces();
+  r.volume_before = meshes::enclosed_volume(worn);
+  r.area_before = meshes::area_per_label(worn);
+  meshes::SurfaceMesh remeshed;
+  std::string errors;
+  if (!mesh_first_attempt_that_succeeds(input, p, msh_path, remeshed, r, errors)) {
     const std::string dump = msh_path + ".failed-input.msh";
     write_surface_msh(input, dump);
     throw std::runtime_error("remeshing: gmsh failed to mesh the worn volume with every surface "
@@ -347,7 +377,7 @@ meshes::SurfaceMesh remesh_sample(const meshes::SurfaceMesh& worn, const RemeshP
   remeshed.set_revision(worn.revision() + 1);
   r.n_faces_after = remeshed.n_faces();
   r.surface_distance = meshes::one_sided_distance(remeshed, worn);
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.seconds = start.seconds();
   if (report)
     *report = r;
   return remeshed;

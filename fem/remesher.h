@@ -9,6 +9,8 @@
 
 namespace wear::fem {
 
+/// Defaults declared here only; the FEM subsection of a case file sets the feature angle, the
+/// chord tolerance and the tetrahedron quality (FemParameters, fem/fem_parameters.h).
 struct RemeshParameters {
   /// Mesh sizes and grading of the new mesh (mesh_size, mesh_size_bottom, thickness,
   /// curvature_refinement are used), as for the unworn sample.

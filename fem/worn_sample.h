@@ -16,6 +16,8 @@
 
 namespace wear::fem {
 
+/// Defaults declared here only; the FEM subsection of a case file sets some fields
+/// (FemParameters, fem/fem_parameters.h).
 struct WornSampleParameters {
   /// Remesh when the smallest scaled Jacobian after mesh motion falls below this (and
   /// whenever a cell inverts). [-]
@@ -78,6 +80,10 @@ struct WornSampleState {
 WornSampleState triangulation_state(const dealii::Triangulation<3>& tria,
                                     const meshes::SurfaceMesh& surface);
 
+struct StageSplit;     // fem/stage_increment.h
+struct Verdict;        // fem/stage_increment.h
+struct StageIncrement; // fem/stage_increment.h
+
 class WornSample {
 public:
   /// Reads the sample mesh; its boundary surface comes from the triangulation.
@@ -113,7 +119,19 @@ public:
 
 private:
   void set_surface(const meshes::SurfaceMesh& surface);
+  /// Takes an increment the verdict accepted: accumulates its wear (and takes it off
+  /// `remaining`), moves the mesh, and remeshes when the moved mesh holds an inverted or poor
+  /// cell; `remaining` follows onto the new surface.
+  void take_increment(const StageIncrement& inc, meshes::FaceField<double>& remaining,
+                      WearStageReport& r);
+  /// Changes the split (or `remaining`, by spreading) as the verdict on an increment asks;
+  /// throws when the stage gives up.
+  void retry_increment(const Verdict& verdict, const StageIncrement& inc, StageSplit& split,
+                       std::vector<double>& remaining, WearStageReport& r) const;
   RemeshReport remesh_from(const meshes::SurfaceMesh& surface);
+  /// Transfers the accumulated fields from `worn` (the current surface or its moved copy) to
+  /// the remeshed surface `fresh`.
+  void carry_fields(const meshes::SurfaceMesh& worn, const meshes::SurfaceMesh& fresh);
   /// Writes the surface before a failing increment and the folded candidate, bad faces
   /// marked, for diagnosis; returns the paths.
   std::string write_failed_increment(const meshes::SurfaceMesh& before,

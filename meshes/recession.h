@@ -1,18 +1,61 @@
 #pragma once
-// The node displacement of a worn surface shared by the reference deformation (dem/) and the
-// FEM boundary recession (fem/).
+// The recession of a worn surface: how far, and along what, its vertices move for a removed
+// volume per face. One home for both deformation schemes: the reference node-moving scheme
+// (dem/tester/reference_deformation) moves the vertices by area_weighted_recession as it is;
+// the staged scheme (fem/) keeps the vertices shared with the unworn surface on it and scales
+// the field until the enclosed volume drops by exactly the removed volume
+// (volume_exact_recession), and gives back the volume a remesh cut off with the same field
+// (volume_restoring_offset). Where a recession would fold, the removed volume is spread over
+// the fold's neighbourhood first (spread_removed_volume).
 #include "meshes/surface_mesh.h"
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
 namespace wear::meshes {
 
-/// Per vertex: -n_v * sum_f V_f / sum_f A_f over the wearing faces f around the vertex
-/// (labels base and C<j><k>), n_v the normalized area-weighted normal of those faces; zero
-/// for vertices without wearing faces. `removed_volume` is per face [m^3], extensive.
+/// Per vertex: the area-weighted mean depth D_v = sum_f V_f / sum_f A_f over the wearing
+/// faces f around the vertex (labels base and C<j><k>) [m]; zero for vertices without
+/// wearing faces (or whose wearing faces have no area). `removed_volume` is per face [m^3],
+/// extensive.
+std::vector<double> area_weighted_depth(const SurfaceMesh& m,
+                                        const std::vector<double>& removed_volume);
+
+/// Per vertex: -n_v * D_v (area_weighted_depth), n_v the normalized area-weighted normal of
+/// the wearing faces around the vertex; zero for vertices without wearing faces. The node
+/// displacement of the reference scheme, and the direction field of the staged one.
 std::vector<Vec3> area_weighted_recession(const SurfaceMesh& m,
                                           const std::vector<double>& removed_volume);
+
+struct Recession {
+  std::vector<Vec3> displacement; ///< [m] per surface vertex (zero off the wear face)
+  double removed_volume = 0;      ///< [m^3] requested (sum of the field)
+  double swept_volume = 0;        ///< [m^3] enclosed-volume loss after correction
+  double scale = 1;               ///< correction applied to the area-weighted depths
+  /// The secant scaling can end short of the target (an offset that stops sweeping volume):
+  /// true when the swept volume misses the requested one by more than 1e-4 of it.
+  bool missed_target() const {
+    return std::abs(swept_volume - removed_volume) > 1e-4 * std::abs(removed_volume);
+  }
+};
+
+/// The staged scheme's recession: area_weighted_recession with the vertices the wear face
+/// shares with the unworn surface kept on that surface (meshes::sliding_constraints: down a
+/// flat side, along a crease), then scaled (a few secant steps) so that the enclosed volume of
+/// the closed surface drops by exactly the removed volume. Unlike the reference scheme, the
+/// volume is exact and the unworn surface keeps its shape. Throws for a field of the wrong
+/// size or a negative volume.
+Recession volume_exact_recession(const SurfaceMesh& surface,
+                                 const std::vector<double>& removed_volume);
+
+/// A uniform offset of the wear face along its inward vertex normals (outward for a negative
+/// scale; the staged recession of a uniform depth) that brings the enclosed volume to
+/// `target_volume`: gives back the volume a remeshing cut off as chords across curved
+/// regions. removed_volume = current - target. Faces marked in `held_faces` (one flag per
+/// face) do not move, and the rest takes their share.
+Recession volume_restoring_offset(const SurfaceMesh& surface, double target_volume,
+                                  const std::vector<char>* held_faces = nullptr);
 
 /// Per face: 1 for the seeds and the faces within `rings` vertex rings of them, else 0.
 std::vector<char> faces_within_rings(const SurfaceMesh& m, const std::vector<std::uint32_t>& seeds,

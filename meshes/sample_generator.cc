@@ -11,11 +11,11 @@
 #include "meshes/sample_generator.h"
 
 #include "meshes/gmsh_session.h"
+#include "meshes/stopwatch.h"
 
 #include <gmsh.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -26,9 +26,7 @@
 
 namespace wear::meshes {
 
-namespace {
-constexpr double pi = 3.14159265358979323846;
-}
+namespace {}
 
 std::vector<ElementSite> element_sites(const SampleGeometry& s) {
   std::vector<ElementSite> sites;
@@ -67,7 +65,7 @@ int set_sample_size_field(const SampleGeometry& s) {
 
 GeneratedSample generate_sample(const SampleGeometry& s, const std::string& msh_path) {
   validate(s);
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch clock;
   GmshSession session("sample");
   namespace occ = gmsh::model::occ;
   const double W = s.width, L = s.length, t = s.thickness;
@@ -145,7 +143,7 @@ GeneratedSample generate_sample(const SampleGeometry& s, const std::string& msh_
   if (!msh_path.empty())
     gmsh_write_msh(msh_path);
   g.surface = gmsh_labelled_surface(&g.n_tetrahedra, &g.tetrahedral_volume);
-  g.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  g.seconds = clock.seconds();
   return g;
 }
 
@@ -167,38 +165,6 @@ SurfaceMesh read_msh_surface(const std::string& path, std::size_t* n_tets, doubl
   auto m = gmsh_labelled_surface(n_tets, tet_volume);
   m.validate("mesh file '" + path + "'");
   return m;
-}
-
-Vec3 sample_to_tester(const Vec3& p, const SampleGeometry& s, const SamplePlacement& pl) {
-  // Incline: rotate about the radial (x) axis through the wear-face centre; a positive
-  // angle raises the trailing (+y) edge, so the leading edge is lower.
-  const double th = pl.incline_deg * pi / 180;
-  const Vec3 q{p.x, p.y, p.z - s.thickness};
-  const Vec3 r{q.x, q.y * std::cos(th) - q.z * std::sin(th),
-               q.y * std::sin(th) + q.z * std::cos(th)};
-  // Sample x -> radial, y -> tangential (direction of the bed motion), z -> up.
-  const double phi = pl.angle_deg * pi / 180;
-  const double rad = pl.radius + r.x;
-  return {rad * std::cos(phi) - r.y * std::sin(phi), rad * std::sin(phi) + r.y * std::cos(phi),
-          pl.wear_face_height + r.z};
-}
-
-Vec3 tester_to_sample(const Vec3& p, const SampleGeometry& s, const SamplePlacement& pl) {
-  const double phi = pl.angle_deg * pi / 180, th = pl.incline_deg * pi / 180;
-  const double rad = p.x * std::cos(phi) + p.y * std::sin(phi);
-  const Vec3 r{rad - pl.radius, -p.x * std::sin(phi) + p.y * std::cos(phi),
-               p.z - pl.wear_face_height};
-  return {r.x, r.y * std::cos(th) + r.z * std::sin(th),
-          -r.y * std::sin(th) + r.z * std::cos(th) + s.thickness};
-}
-
-SurfaceMesh place_in_tester(const SurfaceMesh& m, const SampleGeometry& s,
-                            const SamplePlacement& pl) {
-  SurfaceMesh out = m;
-  for (auto& v : out.vertices)
-    v = sample_to_tester(v, s, pl);
-  out.bump_revision();
-  return out;
 }
 
 } // namespace wear::meshes

@@ -16,7 +16,7 @@ struct ElementSite {
   double semi_x = 0, semi_y = 0; ///< [m] footprint semi-axes along x (radial) and y (flow)
 };
 
-/// The element layout of wear-tester.md (columns along the flow, k from the inner radius).
+/// The element layout of docs/wear-tester.md (columns along the flow, k from the inner radius).
 std::vector<ElementSite> element_sites(const SampleGeometry& s);
 
 struct GeneratedSample {
@@ -43,14 +43,5 @@ GeneratedSample generate_sample(const SampleGeometry& s, const std::string& msh_
 /// surface physical groups.
 SurfaceMesh read_msh_surface(const std::string& path, std::size_t* n_tetrahedra = nullptr,
                              double* tetrahedral_volume = nullptr);
-
-/// Maps a point from the sample frame into the tester frame (cylindrical sector about z):
-/// incline about the radial axis through the wear-face centre, then placement.
-Vec3 sample_to_tester(const Vec3& p, const SampleGeometry& s, const SamplePlacement& pl);
-/// Inverse of sample_to_tester.
-Vec3 tester_to_sample(const Vec3& p, const SampleGeometry& s, const SamplePlacement& pl);
-/// The sample surface moved into the tester frame (a proper rotation: orientation kept).
-SurfaceMesh place_in_tester(const SurfaceMesh& m, const SampleGeometry& s,
-                            const SamplePlacement& pl);
 
 } // namespace wear::meshes

@@ -10,8 +10,8 @@ bash scripts/build.sh
 ./build/wearsim run cases/quick/plain.prm
 ./build/wearsim run cases/quick/convex.prm
 ./build/wearsim compare output/quick-plain output/quick-convex
-/usr/bin/python3 coupling/plot_run.py output/quick-plain output/quick-convex
-/usr/bin/python3 coupling/plot_run.py --compare output/quick-plain output/quick-convex \
+/usr/bin/python3 coupling/output/plot_run.py output/quick-plain output/quick-convex
+/usr/bin/python3 coupling/output/plot_run.py --compare output/quick-plain output/quick-convex \
   --output output/quick-compare
 echo
 echo "plots: output/quick-plain/plots/, output/quick-convex/plots/, output/quick-compare/compare.png"

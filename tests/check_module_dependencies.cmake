@@ -1,9 +1,19 @@
-# Fails when a module includes what it must not: dem/ and meshes/ never include deal.II or
-# fem/; fem/ never includes dem/; meshes/ never includes dem/ either (links go one way).
+# Fails when a module includes what it must not (links go one way):
+#   meshes/ includes no other module and no deal.II;
+#   dem/ never includes deal.II, fem/ or coupling/, and its engine never includes the wear
+#   tester built on it (dem/tester/);
+#   fem/ never includes dem/ or coupling/;
+#   inside coupling/, only the command line (app/) sees everything: the loop and the run
+#   output never include app/, and the parameters include neither the loop, the output nor
+#   the command line.
 set(rules
   "meshes|deal\\.II/|fem/|dem/|coupling/"
   "dem|deal\\.II/|fem/|coupling/"
-  "fem|dem/|coupling/")
+  "dem/engine|dem/tester/"
+  "fem|dem/|coupling/"
+  "coupling/loop|coupling/app/"
+  "coupling/output|coupling/app/"
+  "coupling/parameters|coupling/app/|coupling/loop/|coupling/output/")
 set(violations "")
 foreach(rule IN LISTS rules)
   string(REPLACE "|" ";" parts "${rule}")
@@ -21,6 +31,6 @@ foreach(rule IN LISTS rules)
   endforeach()
 endforeach()
 if(violations)
-  message(FATAL_ERROR "module rule broken (dem/meshes without deal.II or fem; fem without dem):${violations}")
+  message(FATAL_ERROR "module rule broken (see the rules at the top of tests/check_module_dependencies.cmake):${violations}")
 endif()
 message(STATUS "module dependencies respected")

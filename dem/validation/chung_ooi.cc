@@ -9,7 +9,7 @@
 // sliding relations of the paper (Tests 4-8).
 #include "dem/validation/chung_ooi.h"
 
-#include "dem/system.h"
+#include "dem/engine/system.h"
 #include "meshes/structured_grid.h"
 
 #include <cmath>

@@ -1,7 +1,7 @@
 #pragma once
 // Single-impact scenarios of the Chung & Ooi (2011) DEM benchmark, run through the full
 // engine (System, neighbour list, mesh walls). Used by the tests and by the table program.
-#include "dem/material.h"
+#include "dem/engine/material.h"
 #include "meshes/vec3.h"
 
 #include <string>

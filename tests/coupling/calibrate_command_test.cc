@@ -2,8 +2,8 @@
 // and the same run with the calibrated coefficient wears exactly that (the wear law is linear
 // in its coefficient and does not act on the flow of a fixed geometry). Bad input is refused
 // naming the option or the file.
-#include "coupling/calibrate_command.h"
-#include "coupling/dem_command.h"
+#include "coupling/app/calibrate_command.h"
+#include "coupling/app/dem_command.h"
 #include "small_tester.h"
 
 #include <catch2/catch.hpp>

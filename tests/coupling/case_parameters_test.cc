@@ -1,4 +1,4 @@
-#include "coupling/case_parameters.h"
+#include "coupling/parameters/case_parameters.h"
 
 #include <catch2/catch.hpp>
 
@@ -23,7 +23,7 @@ TEST_CASE("reference case files parse and validate", "[coupling][parameters]") {
   CHECK(c.geometry.placement.incline_deg == 2);
   const auto p = read_case(WEAR_SOURCE_DIR "/cases/reference/plain.prm");
   CHECK_FALSE(p.geometry.sample.convex);
-  // wear-tester.md defaults
+  // docs/wear-tester.md defaults
   CHECK(c.dem.psd.scaling_factor == 4);
   CHECK(c.dem.particle_wall.friction == 0.30);
   CHECK(c.wear_law.archard_coefficient == 5e-9);

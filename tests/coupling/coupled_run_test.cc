@@ -7,10 +7,10 @@
 //   with a message naming the parameter or file, and never overwrites a good checkpoint.
 // The [long] test drives a large amplification past the node-moving method's distortion
 // limit and checks that the staged scheme goes on to three times that wear depth.
-#include "coupling/checkpoint.h"
-#include "coupling/compare_command.h"
-#include "coupling/coupled_run.h"
-#include "coupling/hdf5_file.h"
+#include "coupling/app/compare_command.h"
+#include "coupling/loop/coupled_run.h"
+#include "coupling/output/checkpoint.h"
+#include "coupling/output/hdf5_file.h"
 #include "small_tester.h"
 
 #include <catch2/catch.hpp>

@@ -1,7 +1,7 @@
 // `wearsim dem` end to end on a small tester (30-degree sector, s = 4, shallow bed, coarse
 // plain sample, one pass of the sector): the output files exist, every summary column is
 // there and finite, wear is positive, and the face sets add up to the per-contact total.
-#include "coupling/dem_command.h"
+#include "coupling/app/dem_command.h"
 #include "small_tester.h"
 
 #include <catch2/catch.hpp>

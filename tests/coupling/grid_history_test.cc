@@ -1,6 +1,6 @@
 // Per-stage volume output: each stage's HDF5 file holds the grid and fields as written (read
 // back through the HDF5 C API), the XDMF index lists every stage, a VTU is beside each.
-#include "coupling/grid_history.h"
+#include "coupling/output/grid_history.h"
 
 #include <catch2/catch.hpp>
 

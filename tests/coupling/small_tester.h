@@ -2,7 +2,7 @@
 // The small wear tester the coupling tests run: a 30-degree periodic sector at s = 4 with a
 // 55 mm bed (about 2,300 particles), no consolidator, a coarse (3 mm) sample centred in the
 // sector, 2 threads. One revolution takes a few seconds.
-#include "coupling/case_parameters.h"
+#include "coupling/parameters/case_parameters.h"
 
 #include <string>
 

@@ -1,7 +1,7 @@
 // The Chung & Ooi (2011) suite: all eight tests, both materials each, sphere-plane impacts
 // against a triangle-mesh plane (Test 2 also on a mesh edge and a mesh vertex). Tolerances
 // per the issue: Tests 1-2 0.5 %, Test 3 1 %, Tests 4-6 and 8 2 %, Test 7 exact (1e-12).
-#include "dem/material.h"
+#include "dem/engine/material.h"
 #include "dem/validation/chung_ooi.h"
 
 #include <catch2/catch.hpp>

@@ -1,7 +1,7 @@
 #pragma once
 // Shared set-ups for the DEM tests.
-#include "dem/filling.h"
-#include "dem/system.h"
+#include "dem/engine/filling.h"
+#include "dem/engine/system.h"
 #include "meshes/tester_walls.h"
 
 #include <cmath>

@@ -1,6 +1,6 @@
 // Engine-level checks: energy conservation, the cylindrical periodic sector, Coulomb
 // sliding on a rotating floor, determinism, and clear failures on bad input.
-#include "dem/snapshot.h"
+#include "dem/engine/snapshot.h"
 #include "meshes/structured_grid.h"
 #include "tests/dem/dem_fixtures.h"
 

@@ -9,6 +9,7 @@
 #include "fem/mesh_motion.h"
 #include "fem/sample_triangulation.h"
 #include "meshes/mesh_quality.h"
+#include "meshes/recession.h"
 #include "meshes/sample_generator.h"
 #include "meshes/sliding_constraint.h"
 
@@ -19,7 +20,10 @@
 #include <cmath>
 
 using namespace wear::fem;
+using wear::meshes::Recession;
 using wear::meshes::Vec3;
+using wear::meshes::volume_exact_recession;
+using wear::meshes::volume_restoring_offset;
 
 namespace {
 void make_box(dealii::Triangulation<3>& tria, double a, double b, double c) {
@@ -46,7 +50,7 @@ TEST_CASE("uniform recession of the top face: flat, exact volume, valid mesh", "
     if (surface.face_labels[f] == 3)
       removed[f] = depth * area[f];
   const double v0 = mesh_volume(tria);
-  const auto rec = compute_recession(surface, removed);
+  const auto rec = volume_exact_recession(surface, removed);
   CHECK(rec.removed_volume == Approx(depth * a * b).epsilon(1e-12));
   CHECK(rec.scale == Approx(1).epsilon(1e-9));
   MotionReport report;
@@ -102,7 +106,7 @@ ElementWear wear_element(double fraction) {
         tip0 = std::max(tip0, surface.vertices[v].z);
     }
   const double v0 = mesh_volume(tria);
-  const auto rec = compute_recession(surface, removed);
+  const auto rec = volume_exact_recession(surface, removed);
   MotionReport report;
   const auto worn = move_mesh(tria, map, rec.displacement, &report);
   double tip = 0;
@@ -141,7 +145,7 @@ TEST_CASE("tetrahedron quality measures", "[fem][motion]") {
   CHECK(q.min_dihedral_deg ==
         Approx(std::acos(1 / std::sqrt(3.0)) * 180 / 3.14159265358979).epsilon(1e-9));
   CHECK(q.max_dihedral_deg == Approx(90).epsilon(1e-9));
-  CHECK_THROWS_WITH(compute_recession(extract_boundary_surface(tria), {1.0}),
+  CHECK_THROWS_WITH(volume_exact_recession(extract_boundary_surface(tria), {1.0}),
                     Catch::Contains("face volumes"));
 }
 
@@ -269,7 +273,7 @@ TEST_CASE("the unworn sides stay flat as the wear face recedes past their first 
       relaxed.vertices[v] += relax[v];
     CHECK(wear::meshes::enclosed_volume(relaxed) ==
           Approx(wear::meshes::enclosed_volume(surface)).epsilon(1e-13));
-    const auto rec = compute_recession(relaxed, removed);
+    const auto rec = volume_exact_recession(relaxed, removed);
     for (std::size_t v = 0; v < surface.n_vertices(); ++v)
       surface.vertices[v] = relaxed.vertices[v] + rec.displacement[v];
     surface.bump_revision();
@@ -492,7 +496,7 @@ TEST_CASE("an offset that cannot reach its volume reports what it reaches", "[fe
       for (std::size_t f = 0; f < m.n_faces(); ++f)
         if (m.face_labels[f] == wear::meshes::label::base)
           removed[f] = 1.2 * v0 * area[f] / wear_area;
-      rec = compute_recession(m, removed);
+      rec = volume_exact_recession(m, removed);
     }
     INFO((restoring ? "volume-restoring offset" : "recession")
          << ": asked " << rec.removed_volume * 1e9 << " mm^3, swept " << rec.swept_volume * 1e9);

@@ -1,6 +1,9 @@
-// Spreading removed volume around a fold: the total is conserved to round-off, no face goes
-// negative, only wearing faces within the ring count receive volume, and a point load
-// diffuses into a neighbourhood whose size grows with the ring count.
+// The area-weighted node recession shared by both deformation schemes: a uniform depth on a
+// flat plate moves every wear-face vertex straight down by that depth (the vertices it shares
+// with the side too), the depth it reports is the displacement's length, and vertices
+// without wearing faces stay. Spreading removed volume around a fold: the total is conserved
+// to round-off, no face goes negative, only wearing faces within the ring count receive
+// volume, and a point load diffuses into a neighbourhood whose size grows with the ring count.
 #include "meshes/recession.h"
 #include "meshes/structured_grid.h"
 
@@ -27,6 +30,39 @@ SurfaceMesh plate() {
   return m;
 }
 } // namespace
+
+TEST_CASE("area-weighted recession of a uniform depth: straight down, by that depth",
+          "[meshes][recession]") {
+  const auto m = plate();
+  const auto area = face_areas(m);
+  std::vector<double> v(m.n_faces(), 0);
+  for (std::size_t f = 0; f < m.n_faces(); ++f)
+    if (label::wears(m.face_labels[f]))
+      v[f] = 2e-4 * area[f]; // 0.2 mm everywhere on the wear face
+  const auto depth = area_weighted_depth(m, v);
+  const auto displacement = area_weighted_recession(m, v);
+  std::vector<char> on_wear_face(m.n_vertices(), 0);
+  for (std::size_t f = 0; f < m.n_faces(); ++f)
+    if (label::wears(m.face_labels[f]))
+      for (const auto k : m.triangles[f])
+        on_wear_face[k] = 1;
+  std::size_t n_moved = 0;
+  for (std::size_t k = 0; k < m.n_vertices(); ++k) {
+    if (!on_wear_face[k]) {
+      CHECK(depth[k] == 0);
+      CHECK(norm(displacement[k]) == 0);
+      continue;
+    }
+    ++n_moved;
+    CHECK(depth[k] == Approx(2e-4).epsilon(1e-12));
+    CHECK(norm(displacement[k]) == Approx(depth[k]).epsilon(1e-12));
+    // The plate's outward normal is +z or -z; either way the motion is along it, inward.
+    CHECK(std::abs(displacement[k].x) < 1e-15);
+    CHECK(std::abs(displacement[k].y) < 1e-15);
+  }
+  CHECK(n_moved > 0);
+  CHECK(n_moved < m.n_vertices());
+}
 
 TEST_CASE("spreading removed volume keeps the total and stays local", "[meshes][recession]") {
   const auto m = plate();

@@ -1,4 +1,5 @@
 #include "meshes/mesh_quality.h"
+#include "meshes/sample_frame.h"
 #include "meshes/sample_generator.h"
 
 #include <catch2/catch.hpp>
@@ -105,7 +106,7 @@ TEST_CASE("placement in the tester: C11 innermost and upstream, leading edge low
   const auto polar = [](const Vec3& p) { return std::atan2(p.y, p.x); };
   const auto radius = [](const Vec3& p) { return std::hypot(p.x, p.y); };
   const auto at = [&](const ElementSite& e) {
-    return sample_to_tester({e.x, e.y, s.thickness}, s, pl);
+    return SampleFrame(s, pl).point_to_tester({e.x, e.y, s.thickness});
   };
   const Vec3 c11 = at(sites.front());
   for (const auto& e : sites) {
@@ -115,11 +116,11 @@ TEST_CASE("placement in the tester: C11 innermost and upstream, leading edge low
     CHECK(polar(c11) <= polar(q) + 1e-12); // column 1 meets the rotating bed first
   }
   CHECK(radius(c11) == Approx(std::hypot(pl.radius - 0.040, 0.040)).epsilon(1e-3));
-  const Vec3 lead = sample_to_tester({0, -s.length / 2, s.thickness}, s, pl);
-  const Vec3 trail = sample_to_tester({0, s.length / 2, s.thickness}, s, pl);
+  const Vec3 lead = SampleFrame(s, pl).point_to_tester({0, -s.length / 2, s.thickness});
+  const Vec3 trail = SampleFrame(s, pl).point_to_tester({0, s.length / 2, s.thickness});
   CHECK(lead.z < trail.z);
   CHECK(trail.z - lead.z == Approx(s.length * std::sin(2 * pi / 180)));
-  const Vec3 centre = sample_to_tester({0, 0, s.thickness}, s, pl);
+  const Vec3 centre = SampleFrame(s, pl).point_to_tester({0, 0, s.thickness});
   CHECK(centre.z == Approx(pl.wear_face_height));
   CHECK(radius(centre) == Approx(pl.radius));
 }

@@ -1,0 +1,234 @@
+// Calibration of the wear coefficient against a measured wear volume.
+//
+// Both laws are linear in their coefficient (Archard: V = alpha sum F_n ds; frictional work:
+// V = beta sum F_t . ds), and on a fixed geometry the coefficient does not feed back into the
+// particle motion, so the calibrated value is exact for the same run:
+//   coefficient_cal = coefficient * (V_measured / N_test) / (sum_{r in R} V_r / |R|),
+// with V_r the wear-face volume of revolution r of the run and R the revolutions after steady
+// state (docs/theory.md section 7: wear is judged on the steady flow). For a coupled run with a
+// geometry that wears, the scaled coefficient is the first-order answer: the flow changes with the
+// shape.
+#include "coupling/app/calibrate_command.h"
+
+#include "coupling/parameters/case_parameters.h"
+#include "meshes/atomic_file.h"
+
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+namespace wear::coupling {
+
+double parse_volume(const std::string& text, const std::string& what) {
+  std::size_t used = 0;
+  double value = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    throw std::invalid_argument(what + ": '" + text + "' is not a number with a volume unit");
+  }
+  std::string unit;
+  for (std::size_t k = used; k < text.size(); ++k)
+    if (!std::isspace(static_cast<unsigned char>(text[k])))
+      unit += text[k];
+  static const std::map<std::string, double> units = {{"m^3", 1.0},  {"m3", 1.0},    {"cm^3", 1e-6},
+                                                      {"cm3", 1e-6}, {"mm^3", 1e-9}, {"mm3", 1e-9}};
+  const auto it = units.find(unit);
+  if (it == units.end())
+    throw std::invalid_argument(what + ": '" + text + "' needs a volume unit (m^3, cm^3 or mm^3)" +
+                                (unit.empty() ? "" : ", not '" + unit + "'"));
+  if (!(value > 0) || !std::isfinite(value))
+    throw std::invalid_argument(what + ": '" + text + "' must be a positive volume");
+  return value * it->second;
+}
+
+namespace {
+std::vector<std::map<std::string, std::string>> read_summary(const std::string& path) {
+  std::ifstream in(path);
+  if (!in)
+    throw std::runtime_error("calibrate: cannot read '" + path + "' (is it a wearsim run folder?)");
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> names;
+  std::stringstream h(line);
+  for (std::string c; std::getline(h, c, ',');)
+    names.push_back(c);
+  std::vector<std::map<std::string, std::string>> rows;
+  while (std::getline(in, line)) {
+    std::stringstream r(line);
+    std::map<std::string, std::string> row;
+    std::string cell;
+    for (std::size_t k = 0; k < names.size() && std::getline(r, cell, ','); ++k)
+      row[names[k]] = cell;
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+double number(const std::map<std::string, std::string>& row, const std::string& column,
+              const std::string& path) {
+  const auto it = row.find(column);
+  if (it == row.end())
+    throw std::runtime_error("calibrate: '" + path + "' has no column '" + column + "'");
+  return std::stod(it->second);
+}
+
+// The coefficient a law of the catalogue is linear in (its first parameter); none for an
+// unknown law or one without parameters.
+const dem::WearLawParameter* linear_coefficient(const std::string& model) {
+  for (const auto& law : dem::wear_law_catalogue())
+    if (law.name == model && !law.parameters.empty())
+      return &law.parameters.front();
+  return nullptr;
+}
+
+struct CalibrateArguments {
+  std::string run, measured; ///< run folder; measured volume as given, with its unit
+  double revolutions = 0;    ///< simulated revolutions the measurement stands for
+  int from = 0;              ///< first revolution to average (0: after steady state)
+};
+
+double revolutions_argument(const std::string& v) {
+  try {
+    return std::stod(v);
+  } catch (const std::exception&) {
+    throw std::invalid_argument("wearsim calibrate: --revolutions '" + v + "' is not a number");
+  }
+}
+
+int from_argument(const std::string& v) {
+  int from = 0;
+  try {
+    from = std::stoi(v);
+  } catch (const std::exception&) {
+    throw std::invalid_argument("wearsim calibrate: --from '" + v + "' is not a revolution");
+  }
+  if (from <= 0)
+    throw std::invalid_argument("wearsim calibrate: --from must be a revolution >= 1");
+  return from;
+}
+
+CalibrateArguments calibrate_arguments(const std::vector<std::string>& args) {
+  const std::string usage = "usage: wearsim calibrate <run> --measured <volume with unit> "
+                            "--revolutions <n> [--from <revolution>]";
+  CalibrateArguments a;
+  for (std::size_t k = 0; k < args.size(); ++k) {
+    const auto value = [&]() -> std::string {
+      if (k + 1 >= args.size())
+        throw std::invalid_argument("wearsim calibrate: " + args[k] + " needs a value; " + usage);
+      return args[++k];
+    };
+    if (args[k] == "--measured")
+      a.measured = value();
+    else if (args[k] == "--revolutions")
+      a.revolutions = revolutions_argument(value());
+    else if (args[k] == "--from")
+      a.from = from_argument(value());
+    else if (a.run.empty() && args[k].rfind("--", 0) != 0)
+      a.run = args[k];
+    else
+      throw std::invalid_argument("wearsim calibrate: unexpected argument '" + args[k] + "'; " +
+                                  usage);
+  }
+  if (a.run.empty() || a.measured.empty() || a.revolutions == 0)
+    throw std::invalid_argument("wearsim calibrate: " + usage);
+  return a;
+}
+
+void print_calibration(const CalibrateArguments& a, const Calibration& c, std::ostream& out) {
+  char line[512];
+  std::snprintf(line, sizeof line,
+                "run %s, wear law %s\n"
+                "simulated wear per revolution %.6g mm^3 (mean of %d revolutions from %d)\n"
+                "measured wear per revolution  %.6g mm^3\n"
+                "%s: %.6g -> %.6g (x %.4g)\n",
+                a.run.c_str(), c.model.c_str(), c.simulated_per_rev * 1e9, c.n_revolutions,
+                c.first_revolution, c.measured_per_rev * 1e9, c.coefficient_name.c_str(),
+                c.coefficient, c.calibrated, c.calibrated / c.coefficient);
+  out << line;
+}
+
+// <run>/calibration.prm: the Wear law subsection with the calibrated coefficient.
+void write_calibration(const CalibrateArguments& a, const Calibration& c, const std::string& file) {
+  meshes::write_atomically(file, [&](std::ostream& f) {
+    char text[1024];
+    std::snprintf(text, sizeof text,
+                  "# wearsim calibrate: %s scaled so the steady wear per revolution of\n"
+                  "# %s (%.9g m^3, mean of %d revolutions from %d) equals the measured\n"
+                  "# %.9g m^3 per revolution (%s over %g simulated revolutions).\n"
+                  "# Copy this subsection into a case file, or INCLUDE this file after it.\n"
+                  "subsection Wear law\n"
+                  "  set Model = %s\n"
+                  "  set %s = %.9g\n"
+                  "end\n",
+                  c.coefficient_name.c_str(), a.run.c_str(), c.simulated_per_rev, c.n_revolutions,
+                  c.first_revolution, c.measured_per_rev, a.measured.c_str(), a.revolutions,
+                  c.model.c_str(), c.coefficient_name.c_str(), c.calibrated);
+    f << text;
+  });
+}
+} // namespace
+
+Calibration calibrate(const std::string& run, double measured_volume, double revolutions,
+                      int from_revolution) {
+  if (!(revolutions > 0) || !std::isfinite(revolutions))
+    throw std::invalid_argument("calibrate: --revolutions must be a positive number");
+  const CaseParameters p = read_case(run + "/parameters.prm");
+  Calibration c;
+  c.model = p.wear_law.model;
+  const dem::WearLawParameter* coefficient = linear_coefficient(c.model);
+  if (!coefficient)
+    throw std::runtime_error("calibrate: the wear law '" + c.model + "' of '" + run +
+                             "/parameters.prm' has no coefficient to calibrate");
+  c.coefficient_name = coefficient->name;
+  c.coefficient = p.wear_law.*coefficient->member;
+  const std::string path = run + "/summary.csv";
+  const auto rows = read_summary(path);
+  if (rows.empty())
+    throw std::runtime_error("calibrate: '" + path + "' holds no finished revolution");
+  int first = from_revolution;
+  if (first <= 0) {
+    const int steady = int(number(rows.back(), "steady_revolution", path));
+    if (steady == 0)
+      throw std::runtime_error(
+          "calibrate: the run '" + run +
+          "' never reached steady state (DEM/Steady threshold); "
+          "run more revolutions, or name the first revolution to average with --from");
+    first = steady + 1;
+  }
+  double sum = 0;
+  for (const auto& row : rows)
+    if (int(number(row, "revolution", path)) >= first) {
+      sum += number(row, "wear_volume_m3", path);
+      ++c.n_revolutions;
+    }
+  if (c.n_revolutions == 0)
+    throw std::runtime_error("calibrate: '" + path + "' has no revolution from " +
+                             std::to_string(first) +
+                             " on (steady state was reached at its end;"
+                             " run more revolutions)");
+  c.first_revolution = first;
+  c.simulated_per_rev = sum / c.n_revolutions;
+  if (!(c.simulated_per_rev > 0))
+    throw std::runtime_error("calibrate: the run '" + run + "' wore nothing on the wear face");
+  c.measured_per_rev = measured_volume / revolutions;
+  c.calibrated = c.coefficient * c.measured_per_rev / c.simulated_per_rev;
+  return c;
+}
+
+int run_calibrate_command(const std::vector<std::string>& args, std::ostream& out) {
+  const CalibrateArguments a = calibrate_arguments(args);
+  const Calibration c =
+      calibrate(a.run, parse_volume(a.measured, "--measured"), a.revolutions, a.from);
+  print_calibration(a, c, out);
+  const std::string file = a.run + "/calibration.prm";
+  write_calibration(a, c, file);
+  out << "written: " << file << "\n";
+  return 0;
+}
+
+} // namespace wear::coupling

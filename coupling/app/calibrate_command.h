@@ -1,0 +1,36 @@
+#pragma once
+// `wearsim calibrate <run> --measured <volume> --revolutions <n>`: scales the wear
+// coefficient of a finished run so its steady wear per revolution matches a measurement
+// that n simulated revolutions stand for (the reference study: 56 h of the laboratory test
+// = 2 revolutions, docs/theory.md section 4).
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace wear::coupling {
+
+/// Parses a volume with its unit: "35.2mm^3", "35.2 mm3", "3.52e-8 m^3", "0.0352 cm^3" [m^3].
+/// Throws naming `what` for a missing or unknown unit, a non-number or a value <= 0.
+double parse_volume(const std::string& text, const std::string& what);
+
+struct Calibration {
+  std::string model;            ///< the run's wear law
+  std::string coefficient_name; ///< "Archard coefficient" or "Work coefficient"
+  double coefficient = 0;       ///< of the run [1/Pa] or [m^3/J]
+  double calibrated = 0;        ///< giving the measured wear per revolution
+  int first_revolution = 0;     ///< first revolution averaged (after steady state)
+  int n_revolutions = 0;        ///< revolutions averaged
+  double simulated_per_rev = 0; ///< [m^3] mean wear-face wear per revolution
+  double measured_per_rev = 0;  ///< [m^3] measured volume / simulated revolutions
+};
+
+/// Reads <run>/summary.csv and <run>/parameters.prm. The revolutions averaged are those
+/// after the run's steady revolution, or from `from_revolution` when > 0; a run that never
+/// reached steady state is refused unless `from_revolution` is given.
+Calibration calibrate(const std::string& run, double measured_volume, double revolutions,
+                      int from_revolution = 0);
+
+/// Runs the command; writes <run>/calibration.prm (atomically) and prints the result.
+int run_calibrate_command(const std::vector<std::string>& args, std::ostream& out);
+
+} // namespace wear::coupling

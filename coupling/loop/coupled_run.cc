@@ -1,0 +1,281 @@
+// The coupled DEM-FEM wear loop, staged per revolution (docs/coupling.md).
+//
+// One stage (scheme "staged"):
+//   1. DEM: N revolutions on the current sample surface; the window's loads per face (impulse
+//      I_f [N s], normal impulse, Archard load-distance, sliding work, contact-steps and the
+//      wear law's volume V_f [m^3]) summed over them, in the sample frame.
+//   2. Wear: the removed volume dV_f = A s(sigma_f) V_f on the wear faces (wear_increment.h:
+//      amplification, stress-informed factor from the previous stage's stress, vertex depth
+//      cap, adaptive amplification).
+//   3. FEM: elastic stress of the current (pre-update) sample under the stage-averaged face
+//      forces F_f = I_f / T_stage (sample frame, clamped bottom).
+//   4. Geometry: volume-exact recession of the worn faces, mesh motion, remeshing when the
+//      mesh degrades (fem::WornSample); the new surface goes to the DEM with the bed kept,
+//      particles the new surface encloses pushed out; the stage's stress and removed volume
+//      carried onto the new faces (FaceTransfer after a remesh, else the same faces).
+//   5. Output and a checkpoint.
+// "dem-only" stages skip 3 and 4; "reference" stages move surface nodes inside the DEM
+// (dem::ReferenceDeformation) and stop the run at the first distortion.
+//
+// Reproducibility: after every stage the run passes through the same capture -> restore
+// path as a resumed run (DEM state export/import, worn sample rebuilt from its arrays), so a
+// run resumed from any checkpoint repeats the uninterrupted run bit for bit with the same
+// thread count.
+#include "coupling/loop/coupled_run.h"
+
+#include "coupling/output/progress_line.h"
+#include "fem/elasticity.h"
+#include "fem/volume_output.h"
+#include "meshes/face_transfer.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace wear::coupling {
+
+void RunTotals::add(const StageRecord& r) {
+  cumulative_applied = r.cumulative_applied;
+  worn_through += r.worn_through_volume;
+  ++n_stages_run;
+  stage_seconds = clock.seconds();
+}
+
+double RunTotals::mean_stage_seconds() const {
+  return n_stages_run > 0 ? stage_seconds / n_stages_run : 0;
+}
+
+void CoupledRun::run() {
+  setup();
+  print_header();
+  totals_.n_stages_run = 0;
+  totals_.clock.restart();
+  for (std::size_t k = stages_.size(); k < plan_.size(); ++k) {
+    StageRecord r = begin_stage(k);
+    const dem::WallLoads loads = run_dem(r);
+    const WearIncrement increment = compute_wear(loads, r);
+    meshes::FaceField<double> applied = increment.removed;
+    if (r.scheme == Scheme::staged) {
+      const StageStress stress = solve_stress(loads, r);
+      GeometryUpdate update = update_geometry(increment, stress, r);
+      applied = std::move(update.applied);
+      previous_stress_ = std::move(update.von_mises);
+    }
+    record(r, applied);
+    if (!r.distortion.empty()) {
+      log_ << "the reference method distorted the surface in stage " << r.stage << " ("
+           << r.distortion << "); the run stops here, as the reference study's did\n";
+      break;
+    }
+    checkpoint();
+    if (options_.stop_after > 0 && totals_.n_stages_run >= options_.stop_after &&
+        k + 1 < plan_.size()) {
+      log_ << "stopped after stage " << r.stage << " as asked; continue with --resume\n";
+      return;
+    }
+  }
+  print_end();
+}
+
+StageRecord CoupledRun::begin_stage(std::size_t k) const {
+  StageRecord r;
+  r.stage = int(k) + 1;
+  r.scheme = plan_[k];
+  r.amplification = p_.coupling.amplification;
+  r.first_revolution = tester_->n_revolutions_done() + 1;
+  return r;
+}
+
+// The stage's revolutions; their loads, turned from the tester's frame into the sample's
+// (vectors rotated only), summed on the current sample surface.
+dem::WallLoads CoupledRun::run_dem(StageRecord& r) {
+  const meshes::Stopwatch clock;
+  const auto& surface = sample_surface();
+  dem::WallLoads loads = dem::WallLoads::zero(surface);
+  const auto to_sample = [this](const meshes::Vec3& v) { return frame_.vector_to_sample(v); };
+  ProgressLine line(options_.progress);
+  const int n_rev = p_.coupling.revolutions_per_stage;
+  for (int q = 0; q < n_rev; ++q) {
+    const auto& rec = tester_->run_revolution(
+        [&](const dem::TesterProgress& pr) { line.show(progress_text(r, pr, q)); });
+    loads += tester_->last_loads().follow(surface, to_sample);
+    if (r.scheme == Scheme::reference) { // the records are cumulative
+      const auto& history = tester_->evaluation().history();
+      const dem::RevolutionRecord* before =
+          r.first_revolution > 1 ? &history[std::size_t(r.first_revolution - 2)] : nullptr;
+      r.applied_volume = rec.applied_volume - (before ? before->applied_volume : 0);
+      r.cumulative_applied = rec.applied_volume;
+      r.geometry_volume_change =
+          rec.enclosed_volume_loss - (before ? before->enclosed_volume_loss : 0);
+      r.distortion = rec.distortion;
+    }
+  }
+  line.clear();
+  r.last_revolution = tester_->n_revolutions_done();
+  r.time = tester_->system().time();
+  r.dem_seconds = clock.seconds();
+  return loads;
+}
+
+// Time left: this stage's DEM from its rate so far, later stages at the mean wall time of
+// the stages finished in this invocation (or this stage's DEM estimate before one).
+std::string CoupledRun::progress_text(const StageRecord& r, const dem::TesterProgress& pr,
+                                      int q) const {
+  const int n_rev = p_.coupling.revolutions_per_stage;
+  const double dem_left = ((n_rev - q) - pr.fraction) * double(tester_->steps_per_revolution()) *
+                          double(tester_->system().particles.n_real) /
+                          std::max(1.0, pr.particle_steps_per_second);
+  const double mean = totals_.mean_stage_seconds();
+  const double per_stage =
+      mean > 0 ? mean : dem_left / std::max(1e-9, 1.0 - (q + pr.fraction) / n_rev);
+  const double left = dem_left + per_stage * double(plan_.size() - std::size_t(r.stage));
+  return format("stage %d/%zu %s: revolution %d (%d of %d) %5.1f %%  %.2e particle-steps/s  "
+                "time left %.0f min   ",
+                r.stage, plan_.size(), scheme_name(r.scheme).c_str(), pr.revolution, q + 1, n_rev,
+                100 * pr.fraction, pr.particle_steps_per_second, left / 60);
+}
+
+WearIncrement CoupledRun::compute_wear(const dem::WallLoads& loads, StageRecord& r) {
+  const meshes::Stopwatch clock;
+  const auto& surface = sample_surface();
+  const bool staged = r.scheme == Scheme::staged;
+  const WearIncrement w =
+      wear_increment(surface, loads.wear_volume, previous_stress_, p_.coupling, staged);
+  if (w.lowered)
+    log_ << format("stage %d: amplification %g -> %.4g: at %g it would recede vertex %ld (%s) "
+                   "by %.3g mm, %.3g of its longest edge (Maximum depth fraction %g)\n",
+                   r.stage, w.declared_amplification, w.amplification, w.declared_amplification,
+                   w.declared_depth.vertex, meshes::label::name(w.declared_depth.label).c_str(),
+                   1e3 * w.declared_depth.depth_there, w.declared_depth.max_fraction,
+                   p_.coupling.max_depth_fraction);
+  r.amplification = w.amplification;
+  r.dem_wear_volume = w.dem_wear_volume;
+  r.max_depth = w.depth.max_depth;
+  r.max_depth_fraction = w.depth.max_fraction;
+  r.mean_stress_factor = w.mean_stress_factor;
+  if (staged) {
+    r.applied_volume = w.removed.sum();
+    r.cumulative_applied = totals_.cumulative_applied + r.applied_volume;
+    check_depth_cap(w, p_.coupling, r.stage);
+  } else if (r.scheme == Scheme::dem_only) {
+    r.cumulative_applied = totals_.cumulative_applied;
+    if (!sample_)
+      for (std::size_t f = 0; f < surface.n_faces(); ++f)
+        totals_.dem_wear[f] += w.removed[f];
+  }
+  r.wear_seconds = clock.seconds();
+  return w;
+}
+
+StageStress CoupledRun::solve_stress(const dem::WallLoads& loads, StageRecord& r) {
+  meshes::Stopwatch clock;
+  const auto& surface = sample_->surface();
+  meshes::FaceField<meshes::Vec3> forces("force", "N", meshes::Extensivity::extensive, surface);
+  for (std::size_t f = 0; f < surface.n_faces(); ++f) {
+    forces[f] = loads.impulse[f] / loads.duration;
+    if (meshes::label::wears(surface.face_labels[f])) {
+      r.wear_face_force_z += forces[f].z;
+      r.wear_face_normal_force += loads.normal_impulse[f] / loads.duration;
+    }
+  }
+  r.mean_force_z = forces.sum().z;
+  fem::ElasticitySolver solver(sample_->triangulation(), sample_->face_map(), p_.fem.elasticity);
+  const auto result = solver.run(forces);
+  r.max_von_mises = result.max_von_mises;
+  r.safety_factor = result.safety_factor;
+  r.max_displacement = result.max_displacement;
+  StageStress stress{
+      meshes::FaceField<double>("von Mises", "Pa", meshes::Extensivity::intensive, surface)};
+  const auto& map = sample_->face_map();
+  for (std::size_t f = 0; f < surface.n_faces(); ++f)
+    stress.von_mises[f] = solver.von_mises()[map[f].cell->active_cell_index()];
+  r.fem_solve_seconds = clock.seconds();
+  clock.restart();
+  const auto grid = fem::volume_grid(sample_->triangulation(), &solver);
+  r.volume_points = int(grid.points.size());
+  r.volume_cells = int(grid.connectivity.size() / 4);
+  output_->add_volume(r.stage, r.time, grid);
+  r.output_seconds += clock.seconds();
+  return stress;
+}
+
+GeometryUpdate CoupledRun::update_geometry(const WearIncrement& increment,
+                                           const StageStress& stress, StageRecord& r) {
+  const meshes::SurfaceMesh before = sample_->surface();
+  const auto report = sample_->apply_wear(increment.removed);
+  r.geometry_volume_change = report.volume_change;
+  r.increments = report.increments;
+  r.n_remeshes = report.n_remeshes;
+  r.total_remeshes = sample_->n_remeshes();
+  r.spread_volume = report.spread_volume;
+  r.worn_through_volume = report.worn_through_volume;
+  r.n_worn_through = report.n_worn_through;
+  r.min_scaled_jacobian = report.quality.min_scaled_jacobian;
+  r.motion_seconds = report.motion_seconds;
+  r.remesh_seconds = report.remesh_seconds;
+  print_geometry_notes(r, report);
+  const auto& after = sample_->surface();
+  r.n_tetrahedra = int(sample_->triangulation().n_active_cells());
+  r.n_surface_faces = int(after.n_faces());
+  GeometryUpdate update{increment.removed, stress.von_mises};
+  if (report.n_remeshes > 0) {
+    const meshes::FaceTransfer transfer(before, after);
+    update.von_mises = transfer.apply(update.von_mises);
+    update.applied = transfer.apply(update.applied);
+  } else {
+    update.von_mises.follow(after);
+    update.applied.follow(after);
+  }
+  const auto pushed = tester_->set_sample_surface(after, p_.coupling.push_tolerance);
+  r.n_pushed = pushed.n_pushed;
+  r.max_push = pushed.max_distance;
+  return update;
+}
+
+// The surface the stage ends on, in the sample frame: for the reference scheme the DEM's
+// moved nodes brought back from the tester frame.
+meshes::SurfaceMesh CoupledRun::stage_surface(Scheme scheme) const {
+  return scheme == Scheme::reference ? frame_.place_in_sample(tester_->sample_mesh())
+                                     : sample_surface();
+}
+
+void CoupledRun::record(StageRecord r, const meshes::FaceField<double>& applied) {
+  const meshes::Stopwatch clock;
+  const meshes::SurfaceMesh surface = stage_surface(r.scheme);
+  const auto area = meshes::face_areas(surface);
+  std::vector<double> cumulative;
+  if (r.scheme == Scheme::reference) { // the declared (amplified) volume
+    cumulative = tester_->cumulative_removed_volume();
+    for (auto& v : cumulative)
+      v *= r.amplification;
+  } else
+    cumulative = sample_ ? sample_->removed_volume().values() : totals_.dem_wear.values();
+  std::vector<double> depth(surface.n_faces());
+  if (sample_)
+    depth = sample_->wear_depth().values();
+  else
+    for (std::size_t f = 0; f < depth.size(); ++f)
+      depth[f] = cumulative[f] / area[f];
+  std::vector<meshes::VtuArray> fields{{"cumulative removed volume", 1, cumulative},
+                                       {"wear depth", 1, depth},
+                                       {"stage removed volume", 1, applied.values()}};
+  if (r.scheme == Scheme::staged)
+    fields.push_back({"von Mises", 1, previous_stress_.values()});
+  output_->add_surface(r.stage, r.time, surface, fields);
+  if (!sample_)
+    r.n_surface_faces = int(surface.n_faces());
+  r.output_seconds += clock.seconds();
+  const bool first_worn_through = r.worn_through_volume > 0 && totals_.worn_through == 0;
+  stages_.push_back(r);
+  totals_.add(r);
+  output_->write_tables(tester_->evaluation().history(), stages_, tester_->evaluation().n_columns(),
+                        tester_->evaluation().element_labels());
+  print_stage(r);
+  if (first_worn_through)
+    log_ << format("stage %d: the sample is worn through: %d wear faces are within %g mm of "
+                   "the clamped bottom (FEM/Worn-through thickness); the %.4g mm^3 asked of "
+                   "them is not removed (stages.csv: worn_through_volume_m3)\n",
+                   r.stage, r.n_worn_through, p_.fem.worn_sample.worn_through_thickness * 1e3,
+                   r.worn_through_volume * 1e9);
+}
+
+} // namespace wear::coupling

@@ -1,0 +1,120 @@
+#pragma once
+// `wearsim run`: the coupled DEM-FEM wear loop, one stage at a time (docs/coupling.md).
+// run() reads as the algorithm; each step takes the values it needs and returns what it
+// made: loads = run_dem -> increment = compute_wear(loads) -> stress = solve_stress(loads)
+// -> update = update_geometry(increment, stress) -> record -> checkpoint.
+#include "coupling/loop/stage_record.h"
+#include "coupling/loop/wear_increment.h"
+#include "coupling/output/checkpoint.h"
+#include "coupling/output/run_output.h"
+#include "coupling/parameters/case_parameters.h"
+#include "dem/tester/wall_loads.h"
+#include "dem/tester/wear_tester.h"
+#include "fem/worn_sample.h"
+#include "meshes/sample_frame.h"
+#include "meshes/stopwatch.h"
+
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace wear::coupling {
+
+struct RunOptions {
+  bool resume = false;  ///< continue from <output>/checkpoint.h5
+  bool progress = true; ///< live line on a terminal (stderr)
+  int stop_after = 0;   ///< stop after this many stages of this invocation (0: run all)
+};
+
+/// What a run accumulates over its stages; rebuilt from the stage records on resume.
+struct RunTotals {
+  double cumulative_applied = 0; ///< [m^3] asked of the geometry so far
+  double worn_through = 0;       ///< [m^3] asked of worn-through faces and not removed
+  /// [m^3] per face, the wear-law volume of a run without a FEM sample (dem-only stages on
+  /// a fixed surface), amplified as declared: the cumulative field such runs output.
+  meshes::FaceField<double> dem_wear;
+  int n_stages_run = 0;     ///< by this invocation
+  meshes::Stopwatch clock;  ///< wall time since this invocation's first stage
+  double stage_seconds = 0; ///< [s] on that clock when the last stage was recorded
+
+  /// Adds a finished stage's volumes and counts it.
+  void add(const StageRecord& r);
+  /// [s] mean wall time of this invocation's stages, 0 before the first.
+  double mean_stage_seconds() const;
+};
+
+/// The FEM's answer to a stage's loads, on the surface before the geometry update.
+struct StageStress {
+  meshes::FaceField<double> von_mises; ///< [Pa] of each surface face's cell (intensive)
+};
+
+/// A staged stage's fields carried onto the surface after the geometry update.
+struct GeometryUpdate {
+  meshes::FaceField<double> applied;   ///< [m^3] the stage's removed volume (extensive)
+  meshes::FaceField<double> von_mises; ///< [Pa] the stage's stress (intensive)
+};
+
+class CoupledRun {
+public:
+  /// Checks the case and the output folder; nothing runs yet.
+  CoupledRun(const CaseParameters& p, std::ostream& log, const RunOptions& options = {});
+
+  /// The whole schedule (or what is left of it when resuming).
+  void run();
+
+  const std::vector<StageRecord>& stages() const { return stages_; }
+  const dem::WearTester& tester() const { return *tester_; }
+  const fem::WornSample* sample() const { return sample_.get(); }
+  std::string checkpoint_path() const { return p_.output.directory + "/checkpoint.h5"; }
+
+private:
+  // setup, in coupled_run_setup.cc
+  void setup();
+  void prepare_output_folder() const;
+  meshes::SurfaceMesh generate_initial_surface() const;
+  void resume();
+  void fill_and_settle();
+  fem::WornSampleParameters worn_parameters() const;
+
+  // one stage
+  StageRecord begin_stage(std::size_t k) const;
+  dem::WallLoads run_dem(StageRecord& r);
+  WearIncrement compute_wear(const dem::WallLoads& loads, StageRecord& r);
+  StageStress solve_stress(const dem::WallLoads& loads, StageRecord& r);
+  GeometryUpdate update_geometry(const WearIncrement& increment, const StageStress& stress,
+                                 StageRecord& r);
+  void record(StageRecord r, const meshes::FaceField<double>& applied);
+  void checkpoint();
+  void restore(const Checkpoint& c);
+
+  // what the run tells the user
+  void print_header() const;
+  void print_stage(const StageRecord& r) const;
+  void print_geometry_notes(const StageRecord& r, const fem::WearStageReport& report) const;
+  void print_end() const;
+  std::string progress_text(const StageRecord& r, const dem::TesterProgress& pr,
+                            int revolution_in_stage) const;
+
+  const meshes::SurfaceMesh& sample_surface() const; ///< current, sample frame
+  meshes::SurfaceMesh stage_surface(Scheme scheme) const;
+
+  CaseParameters p_;
+  std::ostream& log_;
+  RunOptions options_;
+  std::string parameters_text_;
+  std::vector<Scheme> plan_; ///< the scheme of each stage
+  bool has_staged_ = false, has_reference_ = false;
+  meshes::SampleFrame frame_;
+  meshes::SurfaceMesh initial_surface_; ///< sample frame, as generated
+  std::unique_ptr<dem::WearTester> tester_;
+  std::unique_ptr<fem::WornSample> sample_;
+  std::unique_ptr<RunOutput> output_;
+  std::vector<StageRecord> stages_;
+  /// [Pa] the last staged stage's von Mises stress on the current surface's faces (zeros
+  /// before the first): the stress-informed wear law's input to the next stage.
+  meshes::FaceField<double> previous_stress_;
+  RunTotals totals_;
+};
+
+} // namespace wear::coupling

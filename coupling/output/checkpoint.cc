@@ -1,0 +1,379 @@
+// Checkpoints of a coupled run in HDF5.
+//
+// Layout of checkpoint.h5:
+//   attributes on /: stages_done, revolutions_done, has_sample, parameters (text)
+//   /dem/...        every array of dem::SystemState (Vec3 arrays as n x 3), attributes time,
+//                   n_steps, n_rebuilds
+//   /revolutions/data, /revolutions/offsets   the records packed as numbers (pack()), one
+//                   after another; distortions as the text attribute /revolutions:distortions
+//   /stages/data, /stages/offsets             the same for the stage records
+//   /sample/...     the worn sample: mesh arrays, surface (vertices, triangles, labels,
+//                   attribute revision), removed_volume, wear_depth
+//   /face_von_mises, /dem/cumulative_removed   per face of the current sample surface
+// Every value is stored in its binary form, so a read gives back the same bits. The file is
+// written to a temporary name and renamed over the previous one only when complete.
+#include "coupling/output/checkpoint.h"
+
+#include "coupling/output/hdf5_file.h"
+
+#include <stdexcept>
+
+namespace wear::coupling {
+
+namespace {
+
+// One field list per record type drives packing and unpacking.
+template <typename V>
+void visit(dem::RevolutionRecord& r, V& v) {
+  v(r.revolution), v(r.time), v(r.wear_volume), v(r.wear_volume_other);
+  v(r.wear_volume_cumulative), v(r.contact_total_wear_volume), v(r.column_wear);
+  v(r.element_wear), v(r.mean_element_increment), v(r.normal_force), v(r.column_normal_force);
+  v(r.bottom_speed), v(r.bottom_spin), v(r.bottom_count), v(r.speed_over_sample);
+  v(r.bed_height), v(r.wear_rate), v(r.steady), v(r.steady_revolution);
+  v(r.fits.a), v(r.fits.r2_linear), v(r.fits.b), v(r.fits.c), v(r.fits.r2_quadratic);
+  v(r.fits.n_points), v(r.fits_from), v(r.swept_volume), v(r.applied_volume);
+  v(r.enclosed_volume_loss), v(r.min_angle_deg), v(r.wall_seconds);
+  v(r.particle_steps_per_second);
+}
+
+template <typename V>
+void visit(StageRecord& r, V& v) {
+  v("stage", r.stage);
+  v("scheme", r.scheme);
+  v("first_revolution", r.first_revolution);
+  v("last_revolution", r.last_revolution);
+  v("time_s", r.time);
+  v("amplification", r.amplification);
+  v("dem_wear_volume_m3", r.dem_wear_volume);
+  v("applied_volume_m3", r.applied_volume);
+  v("geometry_volume_change_m3", r.geometry_volume_change);
+  v("cumulative_applied_m3", r.cumulative_applied);
+  v("max_depth_m", r.max_depth);
+  v("max_depth_fraction", r.max_depth_fraction);
+  v("mean_stress_factor", r.mean_stress_factor);
+  v("increments", r.increments);
+  v("remeshes", r.n_remeshes);
+  v("total_remeshes", r.total_remeshes);
+  v("spread_volume_m3", r.spread_volume);
+  v("worn_through_volume_m3", r.worn_through_volume);
+  v("worn_through_faces", r.n_worn_through);
+  v("tetrahedra", r.n_tetrahedra);
+  v("surface_faces", r.n_surface_faces);
+  v("pushed_particles", r.n_pushed);
+  v("max_push_m", r.max_push);
+  v("min_scaled_jacobian", r.min_scaled_jacobian);
+  v("max_von_mises_Pa", r.max_von_mises);
+  v("safety_factor", r.safety_factor);
+  v("max_displacement_m", r.max_displacement);
+  v("mean_force_z_N", r.mean_force_z);
+  v("wear_face_force_z_N", r.wear_face_force_z);
+  v("wear_face_normal_force_N", r.wear_face_normal_force);
+  v("volume_points", r.volume_points);
+  v("volume_cells", r.volume_cells);
+  v("dem_s", r.dem_seconds);
+  v("wear_s", r.wear_seconds);
+  v("fem_solve_s", r.fem_solve_seconds);
+  v("mesh_motion_s", r.motion_seconds);
+  v("remesh_s", r.remesh_seconds);
+  v("output_s", r.output_seconds);
+}
+
+struct Packer {
+  std::vector<double>& out;
+  template <typename T>
+  void operator()(const char*, T& x) {
+    (*this)(x);
+  }
+  void operator()(double& x) { out.push_back(x); }
+  void operator()(int& x) { out.push_back(x); }
+  void operator()(bool& x) { out.push_back(x ? 1 : 0); }
+  void operator()(Scheme& s) { out.push_back(scheme_index(s)); }
+  void operator()(dem::Statistic& s) { out.push_back(s.mean), out.push_back(s.std); }
+  void operator()(std::vector<double>& v) {
+    out.push_back(double(v.size()));
+    out.insert(out.end(), v.begin(), v.end());
+  }
+  void operator()(std::vector<dem::Statistic>& v) {
+    out.push_back(double(v.size()));
+    for (auto& s : v)
+      (*this)(s);
+  }
+  void operator()(std::map<int, double>& m) {
+    out.push_back(double(m.size()));
+    for (auto& [k, x] : m)
+      out.push_back(k), out.push_back(x);
+  }
+};
+
+struct Unpacker {
+  const double* in;
+  std::size_t n, pos = 0;
+  template <typename T>
+  void operator()(const char*, T& x) {
+    (*this)(x);
+  }
+  double next() {
+    if (pos >= n)
+      throw std::runtime_error("a record is shorter than its fields");
+    return in[pos++];
+  }
+  std::size_t count() {
+    const double c = next();
+    if (!(c >= 0 && c <= double(n)))
+      throw std::runtime_error("a record holds an impossible length");
+    return std::size_t(c);
+  }
+  void operator()(double& x) { x = next(); }
+  void operator()(int& x) { x = int(next()); }
+  void operator()(bool& x) { x = next() != 0; }
+  void operator()(Scheme& s) { s = scheme_from_index(int(next())); }
+  void operator()(dem::Statistic& s) { s.mean = next(), s.std = next(); }
+  void operator()(std::vector<double>& v) {
+    v.resize(count());
+    for (auto& x : v)
+      x = next();
+  }
+  void operator()(std::vector<dem::Statistic>& v) {
+    v.resize(count());
+    for (auto& s : v)
+      (*this)(s);
+  }
+  void operator()(std::map<int, double>& m) {
+    m.clear();
+    for (std::size_t k = count(); k > 0; --k) {
+      const int key = int(next());
+      m[key] = next();
+    }
+  }
+};
+
+template <typename R>
+std::vector<double> pack_one(const R& r) {
+  R copy = r;
+  std::vector<double> out;
+  Packer p{out};
+  visit(copy, p);
+  return out;
+}
+
+const char separator = '\x1f';
+
+template <typename R>
+void write_records(Hdf5File& h5, const std::string& group, const std::vector<R>& records) {
+  std::vector<double> data;
+  std::vector<std::int64_t> offsets{0};
+  std::string distortions;
+  for (const auto& r : records) {
+    const auto packed = pack_one(r);
+    data.insert(data.end(), packed.begin(), packed.end());
+    offsets.push_back(std::int64_t(data.size()));
+    distortions += r.distortion + separator;
+  }
+  h5.write(group + "/data", data, {data.size()});
+  h5.write(group + "/offsets", offsets, {offsets.size()});
+  h5.attribute(group, "distortions", distortions);
+}
+
+template <typename R>
+std::vector<R> read_records(const Hdf5Reader& h5, const std::string& group) {
+  const auto data = h5.doubles(group + "/data");
+  const auto offsets = h5.int64s(group + "/offsets");
+  const auto distortions = h5.text_attribute(group, "distortions");
+  std::vector<R> out;
+  std::size_t d = 0;
+  for (std::size_t k = 0; k + 1 < offsets.size(); ++k) {
+    if (offsets[k] < 0 || offsets[k + 1] < offsets[k] || std::size_t(offsets[k + 1]) > data.size())
+      throw std::runtime_error("offsets of '" + group + "' do not fit its data");
+    R r;
+    Unpacker u{data.data() + offsets[k], std::size_t(offsets[k + 1] - offsets[k])};
+    visit(r, u);
+    if (u.pos != u.n)
+      throw std::runtime_error("a record of '" + group + "' is longer than its fields");
+    const auto end = distortions.find(separator, d);
+    if (end == std::string::npos)
+      throw std::runtime_error("distortions of '" + group + "' do not match the records");
+    r.distortion = distortions.substr(d, end - d);
+    d = end + 1;
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+std::vector<double> flat(const std::vector<meshes::Vec3>& v) {
+  std::vector<double> out;
+  out.reserve(3 * v.size());
+  for (const auto& x : v)
+    out.push_back(x.x), out.push_back(x.y), out.push_back(x.z);
+  return out;
+}
+
+std::vector<meshes::Vec3> vec3s(const std::vector<double>& v, const std::string& name) {
+  if (v.size() % 3 != 0)
+    throw std::runtime_error("'" + name + "' is not n x 3");
+  std::vector<meshes::Vec3> out(v.size() / 3);
+  for (std::size_t k = 0; k < out.size(); ++k)
+    out[k] = {v[3 * k], v[3 * k + 1], v[3 * k + 2]};
+  return out;
+}
+
+template <typename T>
+std::vector<std::int64_t> wide(const std::vector<T>& v) {
+  return {v.begin(), v.end()};
+}
+
+template <typename T>
+std::vector<T> narrow(const std::vector<std::int64_t>& v) {
+  return {v.begin(), v.end()};
+}
+
+void write_vec3(Hdf5File& h5, const std::string& name, const std::vector<meshes::Vec3>& v) {
+  h5.write(name, flat(v), {v.size(), 3});
+}
+
+} // namespace
+
+std::vector<double> pack(const dem::RevolutionRecord& r) {
+  return pack_one(r);
+}
+std::vector<double> pack(const StageRecord& r) {
+  return pack_one(r);
+}
+
+namespace {
+struct Names {
+  std::vector<std::string> out;
+  template <typename T>
+  void operator()(const char* name, T&) {
+    out.push_back(name);
+  }
+};
+} // namespace
+
+std::vector<std::string> stage_columns() {
+  Names names;
+  StageRecord r;
+  visit(r, names);
+  return names.out;
+}
+
+void write_checkpoint(const std::string& path, const Checkpoint& c) {
+  Hdf5File h5(path);
+  const auto& d = c.dem;
+  const std::size_t n = d.position.size();
+  write_vec3(h5, "/dem/position", d.position);
+  write_vec3(h5, "/dem/velocity", d.velocity);
+  write_vec3(h5, "/dem/angular_velocity", d.angular_velocity);
+  write_vec3(h5, "/dem/force", d.force);
+  write_vec3(h5, "/dem/torque", d.torque);
+  h5.write("/dem/radius", d.radius, {n});
+  h5.write("/dem/mass", d.mass, {n});
+  h5.write("/dem/inertia", d.inertia, {n});
+  h5.write("/dem/material", d.material, {n});
+  h5.write("/dem/id", d.id, {n});
+  h5.write("/dem/ghost_owner", wide(d.ghost_owner), {d.ghost_owner.size()});
+  h5.write("/dem/pair_i", wide(d.pair_i), {d.pair_i.size()});
+  h5.write("/dem/pair_j", wide(d.pair_j), {d.pair_j.size()});
+  write_vec3(h5, "/dem/pair_history", d.pair_history);
+  h5.write("/dem/wall_particles", wide(d.wall_particles), {d.wall_particles.size()});
+  write_vec3(h5, "/dem/slot_normal", d.slot_normal);
+  write_vec3(h5, "/dem/slot_delta", d.slot_delta);
+  h5.write("/dem/slot_wall", std::vector<int>(d.slot_wall.begin(), d.slot_wall.end()),
+           {d.slot_wall.size()});
+  h5.write("/dem/cumulative_removed", c.dem_cumulative, {c.dem_cumulative.size()});
+  h5.write("/face_von_mises", c.face_von_mises, {c.face_von_mises.size()});
+  h5.attribute("/dem", "time", d.time);
+  h5.attribute("/dem", "n_steps", double(d.n_steps));
+  h5.attribute("/dem", "n_rebuilds", double(d.n_rebuilds));
+  write_records(h5, "/revolutions", c.revolutions);
+  write_records(h5, "/stages", c.stages);
+  if (c.has_sample) {
+    const auto& s = c.sample;
+    h5.write("/sample/vertices", s.vertices, {s.vertices.size() / 3, 3});
+    h5.write("/sample/tetrahedra", s.tetrahedra, {s.tetrahedra.size() / 4, 4});
+    h5.write("/sample/boundary_faces", s.boundary_faces, {s.boundary_faces.size() / 3, 3});
+    h5.write("/sample/boundary_ids", s.boundary_ids, {s.boundary_ids.size()});
+    const auto& m = s.surface;
+    write_vec3(h5, "/sample/surface/vertices", m.vertices);
+    std::vector<std::int64_t> tri;
+    for (const auto& t : m.triangles)
+      tri.insert(tri.end(), t.begin(), t.end());
+    h5.write("/sample/surface/triangles", tri, {m.n_faces(), 3});
+    h5.write("/sample/surface/labels", m.face_labels, {m.n_faces()});
+    h5.attribute("/sample/surface", "revision", double(m.revision()));
+    h5.write("/sample/removed_volume", s.removed_volume, {s.removed_volume.size()});
+    h5.write("/sample/wear_depth", s.wear_depth, {s.wear_depth.size()});
+    h5.attribute("/sample", "n_remeshes", double(s.n_remeshes));
+  }
+  h5.attribute("/", "stages_done", double(c.stages_done));
+  h5.attribute("/", "revolutions_done", double(c.revolutions_done));
+  h5.attribute("/", "has_sample", c.has_sample ? 1.0 : 0.0);
+  h5.attribute("/", "parameters", c.parameters);
+  h5.commit();
+}
+
+Checkpoint read_checkpoint(const std::string& path) {
+  const Hdf5Reader h5(path);
+  Checkpoint c;
+  try {
+    c.stages_done = int(h5.attribute("/", "stages_done"));
+    c.revolutions_done = int(h5.attribute("/", "revolutions_done"));
+    c.has_sample = h5.attribute("/", "has_sample") != 0;
+    c.parameters = h5.text_attribute("/", "parameters");
+    auto& d = c.dem;
+    d.position = vec3s(h5.doubles("/dem/position"), "position");
+    d.velocity = vec3s(h5.doubles("/dem/velocity"), "velocity");
+    d.angular_velocity = vec3s(h5.doubles("/dem/angular_velocity"), "angular_velocity");
+    d.force = vec3s(h5.doubles("/dem/force"), "force");
+    d.torque = vec3s(h5.doubles("/dem/torque"), "torque");
+    d.radius = h5.doubles("/dem/radius");
+    d.mass = h5.doubles("/dem/mass");
+    d.inertia = h5.doubles("/dem/inertia");
+    d.material = h5.ints("/dem/material");
+    d.id = h5.int64s("/dem/id");
+    d.ghost_owner = narrow<std::uint32_t>(h5.int64s("/dem/ghost_owner"));
+    d.pair_i = narrow<std::uint32_t>(h5.int64s("/dem/pair_i"));
+    d.pair_j = narrow<std::uint32_t>(h5.int64s("/dem/pair_j"));
+    d.pair_history = vec3s(h5.doubles("/dem/pair_history"), "pair_history");
+    d.wall_particles = narrow<std::uint32_t>(h5.int64s("/dem/wall_particles"));
+    d.slot_normal = vec3s(h5.doubles("/dem/slot_normal"), "slot_normal");
+    d.slot_delta = vec3s(h5.doubles("/dem/slot_delta"), "slot_delta");
+    const auto walls = h5.ints("/dem/slot_wall");
+    d.slot_wall.assign(walls.begin(), walls.end());
+    c.dem_cumulative = h5.doubles("/dem/cumulative_removed");
+    c.face_von_mises = h5.doubles("/face_von_mises");
+    d.time = h5.attribute("/dem", "time");
+    d.n_steps = std::uint64_t(h5.attribute("/dem", "n_steps"));
+    d.n_rebuilds = std::uint64_t(h5.attribute("/dem", "n_rebuilds"));
+    c.revolutions = read_records<dem::RevolutionRecord>(h5, "/revolutions");
+    c.stages = read_records<StageRecord>(h5, "/stages");
+    if (c.has_sample) {
+      auto& s = c.sample;
+      s.vertices = h5.doubles("/sample/vertices");
+      s.tetrahedra = h5.int64s("/sample/tetrahedra");
+      s.boundary_faces = h5.int64s("/sample/boundary_faces");
+      s.boundary_ids = h5.ints("/sample/boundary_ids");
+      auto& m = s.surface;
+      m.vertices = vec3s(h5.doubles("/sample/surface/vertices"), "surface/vertices");
+      const auto tri = h5.int64s("/sample/surface/triangles");
+      m.triangles.resize(tri.size() / 3);
+      for (std::size_t f = 0; f < m.triangles.size(); ++f)
+        for (int k = 0; k < 3; ++k)
+          m.triangles[f][k] = std::uint32_t(tri[3 * f + k]);
+      m.face_labels = h5.ints("/sample/surface/labels");
+      m.set_revision(std::uint64_t(h5.attribute("/sample/surface", "revision")));
+      m.validate("checkpoint surface");
+      s.removed_volume = h5.doubles("/sample/removed_volume");
+      s.wear_depth = h5.doubles("/sample/wear_depth");
+      s.n_remeshes = int(h5.attribute("/sample", "n_remeshes"));
+      if (s.removed_volume.size() != m.n_faces() || s.wear_depth.size() != m.n_faces())
+        throw std::runtime_error("sample fields do not match its surface");
+    }
+    if (int(c.stages.size()) != c.stages_done || int(c.revolutions.size()) != c.revolutions_done)
+      throw std::runtime_error("the record counts do not match the stage and revolution counts");
+  } catch (const std::exception& e) {
+    throw std::runtime_error("checkpoint '" + path + "' is damaged or incomplete: " + e.what());
+  }
+  return c;
+}
+
+} // namespace wear::coupling

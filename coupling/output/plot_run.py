@@ -1,0 +1,339 @@
+#!/usr/bin/env python3
+"""Plots of a `wearsim run` results folder (PNG files written into <run>/plots/).
+
+    /usr/bin/python3 coupling/output/plot_run.py <run> [--elements C13,C33]
+    /usr/bin/python3 coupling/output/plot_run.py --compare <runA> <runB> [--output DIR]
+
+One run: wear vs revolutions with the fits y = a x and y = b x^2 + c x (R^2), wear per column
+and per convex element, normal force, bottom-layer speeds, coefficients of variation, stress
+per stage, and worn profiles (side and front views) of chosen convex elements per stage.
+Two runs: cumulative wear of both, per-column wear side by side, peak von Mises per stage.
+Needs python3-matplotlib, python3-numpy and python3-h5py (Debian packages).
+"""
+import argparse
+import csv
+import glob
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+
+def read_csv(path):
+    if not os.path.exists(path):
+        sys.exit(f"plot_run: '{path}' does not exist (is this a wearsim run folder?)")
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    return rows
+
+
+def column(rows, name, default=np.nan):
+    out = []
+    for r in rows:
+        try:
+            out.append(float(r.get(name, default)))
+        except (TypeError, ValueError):
+            out.append(default)
+    return np.array(out)
+
+
+def fits(x, y):
+    """Least squares through the origin: y = a x and y = b x^2 + c x, with R^2."""
+    if len(x) == 0:
+        return None
+    a = float(np.dot(x, y) / np.dot(x, x))
+    m = np.vstack([x * x, x]).T
+    (b, c), *_ = np.linalg.lstsq(m, y, rcond=None)
+    ss = float(np.sum((y - y.mean()) ** 2)) or 1.0
+    r2a = 1 - float(np.sum((y - a * x) ** 2)) / ss
+    r2q = 1 - float(np.sum((y - b * x * x - c * x) ** 2)) / ss
+    return a, r2a, b, c, r2q
+
+
+def save(fig, path):
+    for ax in fig.axes:
+        if ax.get_xlabel() in ("revolution", "stage"):
+            ax.xaxis.get_major_locator().set_params(integer=True)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    print("wrote", path)
+
+
+def plot_wear(rows, out):
+    rev = column(rows, "revolution")
+    cum = column(rows, "wear_volume_cumulative_m3") * 1e9
+    fig, ax = plt.subplots(figsize=(6, 4))
+    ax.plot(rev, cum, "o", label="DEM wear (wear law, not amplified)")
+    f = fits(rev, cum)
+    if f:
+        a, r2a, b, c, r2q = f
+        x = np.linspace(0, rev.max(), 100)
+        ax.plot(x, a * x, "-", label=f"y = {a:.3g} x  (R$^2$ = {r2a:.4f})")
+        ax.plot(x, b * x * x + c * x, "--", label=f"y = {b:.3g} x$^2$ + {c:.3g} x  (R$^2$ = {r2q:.4f})")
+    ax.set_xlabel("revolution")
+    ax.set_ylabel("cumulative wear volume [mm$^3$]")
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3)
+    save(fig, os.path.join(out, "wear.png"))
+
+
+def plot_bars(rows, out):
+    last = rows[-1:]
+    cols = sorted(k for k in rows[0] if k.startswith("column") and k.endswith("_wear_m3"))
+    elems = [k for k in rows[0] if k.startswith("C") and k.endswith("_wear_m3")]
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4), gridspec_kw={"width_ratios": [1, 3]})
+    total_col = [column(rows, k).sum() * 1e9 for k in cols]
+    axes[0].bar([k.replace("_wear_m3", "") for k in cols], total_col, color="tab:blue")
+    axes[0].set_ylabel("wear over all revolutions [mm$^3$]")
+    axes[0].set_title("per column")
+    if elems:
+        total_el = [column(rows, k).sum() * 1e9 for k in elems]
+        axes[1].bar([k.replace("_wear_m3", "") for k in elems], total_el, color="tab:orange")
+        axes[1].set_title("per convex element")
+        axes[1].tick_params(axis="x", rotation=90)
+    else:
+        axes[1].text(0.5, 0.5, "plain sample: no elements", ha="center", transform=axes[1].transAxes)
+    del last
+    save(fig, os.path.join(out, "wear_per_column_and_element.png"))
+
+
+def plot_flow(rows, out):
+    rev = column(rows, "revolution")
+    fig, axes = plt.subplots(1, 3, figsize=(13, 3.8))
+    axes[0].errorbar(rev, column(rows, "normal_force_mean_N"), column(rows, "normal_force_std_N"), fmt="o-")
+    axes[0].set_ylabel("normal force on the wear face [N]")
+    axes[1].errorbar(rev, column(rows, "bottom_speed_mean_m_s"), column(rows, "bottom_speed_std_m_s"),
+                     fmt="o-", label="speed [m/s]")
+    ax2 = axes[1].twinx()
+    ax2.errorbar(rev, column(rows, "bottom_spin_mean_rad_s"), column(rows, "bottom_spin_std_rad_s"),
+                 fmt="s--", color="tab:red", label="angular speed [rad/s]")
+    axes[1].set_ylabel("bottom-layer speed [m/s]")
+    ax2.set_ylabel("bottom-layer angular speed [rad/s]", color="tab:red")
+    for name, label in [("cv_speed", "speed over the sample"), ("cv_bed_height", "bed height"),
+                        ("cv_wear_rate", "wear rate")]:
+        axes[2].plot(rev, column(rows, name), "o-", label=label)
+    axes[2].set_ylabel("coefficient of variation [-]")
+    axes[2].legend(fontsize=8)
+    for ax in axes:
+        ax.set_xlabel("revolution")
+        ax.grid(alpha=0.3)
+    save(fig, os.path.join(out, "flow.png"))
+
+
+def plot_stages(stages, out):
+    if not stages:
+        return
+    st = column(stages, "stage")
+    fig, axes = plt.subplots(1, 2, figsize=(10, 3.8))
+    axes[0].plot(st, column(stages, "applied_volume_m3") * 1e9, "o-", label="asked (wear x amplification)")
+    axes[0].plot(st, column(stages, "geometry_volume_change_m3") * 1e9, "x--", label="removed by the mesh update")
+    worn_through = column(stages, "worn_through_volume_m3", 0.0) * 1e9
+    if np.nansum(worn_through) > 0:
+        axes[0].plot(st, worn_through, "s:", label="asked of worn-through faces (not removed)")
+    axes[0].set_ylabel("volume per stage [mm$^3$]")
+    axes[0].legend(fontsize=8)
+    vm = column(stages, "max_von_mises_Pa") * 1e-6
+    axes[1].plot(st, vm, "o-", color="tab:red")
+    axes[1].set_ylabel("peak von Mises [MPa]")
+    for k, r in enumerate(stages):
+        if float(r.get("remeshes", 0)) > 0:
+            axes[1].axvline(st[k], color="gray", alpha=0.3)
+    for ax in axes:
+        ax.set_xlabel("stage")
+        ax.grid(alpha=0.3)
+    save(fig, os.path.join(out, "stages.png"))
+
+
+def element_label(name):
+    return 10 * int(name[1]) + int(name[2])
+
+
+def section(pts, tri, axis, value):
+    """Segments where the triangles cross the plane coordinate[axis] = value."""
+    segs = []
+    for t in tri:
+        p = pts[t]
+        d = p[:, axis] - value
+        cut = []
+        for i in range(3):
+            j = (i + 1) % 3
+            if (d[i] < 0) != (d[j] < 0):
+                s = d[i] / (d[i] - d[j])
+                cut.append(p[i] + s * (p[j] - p[i]))
+        if len(cut) == 2:
+            segs.append(cut)
+    return segs
+
+
+def plot_profiles(run, elements, out):
+    """Mid-plane sections of convex elements per stage: side (y-z at the element's centre x)
+    and front (x-z at its centre y), from the surface files of the stages."""
+    try:
+        import h5py
+    except ImportError:
+        print("plot_run: python3-h5py missing, no profiles")
+        return
+    from matplotlib.collections import LineCollection
+
+    files = sorted(glob.glob(os.path.join(run, "surface", "stage_*.h5")))
+    if len(files) > 6:  # first, last and about four in between
+        keep = set(np.linspace(0, len(files) - 1, 6).round().astype(int))
+        files = [f for k, f in enumerate(files) if k in keep]
+    for name in elements:
+        lab = element_label(name)
+        fig, axes = plt.subplots(1, 2, figsize=(10, 3.6))
+        centre = None
+        colours = plt.cm.viridis(np.linspace(0, 0.9, max(1, len(files))))
+        for k, path in enumerate(files):
+            with h5py.File(path, "r") as h5:
+                pts = h5["/points"][...]
+                tri = h5["/triangles"][...]
+                labels = h5["/cell/label"][...].ravel()
+            mine = tri[labels == lab]
+            if mine.size == 0:
+                continue
+            if centre is None:  # the unworn element's footprint centre
+                centre = pts[np.unique(mine.ravel())].mean(axis=0)
+            stage = int(os.path.basename(path)[6:10])
+            for ax, axis, horiz, title in [(axes[0], 0, 1, "side view (section at its centre x)"),
+                                           (axes[1], 1, 0, "front view (section at its centre y)")]:
+                segs = section(pts, mine, axis, centre[axis])
+                lines = [[(a[horiz] * 1e3, a[2] * 1e3), (b[horiz] * 1e3, b[2] * 1e3)] for a, b in segs]
+                ax.add_collection(LineCollection(lines, colors=[colours[k]], label=f"stage {stage}"))
+                ax.set_title(f"{name}: {title}", fontsize=10)
+                ax.set_xlabel("y [mm]" if horiz == 1 else "x [mm]")
+                ax.set_ylabel("z [mm]")
+        if centre is None:
+            plt.close(fig)
+            continue
+        for ax in axes:
+            ax.autoscale()
+            ax.set_aspect("equal", adjustable="datalim")
+            ax.grid(alpha=0.3)
+        axes[0].legend(fontsize=7)
+        save(fig, os.path.join(out, f"profile_{name}.png"))
+
+
+def plot_wear_out(run, stages, out, hours_per_revolution):
+    """Removed volume and the height of every convex element (max z - min z of its surface)
+    against equivalent test hours: revolutions x amplification x hours per revolution
+    (the reference study's alpha: 2 revolutions = 56 h, so 28 h)."""
+    try:
+        import h5py
+    except ImportError:
+        return
+    files = sorted(glob.glob(os.path.join(run, "surface", "stage_*.h5")))
+    if not stages or len(files) < 2:
+        return
+    hours = {0: 0.0}
+    total = 0.0
+    for r in stages:
+        if r.get("scheme_name") != "dem-only":
+            n = float(r["last_revolution"]) - float(r["first_revolution"]) + 1
+            total += n * float(r["amplification"]) * hours_per_revolution
+        hours[int(float(r["stage"]))] = total
+    heights = {}  # label -> [(hours, height)]
+    for path in files:
+        stage = int(os.path.basename(path)[6:10])
+        if stage not in hours:
+            continue
+        with h5py.File(path, "r") as h5:
+            pts = h5["/points"][...]
+            tri = h5["/triangles"][...]
+            labels = h5["/cell/label"][...].ravel()
+        for lab in np.unique(labels):
+            if lab < 11 or lab > 99 or lab % 10 == 0:
+                continue
+            z = pts[np.unique(tri[labels == lab].ravel()), 2]
+            heights.setdefault(int(lab), []).append((hours[stage], (z.max() - z.min()) * 1e3))
+    if not heights:
+        return
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4))
+    st_hours = [hours[int(float(r["stage"]))] for r in stages]
+    axes[0].plot(st_hours, column(stages, "cumulative_applied_m3") * 1e9, "o-", ms=3)
+    axes[0].set_ylabel("volume removed from the sample [mm$^3$]")
+    colours = plt.cm.tab20(np.linspace(0, 1, len(heights)))
+    for c, (lab, hz) in zip(colours, sorted(heights.items())):
+        hz = np.array(hz)
+        axes[1].plot(hz[:, 0], hz[:, 1], "-", color=c, label=f"C{lab}")
+    axes[1].set_ylabel("element height (max z - min z) [mm]")
+    axes[1].legend(fontsize=6, ncol=3)
+    for ax in axes:
+        ax.set_xlabel(f"equivalent test hours ({hours_per_revolution:g} h per revolution x amplification)")
+        ax.grid(alpha=0.3)
+    save(fig, os.path.join(out, "wear_out.png"))
+
+
+def plot_run(run, elements, hours_per_revolution=28.0):
+    out = os.path.join(run, "plots")
+    os.makedirs(out, exist_ok=True)
+    rows = read_csv(os.path.join(run, "summary.csv"))
+    if not rows:
+        sys.exit(f"plot_run: '{run}/summary.csv' holds no revolution yet")
+    stages = read_csv(os.path.join(run, "stages.csv"))
+    plot_wear(rows, out)
+    plot_bars(rows, out)
+    plot_flow(rows, out)
+    plot_stages(stages, out)
+    plot_profiles(run, elements, out)
+    plot_wear_out(run, stages, out, hours_per_revolution)
+
+
+def plot_compare(a, b, out):
+    os.makedirs(out, exist_ok=True)
+    ra, rb = read_csv(os.path.join(a, "summary.csv")), read_csv(os.path.join(b, "summary.csv"))
+    sa, sb = read_csv(os.path.join(a, "stages.csv")), read_csv(os.path.join(b, "stages.csv"))
+    fig, axes = plt.subplots(1, 3, figsize=(14, 4))
+    for rows, name in [(ra, a), (rb, b)]:
+        axes[0].plot(column(rows, "revolution"), column(rows, "wear_volume_cumulative_m3") * 1e9, "o-",
+                     label=os.path.basename(name.rstrip("/")))
+    axes[0].set_xlabel("revolution")
+    axes[0].set_ylabel("cumulative wear [mm$^3$]")
+    axes[0].legend(fontsize=8)
+    cols = sorted(k for k in ra[0] if k.startswith("column") and k.endswith("_wear_m3"))
+    x = np.arange(len(cols))
+    axes[1].bar(x - 0.2, [column(ra, k).sum() * 1e9 for k in cols], 0.4, label=os.path.basename(a.rstrip("/")))
+    axes[1].bar(x + 0.2, [column(rb, k).sum() * 1e9 for k in cols], 0.4, label=os.path.basename(b.rstrip("/")))
+    axes[1].set_xticks(x, [k.replace("_wear_m3", "") for k in cols])
+    axes[1].set_ylabel("wear over all revolutions [mm$^3$]")
+    axes[1].legend(fontsize=8)
+    for rows, name in [(sa, a), (sb, b)]:
+        axes[2].plot(column(rows, "stage"), column(rows, "max_von_mises_Pa") * 1e-6, "o-",
+                     label=os.path.basename(name.rstrip("/")))
+    axes[2].set_xlabel("stage")
+    axes[2].set_ylabel("peak von Mises [MPa]")
+    axes[2].legend(fontsize=8)
+    for ax in axes:
+        ax.grid(alpha=0.3)
+    save(fig, os.path.join(out, "compare.png"))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("runs", nargs="+")
+    ap.add_argument("--compare", action="store_true", help="compare two runs")
+    ap.add_argument("--elements", default="C13,C33,C53", help="convex elements to draw profiles of")
+    ap.add_argument("--output", default=None, help="folder of the comparison plot")
+    ap.add_argument("--hours-per-revolution", type=float, default=28.0,
+                    help="test hours one simulated revolution stands for (wear_out.png); "
+                         "the reference study's alpha: 2 revolutions = 56 h")
+    args = ap.parse_args()
+    if not args.hours_per_revolution > 0:
+        sys.exit("plot_run: --hours-per-revolution must be positive")
+    if args.compare:
+        if len(args.runs) != 2:
+            sys.exit("plot_run: --compare takes two run folders")
+        plot_compare(args.runs[0], args.runs[1], args.output or args.runs[1] + "/plots")
+    else:
+        for run in args.runs:
+            plot_run(run, [e.strip() for e in args.elements.split(",") if e.strip()],
+                     args.hours_per_revolution)
+
+
+if __name__ == "__main__":
+    main()

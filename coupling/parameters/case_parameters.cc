@@ -1,0 +1,235 @@
+// Case-file parameters through deal.II's ParameterHandler.
+//
+// Values are in SI units (m, deg for angles as named). ParameterHandler refuses undeclared
+// entries, which makes misspelled names errors; validate() in each module then checks
+// physical sense and names the parameter. The resolved file is produced by declaring,
+// setting every value from the structs and printing in PRM style, so it always round-trips.
+#include "coupling/parameters/case_parameters.h"
+
+#include "dem/tester/wear_tester.h"
+#include "meshes/atomic_file.h"
+
+#include <deal.II/base/utilities.h>
+
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+#include <type_traits>
+
+namespace wear::coupling {
+
+using dealii::ParameterHandler;
+namespace Patterns = dealii::Patterns;
+
+namespace {
+
+// One composition drives declaration, parsing and write-back, so the three never disagree;
+// the subsections in case-file order, each declared by the module that owns it.
+template <typename Visitor>
+void visit(CaseParameters& c, Visitor& v) {
+  meshes::visit_parameters(c.geometry, v);
+  dem::visit_parameters(c.dem, v);
+  dem::visit_parameters(c.wear_law, v);
+  dem::visit_parameters(c.deformation, v);
+  visit_parameters(c.coupling, v);
+  fem::visit_parameters(c.fem, v);
+  visit_parameters(c.output, v);
+}
+
+std::string to_text(double x) {
+  std::ostringstream s;
+  s.precision(17);
+  s << x;
+  return s.str();
+}
+
+template <typename T>
+std::string join(const std::vector<T>& x) {
+  std::string s;
+  for (const auto& v : x) {
+    if constexpr (std::is_floating_point_v<T>)
+      s += (s.empty() ? "" : ", ") + to_text(v);
+    else
+      s += (s.empty() ? "" : ", ") + std::to_string(v);
+  }
+  return s;
+}
+
+struct Declare {
+  ParameterHandler& prm;
+  void enter(const std::string& s) { prm.enter_subsection(s); }
+  void leave() { prm.leave_subsection(); }
+  void real(const std::string& n, double& x, const std::string& doc) {
+    prm.declare_entry(n, to_text(x), Patterns::Double(), doc);
+  }
+  void integer(const std::string& n, int& x, int lo, int hi, const std::string& doc) {
+    prm.declare_entry(n, std::to_string(x), Patterns::Integer(lo, hi), doc);
+  }
+  void unsigned_integer(const std::string& n, unsigned int& x, int lo, int hi,
+                        const std::string& doc) {
+    prm.declare_entry(n, std::to_string(x), Patterns::Integer(lo, hi), doc);
+  }
+  void boolean(const std::string& n, bool& x, const std::string& doc) {
+    prm.declare_entry(n, x ? "true" : "false", Patterns::Bool(), doc);
+  }
+  void choice(const std::string& n, bool& x, const std::string& yes, const std::string& no,
+              const std::string& doc) {
+    prm.declare_entry(n, x ? yes : no, Patterns::Selection(yes + "|" + no), doc);
+  }
+  void text(const std::string& n, std::string& x, const std::string& doc) {
+    prm.declare_entry(n, x, Patterns::Anything(), doc);
+  }
+  void selection(const std::string& n, std::string& x, const std::string& options,
+                 const std::string& doc) {
+    prm.declare_entry(n, x, Patterns::Selection(options), doc);
+  }
+  void count(const std::string& n, std::uint64_t& x, const std::string& doc) {
+    prm.declare_entry(n, std::to_string(x), Patterns::Integer(0), doc);
+  }
+  void real_list(const std::string& n, std::vector<double>& x, const std::string& doc) {
+    prm.declare_entry(n, join(x), Patterns::List(Patterns::Double()), doc);
+  }
+  void int_list(const std::string& n, std::vector<int>& x, const std::string& doc) {
+    prm.declare_entry(n, join(x), Patterns::List(Patterns::Integer(0)), doc);
+  }
+};
+
+struct Parse {
+  ParameterHandler& prm;
+  void enter(const std::string& s) { prm.enter_subsection(s); }
+  void leave() { prm.leave_subsection(); }
+  void real(const std::string& n, double& x, const std::string&) { x = prm.get_double(n); }
+  void integer(const std::string& n, int& x, int, int, const std::string&) {
+    x = static_cast<int>(prm.get_integer(n));
+  }
+  void unsigned_integer(const std::string& n, unsigned int& x, int, int, const std::string&) {
+    x = static_cast<unsigned int>(prm.get_integer(n));
+  }
+  void boolean(const std::string& n, bool& x, const std::string&) { x = prm.get_bool(n); }
+  void choice(const std::string& n, bool& x, const std::string& yes, const std::string&,
+              const std::string&) {
+    x = prm.get(n) == yes;
+  }
+  void text(const std::string& n, std::string& x, const std::string&) { x = prm.get(n); }
+  void selection(const std::string& n, std::string& x, const std::string&, const std::string&) {
+    x = prm.get(n);
+  }
+  void count(const std::string& n, std::uint64_t& x, const std::string&) {
+    x = static_cast<std::uint64_t>(prm.get_integer(n));
+  }
+  void real_list(const std::string& n, std::vector<double>& x, const std::string&) {
+    x = dealii::Utilities::string_to_double(dealii::Utilities::split_string_list(prm.get(n)));
+  }
+  void int_list(const std::string& n, std::vector<int>& x, const std::string&) {
+    x = dealii::Utilities::string_to_int(dealii::Utilities::split_string_list(prm.get(n)));
+  }
+};
+
+struct Store {
+  ParameterHandler& prm;
+  void enter(const std::string& s) { prm.enter_subsection(s); }
+  void leave() { prm.leave_subsection(); }
+  void real(const std::string& n, double& x, const std::string&) { prm.set(n, x); }
+  void integer(const std::string& n, int& x, int, int, const std::string&) {
+    prm.set(n, static_cast<long int>(x));
+  }
+  void unsigned_integer(const std::string& n, unsigned int& x, int, int, const std::string&) {
+    prm.set(n, static_cast<long int>(x));
+  }
+  void boolean(const std::string& n, bool& x, const std::string&) { prm.set(n, x); }
+  void choice(const std::string& n, bool& x, const std::string& yes, const std::string& no,
+              const std::string&) {
+    prm.set(n, x ? yes : no);
+  }
+  void text(const std::string& n, std::string& x, const std::string&) { prm.set(n, x); }
+  void selection(const std::string& n, std::string& x, const std::string&, const std::string&) {
+    prm.set(n, x);
+  }
+  void count(const std::string& n, std::uint64_t& x, const std::string&) {
+    prm.set(n, static_cast<long int>(x));
+  }
+  void real_list(const std::string& n, std::vector<double>& x, const std::string&) {
+    prm.set(n, join(x));
+  }
+  void int_list(const std::string& n, std::vector<int>& x, const std::string&) {
+    prm.set(n, join(x));
+  }
+};
+
+// deal.II's exception text is long; keep the part that says what is wrong.
+std::string short_message(const std::exception& e) {
+  std::string m = e.what();
+  const auto pos = m.find("Additional information:");
+  if (pos != std::string::npos)
+    m = m.substr(pos + 23);
+  const auto end = m.find("Stacktrace:");
+  if (end != std::string::npos)
+    m = m.substr(0, end);
+  while (!m.empty() && (m.back() == '\n' || m.back() == ' ' || m.back() == '-'))
+    m.pop_back();
+  while (!m.empty() && (m.front() == '\n' || m.front() == ' '))
+    m.erase(0, 1);
+  return m;
+}
+
+} // namespace
+
+void declare_parameters(ParameterHandler& prm) {
+  CaseParameters defaults;
+  Declare declare{prm};
+  visit(defaults, declare);
+}
+
+CaseParameters read_case(const std::string& path) {
+  if (!std::filesystem::exists(path))
+    throw std::runtime_error("case file '" + path + "' does not exist");
+  ParameterHandler prm;
+  declare_parameters(prm);
+  try {
+    prm.parse_input(path, "", false);
+  } catch (const std::exception& e) {
+    throw std::runtime_error("case file '" + path + "': " + short_message(e));
+  }
+  CaseParameters p;
+  p.case_file = path;
+  Parse parse{prm};
+  visit(p, parse);
+  try {
+    meshes::validate(p.geometry);
+    dem::validate(p.dem);
+    dem::make_wear_law(p.wear_law);
+    validate(p.coupling, p.fem);
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error("case file '" + path + "': " + e.what());
+  }
+  return p;
+}
+
+std::string resolved_parameters(const CaseParameters& p) {
+  ParameterHandler prm;
+  declare_parameters(prm);
+  CaseParameters copy = p;
+  Store store{prm};
+  visit(copy, store);
+  std::ostringstream out;
+  prm.print_parameters(out, ParameterHandler::PRM);
+  return out.str();
+}
+
+void write_resolved_parameters(const CaseParameters& p, const std::string& path) {
+  const std::string text = resolved_parameters(p);
+  meshes::write_atomically(path, [&](std::ostream& out) {
+    out << "# Fully resolved parameters";
+    if (!p.case_file.empty())
+      out << " of " << p.case_file;
+    out << "\n" << text;
+  });
+}
+
+void print_parameters(std::ostream& out) {
+  ParameterHandler prm;
+  declare_parameters(prm);
+  prm.print_parameters(out, ParameterHandler::Text);
+}
+
+} // namespace wear::coupling

@@ -1,0 +1,26 @@
+#pragma once
+// The DEM performance workloads of shared/anchors/liggghts, rebuilt in this engine.
+#include "dem/engine/system.h"
+
+#include <string>
+
+namespace wear::dem {
+
+struct BenchmarkOptions {
+  std::string workload = "annulus";   ///< annulus | sector5k | sector20k | sector45k | sample45k
+  std::uint64_t settle_steps = 24000; ///< as the anchor's NSETTLE, floor rotating
+  std::uint64_t warm_steps = 500;
+  std::uint64_t timed_steps = 2000;
+  int repeats = 1;
+};
+
+/// Builds the workload into `s` (not set up): monodisperse 7.95 mm spheres, E = 5e7 Pa,
+/// nu = 0.25, e = 0.5, mu = 0.5, mu_r = 0.1, rho = 2650, dt = 20 % of the Rayleigh time,
+/// skin 2 mm, simple cubic lattice a = 1.03 d with 0.1 mm jitter, floor rotating at 90 deg/s.
+/// annulus: the full annulus 0.29..0.50 m with static cylinders (anchor annulus45k);
+/// sectorNk: the cylindrical periodic sector (our geometry for the anchor's periodic
+/// channels monoNk), 14 lattice layers, angle chosen for about N particles, rotating walls;
+/// sample45k: sector45k plus the anchor's 100 x 100 mm plate of 3200 triangles facing the flow.
+void build_benchmark(System& s, const std::string& workload);
+
+} // namespace wear::dem

@@ -1,0 +1,160 @@
+// The particle-pair contact kernel (model.md section 2, law in contact_law.h).
+//
+// A block of listed pairs goes through three passes:
+//   1. distance of every listed pair; the touching ones (|x_i - x_j| < R_i + R_j) are
+//      compacted into the block without a branch, and a pair that no longer touches loses
+//      its tangential history;
+//   2. the Hertz-Mindlin law over the compacted contacts, several per SIMD instruction, with
+//      the particle data gathered lane by lane: the law is branch-free, so no lane waits on
+//      another's sliding or rolling state;
+//   3. scatter of forces, torques and histories in list order.
+// Half of the listed pairs do not touch in a dense bed (list skin), and which ones do is not
+// predictable: compacting first removes that branch from the arithmetic. The kernel is
+// compiled for generic x86-64, x86-64-v3 (AVX2, FMA) and x86-64-v4 (AVX-512); the loader picks
+// one for the CPU, so a result is bitwise reproducible on one CPU kind, and differs between
+// kinds in the last bits (fused multiply-adds).
+#include "dem/engine/pair_kernel.h"
+
+#include "dem/engine/contact_law.h"
+
+#include <cmath>
+
+namespace wear::dem {
+
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define WEAR_PAIR_KERNEL_CLONES                                                                    \
+  __attribute__((target_clones("default", "arch=x86-64-v3", "arch=x86-64-v4")))
+#else
+#define WEAR_PAIR_KERNEL_CLONES
+#endif
+
+namespace {
+
+/// Pass 1: the distance of every listed pair; the touching ones are compacted into the block
+/// without a branch, and a pair that no longer touches loses its history. Returns the count.
+[[gnu::always_inline]] inline int compact_touching(const PairKernelData& d, const std::uint32_t* pi,
+                                                   const std::uint32_t* pj, Vec3* history,
+                                                   int n_listed, PairBlock& bl) {
+  int m = 0;
+  for (int q = 0; q < n_listed; ++q) {
+    const Vec3 x = d.position[pi[q]] - d.position[pj[q]];
+    const double dist2 = meshes::norm2(x), rs = d.radius[pi[q]] + d.radius[pj[q]];
+    const bool touch = dist2 < rs * rs;
+    bl.pair[m] = std::uint32_t(q);
+    bl.dx[m] = x.x;
+    bl.dy[m] = x.y;
+    bl.dz[m] = x.z;
+    bl.dist2[m] = dist2;
+    m += touch;
+    Vec3& h = history[q];
+    h.x = touch ? h.x : 0.0;
+    h.y = touch ? h.y : 0.0;
+    h.z = touch ? h.z : 0.0;
+  }
+  return m;
+}
+
+/// The geometry of compacted contact c between i and j, gathered lane by lane into g. Every
+/// assignment component by component, g written in place: an aggregate copy (of a Vec3, or
+/// of g returned by value) defeats the vectoriser.
+[[gnu::always_inline]] inline void pair_geometry(const PairKernelData& d, const PairBlock& bl,
+                                                 int c, std::uint32_t i, std::uint32_t j,
+                                                 ContactGeometry& g) {
+  const double ri = d.radius[i], rj = d.radius[j], rs = ri + rj;
+  const double mi = d.mass[i], mj = d.mass[j];
+  const double dist = std::sqrt(bl.dist2[c]);
+  const double inv = 1.0 / dist;
+  g.normal.x = bl.dx[c] * inv;
+  g.normal.y = bl.dy[c] * inv;
+  g.normal.z = bl.dz[c] * inv;
+  g.overlap = rs - dist;
+  g.r_eff = ri * rj / rs;
+  g.m_eff = mi * mj / (mi + mj);
+  g.arm_i = ri - 0.5 * g.overlap;
+  g.arm_j = rj - 0.5 * g.overlap;
+  g.lever_i = ri;
+  g.lever_j = rj;
+  const Vec3 wi = d.angular_velocity[i], wj = d.angular_velocity[j];
+  const Vec3 spin = meshes::cross(
+      Vec3{wi.x * ri + wj.x * rj, wi.y * ri + wj.y * rj, wi.z * ri + wj.z * rj}, g.normal);
+  g.v_contact.x = d.velocity[i].x - d.velocity[j].x - spin.x;
+  g.v_contact.y = d.velocity[i].y - d.velocity[j].y - spin.y;
+  g.v_contact.z = d.velocity[i].z - d.velocity[j].z - spin.z;
+  g.w_relative.x = wi.x - wj.x;
+  g.w_relative.y = wi.y - wj.y;
+  g.w_relative.z = wi.z - wj.z;
+}
+
+/// Pass 2: the contact law over the m compacted contacts, several per SIMD instruction;
+/// updated histories, forces and torques go into the block's lanes.
+[[gnu::always_inline]] inline void contact_law_lanes(const PairKernelData& d,
+                                                     const std::uint32_t* pi,
+                                                     const std::uint32_t* pj, const Vec3* history,
+                                                     int m, PairBlock& bl) {
+  const double dt = d.dt;
+#pragma omp simd
+  for (int c = 0; c < m; ++c) {
+    const std::uint32_t q = bl.pair[c], i = pi[q], j = pj[q];
+    ContactGeometry g;
+    pair_geometry(d, bl, c, i, j, g);
+    ContactParameters cp;
+    const ContactParameters& t = d.contact[d.material[i] * d.n_materials + d.material[j]];
+    cp.e_star = t.e_star;
+    cp.g_star = t.g_star;
+    cp.beta = t.beta;
+    cp.friction = t.friction;
+    cp.rolling_friction = t.rolling_friction;
+    cp.tangential_damping_ratio = t.tangential_damping_ratio;
+    Vec3 h;
+    h.x = history[q].x;
+    h.y = history[q].y;
+    h.z = history[q].z;
+    const ContactResult r = hertz_mindlin(cp, g, dt, h);
+    bl.hx[c] = h.x, bl.hy[c] = h.y, bl.hz[c] = h.z;
+    bl.fx[c] = r.force.x, bl.fy[c] = r.force.y, bl.fz[c] = r.force.z;
+    bl.tix[c] = r.torque_i.x, bl.tiy[c] = r.torque_i.y, bl.tiz[c] = r.torque_i.z;
+    bl.tjx[c] = r.torque_j.x, bl.tjy[c] = r.torque_j.y, bl.tjz[c] = r.torque_j.z;
+  }
+}
+
+/// Pass 3: histories, forces and torques of the m contacts scattered in list order; a
+/// ghost's go to its owner, rotated by +angle.
+[[gnu::always_inline]] inline void scatter(const PairKernelData& d, const std::uint32_t* pi,
+                                           const std::uint32_t* pj, Vec3* history, int m,
+                                           const PairBlock& bl, Vec3* force, Vec3* torque) {
+  const double co = d.cos_angle, si = d.sin_angle;
+  for (int c = 0; c < m; ++c) {
+    const std::uint32_t q = bl.pair[c], i = pi[q], j = pj[q];
+    history[q] = {bl.hx[c], bl.hy[c], bl.hz[c]};
+    const Vec3 f{bl.fx[c], bl.fy[c], bl.fz[c]};
+    const Vec3 tj{bl.tjx[c], bl.tjy[c], bl.tjz[c]};
+    force[i] += f;
+    torque[i] += Vec3{bl.tix[c], bl.tiy[c], bl.tiz[c]};
+    if (j < d.n_real) {
+      force[j] -= f;
+      torque[j] += tj;
+    } else {
+      const std::uint32_t o = d.ghost_owner[j - d.n_real];
+      force[o] -= Vec3{co * f.x - si * f.y, si * f.x + co * f.y, f.z};
+      torque[o] += Vec3{co * tj.x - si * tj.y, si * tj.x + co * tj.y, tj.z};
+    }
+  }
+}
+
+} // namespace
+
+// The passes are inlined into each instruction-set clone (always_inline): compiled for the
+// clone's instruction set, as one function.
+WEAR_PAIR_KERNEL_CLONES
+int pair_block_forces(const PairKernelData& d, std::size_t k0, int n_listed, PairBlock& bl,
+                      Vec3* force, Vec3* torque) {
+  const std::uint32_t* pi = d.pair_i + k0;
+  const std::uint32_t* pj = d.pair_j + k0;
+  Vec3* history = d.history + k0;
+  const int m = compact_touching(d, pi, pj, history, n_listed, bl);
+  contact_law_lanes(d, pi, pj, history, m, bl);
+  scatter(d, pi, pj, history, m, bl, force, torque);
+  return m;
+}
+
+} // namespace wear::dem

@@ -1,0 +1,52 @@
+#pragma once
+// The particle-pair contact kernel: forces and torques of one block of listed pairs.
+#include "dem/engine/material.h"
+#include "meshes/vec3.h"
+
+#include <cstddef>
+#include <cstdint>
+
+namespace wear::dem {
+
+using meshes::Vec3;
+
+constexpr int pair_block_size = 256;
+
+/// Scratch of the kernel (one per thread): the touching pairs of a block, field by field, so
+/// that the contact law runs over them in SIMD lanes.
+struct alignas(64) PairBlock {
+  static constexpr int n = pair_block_size;
+  std::uint32_t pair[n];                                 ///< listed pair, from the block start
+  double dx[n], dy[n], dz[n];                            ///< [m] x_i - x_j
+  double dist2[n];                                       ///< [m^2] |x_i - x_j|^2
+  double hx[n], hy[n], hz[n];                            ///< [m] updated tangential history
+  double fx[n], fy[n], fz[n];                            ///< [N] on i
+  double tix[n], tiy[n], tiz[n], tjx[n], tjy[n], tjz[n]; ///< [N m] on i and on j
+};
+
+/// What the kernel reads and writes, shared by all blocks of a step.
+struct PairKernelData {
+  const Vec3* position;         ///< [m] real and ghost slots
+  const Vec3* velocity;         ///< [m/s]
+  const Vec3* angular_velocity; ///< [rad/s]
+  const double* radius;         ///< [m]
+  const double* mass;           ///< [kg]
+  const int* material;          ///< material id
+  const std::uint32_t *pair_i, *pair_j;
+  const ContactParameters* contact; ///< table indexed by material_i x n_materials + material_j
+  int n_materials;
+  Vec3* history;                    ///< [m] per listed pair, updated
+  const std::uint32_t* ghost_owner; ///< real particle behind ghost slot j - n_real
+  std::size_t n_real;
+  double cos_angle, sin_angle; ///< [-] of the periodic sector angle (ghost forces go back)
+  double dt;                   ///< [s]
+};
+
+/// Pairs [k0, k0 + n_listed): updates their histories and adds their forces and torques into
+/// `force` and `torque` (indexed by particle; a ghost's go to its owner, rotated by +angle).
+/// Returns the number of pairs in contact. Built for several instruction sets, chosen at load
+/// time for the CPU; the same CPU and thread count give bitwise identical results.
+int pair_block_forces(const PairKernelData& d, std::size_t k0, int n_listed, PairBlock& bl,
+                      Vec3* force, Vec3* torque);
+
+} // namespace wear::dem

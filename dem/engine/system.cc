@@ -1,0 +1,405 @@
+// DEM time loop: velocity Verlet (kick-drift, forces, kick) for translation and rotation,
+// with the contact forces of contact_law.h.
+//
+//   v(t+dt/2) = v(t) + dt/2 F(t)/m,  x(t+dt) = x(t) + dt v(t+dt/2),
+//   F(t+dt) from x(t+dt) and v(t+dt/2),  v(t+dt) = v(t+dt/2) + dt/2 F(t+dt)/m,
+// and likewise for the spin with I = 2/5 m r^2 (spheres). Within run(), the closing
+// half-kick of one step and the opening half-kick and drift of the next are one pass over the
+// particles (the same operations in the same order as separate steps). Second order for
+// conservative forces; the velocity-dependent damping and friction use the half-step velocity (as
+// in LIGGGHTS). Time step: Rayleigh time T_R = pi R sqrt(rho/G) / (0.1631 nu + 0.8766) of the
+// smallest particle; above 40 % of T_R the run is refused unless forced.
+// Every particle is checked each step (finite, below the speed limit) and at each list
+// rebuild (inside the domain); failures name the particle and suggest a cause.
+#include "dem/engine/system.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace wear::dem {
+
+namespace {
+constexpr double pi = 3.14159265358979323846;
+enum ErrorKind { no_error = 0, not_finite = 1, too_fast = 2, outside = 3, too_many_walls = 4 };
+} // namespace
+
+int System::add_wall(const MeshWall& wall) {
+  if (set_up_)
+    throw std::logic_error("walls must be added before setup()");
+  if (wall.material() < 0 || wall.material() >= materials.n_materials())
+    throw std::invalid_argument("wall '" + wall.name() + "' refers to an unknown material");
+  walls_.push_back(wall);
+  return n_walls() - 1;
+}
+
+double System::rayleigh_time() const {
+  double t = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < particles.n_real; ++i) {
+    const Material& m = materials.material(particles.material[i]);
+    t = std::min(t, pi * particles.radius[i] * std::sqrt(m.density / m.shear_modulus()) /
+                        (0.1631 * m.poisson_ratio + 0.8766));
+  }
+  return t;
+}
+
+void System::setup() {
+  auto& p = particles;
+  if (p.n_real == 0)
+    throw std::invalid_argument("DEM: no particles");
+  for (std::size_t i = 0; i < p.n_real; ++i) {
+    if (!(p.radius[i] > 0) || !std::isfinite(p.radius[i]))
+      throw std::invalid_argument("DEM: particle " + std::to_string(p.id[i]) +
+                                  " has a non-positive radius " + std::to_string(p.radius[i]));
+    if (p.material[i] < 0 || p.material[i] >= materials.n_materials())
+      throw std::invalid_argument("DEM: particle " + std::to_string(p.id[i]) +
+                                  " refers to an unknown material");
+  }
+  contact_ = materials.contact_table();
+  n_mat_ = materials.n_materials();
+  const double t_r = rayleigh_time();
+  dt_ = settings.time_step > 0 ? settings.time_step : settings.time_step_fraction * t_r;
+  if (!(dt_ > 0) || !std::isfinite(dt_))
+    throw std::invalid_argument("DEM/Time step: must be positive");
+  if (dt_ > 0.4 * t_r && !settings.force_time_step) {
+    std::ostringstream s;
+    s << "DEM/Time step: " << dt_ << " s is " << 100 * dt_ / t_r << " % of the Rayleigh time "
+      << t_r
+      << " s of the smallest particle; the limit is 40 % (set 'Force time step' to override)";
+    throw std::invalid_argument(s.str());
+  }
+  r_max_ = *std::max_element(p.radius.begin(), p.radius.begin() + p.n_real);
+  double r_min = *std::min_element(p.radius.begin(), p.radius.begin() + p.n_real);
+  skin_ = settings.skin > 0 ? settings.skin : 0.5 * r_min;
+  if (settings.periodic.enabled) {
+    const double a = settings.periodic.angle;
+    if (!(a > 0 && a < 2 * pi))
+      throw std::invalid_argument("DEM/Periodic sector angle must lie in (0, 360) degrees");
+    // The sector is periodic by rotation about z, which only a vertical gravity respects.
+    if (settings.gravity.x != 0 || settings.gravity.y != 0)
+      throw std::invalid_argument("DEM/Gravity: a periodic sector needs gravity along z");
+    cos_t_ = std::cos(a);
+    sin_t_ = std::sin(a);
+  }
+  for (auto& w : walls_)
+    w.build_grid(r_max_ + skin_);
+  for (std::size_t i = 0; i < p.n_real; ++i)
+    if (p.id[i] < 0 || std::size_t(p.id[i]) >= p.n_real)
+      throw std::invalid_argument("DEM: particle ids must be 0 .. n - 1");
+  set_n_threads(omp_get_max_threads());
+  set_up_ = true;
+  check_particles_or_throw("at setup");
+  rebuild();
+  reset_forces();
+  compute_forces();
+  collect_forces();
+}
+
+void System::set_n_threads(int n) {
+  if (n < 1)
+    throw std::invalid_argument("DEM: the thread count must be at least 1");
+  n_threads_ = n;
+  omp_set_num_threads(n); // every parallel loop of the engine uses the same count
+  wear_acc_.assign(n_threads_, {});
+  for (auto& t : wear_acc_) {
+    t.resize(walls_.size());
+    for (std::size_t w = 0; w < walls_.size(); ++w)
+      if (walls_[w].wearing())
+        t[w].assign(8 * walls_[w].n_faces() + 8, 0.0);
+  }
+  force_buffer_.assign(n_threads_, {});
+  torque_buffer_.assign(n_threads_, {});
+  for (int t = 1; t < n_threads_; ++t) {
+    force_buffer_[t].assign(particles.n_real, {});
+    torque_buffer_[t].assign(particles.n_real, {});
+  }
+  pair_block_.resize(n_threads_);
+  error_particle_.assign(n_threads_, -1);
+  error_kind_.assign(n_threads_, no_error);
+  if (!particle_cost_.empty())
+    split_ownership();
+}
+
+void System::check_particles_or_throw(const char* stage) {
+  const auto& p = particles;
+  const auto& d = settings.domain;
+  long worst = -1;
+  int kind = no_error;
+  for (int t = 0; t < n_threads_; ++t)
+    if (error_kind_[t] != no_error && (worst < 0 || error_particle_[t] < worst)) {
+      worst = error_particle_[t];
+      kind = error_kind_[t];
+    }
+  if (worst < 0)
+    for (std::size_t i = 0; i < p.n_real; ++i) {
+      const Vec3& x = p.position[i];
+      if (!std::isfinite(x.x) || !std::isfinite(x.y) || !std::isfinite(x.z)) {
+        worst = long(i);
+        kind = not_finite;
+        break;
+      }
+      if (x.x < d.min.x || x.y < d.min.y || x.z < d.min.z || x.x > d.max.x || x.y > d.max.y ||
+          x.z > d.max.z) {
+        worst = long(i);
+        kind = outside;
+        break;
+      }
+    }
+  if (worst < 0)
+    return;
+  const std::size_t i = std::size_t(worst);
+  std::ostringstream s;
+  s.precision(6);
+  s << "DEM " << stage << ", step " << n_steps_ << " (t = " << time_ << " s): particle " << p.id[i]
+    << " at (" << p.position[i].x << ", " << p.position[i].y << ", " << p.position[i].z
+    << ") m with velocity (" << p.velocity[i].x << ", " << p.velocity[i].y << ", "
+    << p.velocity[i].z << ") m/s ";
+  switch (kind) {
+  case not_finite:
+    s << "has a non-finite state. Likely causes: a time step too large for the stiffness "
+         "(reduce 'Time step fraction'), or overlapping particles at insertion.";
+    break;
+  case too_fast:
+    s << "exceeds the speed limit of " << settings.max_speed
+      << " m/s. Likely causes: large initial overlaps, a too large time step, or a wall "
+         "moving into particles.";
+    break;
+  case outside:
+    s << "left the domain [" << d.min.x << ", " << d.max.x << "] x [" << d.min.y << ", " << d.max.y
+      << "] x [" << d.min.z << ", " << d.max.z
+      << "] m. A wall may have a gap, or the particle escaped through an open top.";
+    break;
+  default:
+    s << "touches more than " << wall_slots << " wall features at once.";
+  }
+  throw std::runtime_error(s.str());
+}
+
+void System::step() {
+  if (!set_up_)
+    throw std::logic_error("System::step() before setup()");
+  advance(false);
+  close_step();
+}
+
+void System::run(std::uint64_t n) {
+  if (!set_up_)
+    throw std::logic_error("System::run() before setup()");
+  // The closing half-kick of each step is fused into the next step's opening one: the same
+  // operations in the same order, one pass over the particle arrays instead of two.
+  for (std::uint64_t s = 0; s < n; ++s)
+    advance(s > 0);
+  if (n > 0)
+    close_step();
+}
+
+void System::advance(bool close_previous) {
+  auto& p = particles;
+  const double h = 0.5 * dt_, vmax2 = settings.max_speed * settings.max_speed;
+  const double trigger = 0.25 * skin_ * skin_; // half the skin, squared
+  const Vec3 gravity = settings.gravity;
+  int need_rebuild = 0;
+#pragma omp parallel num_threads(n_threads_) reduction(max : need_rebuild)
+  {
+    const int thread = omp_get_thread_num();
+    const auto [i0, i1] = kick_range(thread);
+    for (std::size_t i = i0; i < i1; ++i) {
+      Vec3 f, t;
+      sum_forces(i, f, t);
+      if (close_previous)
+        closing_kick(i, f, t);
+      const double im = 1.0 / p.mass[i], ii = 1.0 / p.inertia[i];
+      p.velocity[i] += f * (h * im);
+      p.angular_velocity[i] += t * (h * ii);
+      p.position[i] += p.velocity[i] * dt_;
+      // The force is used; it restarts from gravity for this step's evaluation.
+      p.force[i] = gravity * p.mass[i];
+      p.torque[i] = {};
+      const double v2 = meshes::norm2(p.velocity[i]);
+      if (!(v2 <= vmax2)) { // also catches NaN
+        if (error_particle_[thread] < 0 || long(i) < error_particle_[thread]) {
+          error_particle_[thread] = long(i);
+          error_kind_[thread] = std::isfinite(v2) ? too_fast : not_finite;
+        }
+      }
+      if (meshes::norm2(p.position[i] - reference_position_[i]) > trigger)
+        need_rebuild = 1;
+    }
+  }
+  if (close_previous) {
+    time_ += dt_;
+    ++n_steps_;
+  }
+  for (int t = 0; t < n_threads_; ++t)
+    if (error_kind_[t] != no_error)
+      check_particles_or_throw("in the drift");
+  if (need_rebuild)
+    rebuild(true);
+  else
+    refresh_ghosts();
+  compute_forces();
+  for (int t = 0; t < n_threads_; ++t)
+    if (error_kind_[t] != no_error)
+      check_particles_or_throw("in the force computation");
+}
+
+void System::close_step() {
+  auto& p = particles;
+#pragma omp parallel num_threads(n_threads_)
+  {
+    const auto [i0, i1] = kick_range(omp_get_thread_num());
+    for (std::size_t i = i0; i < i1; ++i) {
+      sum_forces(i, p.force[i], p.torque[i]);
+      closing_kick(i, p.force[i], p.torque[i]);
+    }
+  }
+  time_ += dt_;
+  ++n_steps_;
+}
+
+std::pair<std::size_t, std::size_t> System::kick_range(int thread) const {
+  const std::size_t n = particles.n_real;
+  return {n * thread / n_threads_, n * (thread + 1) / n_threads_};
+}
+
+void System::closing_kick(std::size_t i, const Vec3& f, const Vec3& t) {
+  // One expression for step() and the fused pass of run(): they stay bitwise identical.
+  auto& p = particles;
+  const double h = 0.5 * dt_;
+  p.velocity[i] += f * (h / p.mass[i]);
+  p.angular_velocity[i] += t * (h / p.inertia[i]);
+}
+
+void System::compute_forces() {
+  auto& p = particles;
+  std::size_t n_contacts = 0;
+  // One region, no barrier inside: every thread adds to its own arrays only.
+#pragma omp parallel num_threads(n_threads_) reduction(+ : n_contacts)
+  {
+    const int thread = omp_get_thread_num();
+    Vec3* F = thread == 0 ? p.force.data() : force_buffer_[thread].data();
+    Vec3* T = thread == 0 ? p.torque.data() : torque_buffer_[thread].data();
+    n_contacts += pair_forces(thread, F, T);
+    wall_forces(thread, F, T);
+  }
+  n_pair_contacts_ = n_contacts;
+}
+
+void System::collect_forces() {
+  auto& p = particles;
+  for (std::size_t i = 0; i < p.n_real; ++i)
+    sum_forces(i, p.force[i], p.torque[i]);
+}
+
+void System::reset_forces() {
+  auto& p = particles;
+  for (std::size_t i = 0; i < p.n_real; ++i) {
+    p.force[i] = settings.gravity * p.mass[i];
+    p.torque[i] = {};
+  }
+}
+
+Energy System::energy() const {
+  const auto& p = particles;
+  Energy e;
+  for (std::size_t i = 0; i < p.n_real; ++i) {
+    e.kinetic += 0.5 * p.mass[i] * meshes::norm2(p.velocity[i]);
+    e.rotational += 0.5 * p.inertia[i] * meshes::norm2(p.angular_velocity[i]);
+    e.potential -= p.mass[i] * meshes::dot(settings.gravity, p.position[i]);
+  }
+  // Hertz elastic energy 8/15 E* sqrt(R*) delta^(5/2), plus the tangential springs.
+  for (std::size_t k = 0; k < neighbors_.n_pairs(); ++k) {
+    const auto i = neighbors_.pair_i[k], j = neighbors_.pair_j[k];
+    const double d = p.radius[i] + p.radius[j] - meshes::norm(p.position[i] - p.position[j]);
+    if (d <= 0)
+      continue;
+    const auto& c = contact_[p.material[i] * n_mat_ + p.material[j]];
+    const double r = p.radius[i] * p.radius[j] / (p.radius[i] + p.radius[j]);
+    e.elastic += 8.0 / 15.0 * c.e_star * std::sqrt(r) * std::pow(d, 2.5) +
+                 4 * c.g_star * std::sqrt(r * d) * meshes::norm2(pair_history_[k]);
+  }
+  for (std::size_t i = 0; i < p.n_real; ++i)
+    for (auto k = wall_candidate_offset_[i]; k < wall_candidate_offset_[i + 1]; ++k) {
+      const auto& w = walls_[wall_candidate_[k] >> 24];
+      const std::uint32_t f = wall_candidate_[k] & 0xFFFFFFu;
+      const auto cf = w.closest(f, p.position[i]);
+      const double d = p.radius[i] - meshes::norm(p.position[i] - cf.point);
+      if (d <= 0 || !w.owns_contact(f, cf, p.position[i]))
+        continue;
+      const auto& c = contact_[p.material[i] * n_mat_ + w.material()];
+      e.elastic += 8.0 / 15.0 * c.e_star * std::sqrt(p.radius[i]) * std::pow(d, 2.5);
+    }
+  return e;
+}
+
+double System::bytes_per_particle() const {
+  const auto& p = particles;
+  const double n = double(std::max<std::size_t>(1, p.n_real));
+  const double per_slot = 5 * sizeof(Vec3) + 3 * sizeof(double) + sizeof(int) + 8;
+  double bytes = per_slot * p.position.size() + sizeof(Vec3) * reference_position_.size() +
+                 sizeof(std::uint32_t) * wall_candidate_offset_.size() +
+                 (n_threads_ - 1) * 2 * sizeof(Vec3) * p.n_real + sizeof(WallSlot) * slots_.size();
+  return (bytes + sizeof(PairBlock) * pair_block_.size()) / n;
+}
+
+void System::set_wall_vertices(int w, const std::vector<Vec3>& vertices) {
+  walls_.at(w).set_vertices(vertices);
+  if (set_up_) {
+    rebuild();
+  }
+}
+
+void System::replace_wall_mesh(int w, const meshes::SurfaceMesh& mesh) {
+  const MeshWall& old = walls_.at(w);
+  MeshWall wall(mesh, old.material(), old.motion(), old.wearing(), old.name());
+  walls_[w] = std::move(wall);
+  if (!set_up_)
+    return;
+  walls_[w].build_grid(r_max_ + skin_);
+  for (auto& t : wear_acc_)
+    if (walls_[w].wearing())
+      t[w].assign(8 * walls_[w].n_faces() + 8, 0.0);
+  rebuild();
+}
+
+WearIntegrals System::wear_integrals(int w) const {
+  const auto& wall = walls_.at(w);
+  if (!wall.wearing())
+    throw std::invalid_argument("wall '" + wall.name() + "' is not a wearing wall");
+  const std::size_t nf = wall.n_faces();
+  WearIntegrals r;
+  r.impulse.assign(nf, {});
+  r.normal_impulse.assign(nf, 0);
+  r.archard.assign(nf, 0);
+  r.sliding_work.assign(nf, 0);
+  r.contact_steps.assign(nf, 0);
+  for (int t = 0; t < n_threads_; ++t) {
+    const auto& a = wear_acc_[t][w];
+    for (std::size_t f = 0; f < nf; ++f) {
+      const double* v = &a[8 * f];
+      r.impulse[f] += Vec3{v[0], v[1], v[2]};
+      r.normal_impulse[f] += v[3];
+      r.archard[f] += v[4];
+      r.sliding_work[f] += v[5];
+      r.contact_steps[f] += v[6];
+    }
+    const double* tot = &a[8 * nf];
+    r.total_impulse += Vec3{tot[0], tot[1], tot[2]};
+    r.total_normal_impulse += tot[3];
+    r.total_archard += tot[4];
+    r.total_sliding_work += tot[5];
+  }
+  return r;
+}
+
+void System::reset_wear_integrals() {
+  for (auto& t : wear_acc_)
+    for (auto& w : t)
+      std::fill(w.begin(), w.end(), 0.0);
+}
+
+} // namespace wear::dem

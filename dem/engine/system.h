@@ -1,0 +1,246 @@
+#pragma once
+// The DEM system: particles, walls, materials and the time loop (velocity Verlet).
+#include "dem/engine/material.h"
+#include "dem/engine/mesh_wall.h"
+#include "dem/engine/neighbor_list.h"
+#include "dem/engine/pair_kernel.h"
+#include "dem/engine/particles.h"
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace wear::dem {
+
+/// Cylindrical periodic boundary: the sector 0 <= theta < angle about the z axis through the
+/// origin. A particle leaving through one cut plane re-enters through the other, position,
+/// velocity and spin rotated by the sector angle; pairs across the cut see ghost images.
+struct PeriodicSector {
+  bool enabled = false;
+  double angle = 0; ///< [rad]
+};
+
+struct DemSettings {
+  Vec3 gravity{0, 0, -9.81};       ///< [m/s^2]
+  double time_step = 0;            ///< [s]; 0: time_step_fraction x Rayleigh time
+  double time_step_fraction = 0.2; ///< [-] of the Rayleigh time of the smallest particle
+  bool force_time_step = false;    ///< allow a step above 40 % of the Rayleigh time
+  double skin = 0;                 ///< [m] neighbour-list skin; 0: 0.25 x smallest diameter
+  double max_speed = 50;           ///< [m/s] a faster particle stops the run
+  meshes::BoundingBox domain{{-1e3, -1e3, -1e3}, {1e3, 1e3, 1e3}}; ///< [m] leaving it is an error
+  PeriodicSector periodic;
+};
+
+/// Extensive per-face integrals on a wearing wall over the current window (model.md s. 4).
+struct WearIntegrals {
+  std::vector<Vec3> impulse;          ///< [N s] integral of the force on the face
+  std::vector<double> normal_impulse; ///< [N s] integral of F_n
+  std::vector<double> archard;        ///< [N m] integral of F_n |v_t|
+  std::vector<double> sliding_work;   ///< [J] integral of |F_t . v_t|
+  std::vector<double> contact_steps;  ///< [-] contact-steps (split contacts count fractionally)
+  /// Per-contact totals of the same window, summed before any splitting over faces.
+  double total_archard = 0, total_normal_impulse = 0, total_sliding_work = 0;
+  Vec3 total_impulse;
+};
+
+/// Everything that decides how a set-up System continues: the real particles in the engine's
+/// order, the pair list with its tangential histories, the wall-contact slots and the clock.
+/// Exported after a stage and imported into a System set up with the same particles, walls
+/// and thread count, it continues the run bit for bit (checkpoints).
+struct SystemState {
+  std::vector<Vec3> position, velocity, angular_velocity; ///< [m], [m/s], [rad/s]
+  std::vector<Vec3> force, torque;                        ///< [N], [N m] of the last step
+  std::vector<double> radius, mass, inertia;              ///< [m], [kg], [kg m^2]
+  std::vector<int> material;
+  std::vector<std::int64_t> id;
+  std::vector<std::uint32_t> ghost_owner;    ///< real particle behind each ghost slot
+  std::vector<std::uint32_t> pair_i, pair_j; ///< listed pairs (j >= n: ghost slot j - n)
+  std::vector<Vec3> pair_history;            ///< [m] tangential overlap per listed pair
+  std::vector<std::uint32_t> wall_particles; ///< particles owning wall-contact slots
+  std::vector<Vec3> slot_normal, slot_delta; ///< [-], [m] per slot
+  std::vector<std::int32_t> slot_wall;       ///< wall of each slot (-1: free)
+  double time = 0;                           ///< [s]
+  std::uint64_t n_steps = 0, n_rebuilds = 0;
+};
+
+struct Energy {
+  double kinetic = 0, rotational = 0, potential = 0, elastic = 0; ///< [J]
+  double total() const { return kinetic + rotational + potential + elastic; }
+};
+
+class System {
+public:
+  MaterialTable materials;
+  Particles particles;
+  DemSettings settings;
+
+  /// Adds a wall; returns its index. Before setup() only.
+  int add_wall(const MeshWall& wall);
+  const MeshWall& wall(int w) const { return walls_.at(w); }
+  int n_walls() const { return static_cast<int>(walls_.size()); }
+
+  /// Checks the input, fixes the time step, builds lists and initial forces. Throws with a
+  /// message naming what is wrong (time step, material, overlap, particle outside domain).
+  void setup();
+  void step();
+  void run(std::uint64_t n_steps);
+  /// Threads used from now on (default: OpenMP's maximum at setup). Resets the wear
+  /// integrals of the current window; results stay bitwise reproducible per thread count.
+  void set_n_threads(int n);
+  int n_threads() const { return n_threads_; }
+
+  double time() const { return time_; } ///< [s]
+  std::uint64_t n_steps() const { return n_steps_; }
+  double time_step() const { return dt_; } ///< [s]
+  double rayleigh_time() const;            ///< [s] of the smallest particle
+  std::uint64_t n_rebuilds() const { return n_rebuilds_; }
+  std::size_t n_pair_contacts() const { return n_pair_contacts_; } ///< pairs in contact now
+  std::size_t n_neighbor_pairs() const { return neighbors_.n_pairs(); }
+  std::size_t n_ghosts() const { return ghost_owner_.size(); }
+  std::size_t n_wall_particles() const { return wall_particles_.size(); }  ///< near a wall
+  std::size_t n_wall_candidates() const { return wall_candidate_.size(); } ///< faces listed
+  /// Faces listed for particle i at the last rebuild, each (wall << 24) | face.
+  std::pair<const std::uint32_t*, const std::uint32_t*> wall_candidates(std::size_t i) const {
+    return {wall_candidate_.data() + wall_candidate_offset_.at(i),
+            wall_candidate_.data() + wall_candidate_offset_.at(i + 1)};
+  }
+  Energy energy() const;
+  /// Bytes held per particle by the engine's arrays, excluding contact history.
+  double bytes_per_particle() const;
+
+  void set_wall_motion(int w, const WallMotion& m) { walls_.at(w).set_motion(m); }
+  /// Moves the vertices of wall w (same topology, e.g. a worn surface) and rebuilds the
+  /// contact candidates; contact histories are kept.
+  void set_wall_vertices(int w, const std::vector<Vec3>& vertices);
+
+  /// Replaces the mesh of wall w (new topology allowed, e.g. a remeshed worn surface); its
+  /// material, motion, wear flag and name stay. The wall's wear integrals restart at zero.
+  void replace_wall_mesh(int w, const meshes::SurfaceMesh& mesh);
+
+  /// The state that decides the continuation (see SystemState).
+  SystemState export_state() const;
+  /// Takes over a state exported from a System with the same particles (radii, materials),
+  /// walls and thread count, after setup(); rebuilds the lists from it. Forces are taken as
+  /// stored, not recomputed, so tangential histories are not advanced twice.
+  void import_state(const SystemState& state);
+
+  /// Window integrals of a wearing wall (summed over threads in a fixed order).
+  WearIntegrals wear_integrals(int wall) const;
+  void reset_wear_integrals();
+
+private:
+  /// `in_step`: called between the drift and the force evaluation, when the particles'
+  /// forces hold gravity only (a wrapped particle's is then not rotated).
+  void rebuild(bool in_step = false);
+  // The steps of rebuild(), in its order (system_rebuild.cc).
+  struct CarriedHistory; // a pair history in the canonical frame, keyed by the stable ids
+  struct HistoryTable;   // carried histories bucketed by the lower id
+  /// The histories of the current list, in the canonical frame and orientation.
+  std::vector<CarriedHistory> canonical_pair_histories() const;
+  /// Where each particle's wall-contact slots are, by stable id: its index in
+  /// wall_particles_, -1 for none.
+  std::vector<std::int32_t> wall_slots_by_id() const;
+  /// Wraps the particles into [0, angle), rotating their state, their wall slots and the
+  /// carried histories of which they are the lower-id particle.
+  void wrap_into_sector(bool in_step, const std::vector<std::int32_t>& slots_of_id,
+                        std::vector<CarriedHistory>& old);
+  HistoryTable bucket_by_lower_id(std::vector<CarriedHistory> old) const;
+  /// Ghosts: images of the particles within reach of the theta = angle plane.
+  void make_ghosts();
+  /// Histories of the new pair list from the carried ones (zero for a new pair).
+  void carry_pair_histories(const HistoryTable& old);
+  /// Lists wall_candidate_ in particle order; returns the count per particle.
+  std::vector<std::uint32_t> find_wall_candidates();
+  /// wall_candidate_offset_ and wall_particles_ from the counts per particle.
+  void index_wall_particles(const std::vector<std::uint32_t>& n_candidates);
+  /// slots_ to the new wall_particles_, from where `slots_of_id` had them.
+  void carry_wall_slots(const std::vector<std::int32_t>& slots_of_id);
+  /// Closing half-kick of the previous step if `close_previous`; opening half-kick, drift,
+  /// list rebuild if needed, forces.
+  void advance(bool close_previous);
+  void close_step(); ///< closing half-kick, clock
+  /// Particles [first, second) of `thread` in the drift and kick: equal counts.
+  std::pair<std::size_t, std::size_t> kick_range(int thread) const;
+  /// v += dt/2 F/m, w += dt/2 T/I for particle i.
+  void closing_kick(std::size_t i, const Vec3& f, const Vec3& t);
+  void reset_forces();   ///< gravity only, no torque: where the pair loop starts from
+  void collect_forces(); ///< sums the threads' forces into the particles' arrays
+  /// The force and torque on particle i: its own arrays plus the other threads' buffers, in
+  /// thread order; the buffers are zeroed for the next evaluation.
+  void sum_forces(std::size_t i, Vec3& f, Vec3& t) {
+    f = particles.force[i];
+    t = particles.torque[i];
+    for (int th = 1; th < n_threads_; ++th) {
+      f += force_buffer_[th][i];
+      t += torque_buffer_[th][i];
+      force_buffer_[th][i] = torque_buffer_[th][i] = {};
+    }
+  }
+  void refresh_ghosts();
+  void sort_spatially();
+  void compute_forces();
+  /// The pairs and near-wall particles owned by `thread`; forces and torques are added to F
+  /// and T (indexed by particle). pair_forces returns the pairs in contact.
+  std::size_t pair_forces(int thread, Vec3* F, Vec3* T);
+  void wall_forces(int thread, Vec3* F, Vec3* T);
+  void check_particles_or_throw(const char* stage);
+  /// Throws std::invalid_argument naming what does not fit when state s cannot be imported.
+  void check_importable(const SystemState& s) const;
+
+  std::vector<MeshWall> walls_;
+  std::vector<ContactParameters> contact_;
+  int n_mat_ = 0;
+  NeighborList neighbors_;
+  double dt_ = 0, time_ = 0, skin_ = 0, r_max_ = 0;
+  std::uint64_t n_steps_ = 0, n_rebuilds_ = 0;
+  bool set_up_ = false;
+  int n_threads_ = 1;
+
+  // Periodic sector.
+  double cos_t_ = 1, sin_t_ = 0;
+  std::vector<std::uint32_t> ghost_owner_;
+
+  // Pairs: tangential history per listed pair.
+  std::vector<Vec3> pair_history_;
+  std::vector<PairBlock> pair_block_; // one per thread
+  // Force evaluation: thread t owns particles [owner_split_[t], owner_split_[t + 1]), the
+  // pairs [pair_split_[t], ...) listed under them and the near-wall particles
+  // [wall_split_[t], ...) among them; ranges of equal estimated cost (particle_cost_, set at
+  // each rebuild). The drift and kick split the particles in equal counts.
+  std::vector<double> particle_cost_;
+  std::vector<std::uint8_t> pair_touch_; // rebuild scratch
+  std::vector<std::size_t> owner_split_, pair_split_, wall_split_;
+  void count_particle_costs();
+  void split_ownership();
+  // Forces of thread 0 go to the particles' own arrays, those of thread t > 0 to its buffers;
+  // the kick sums them in thread order and zeroes the buffers.
+  std::vector<std::vector<Vec3>> force_buffer_, torque_buffer_;
+  std::size_t n_pair_contacts_ = 0;
+  std::vector<Vec3> reference_position_;
+
+  // Wall contacts: candidates per particle (wall << 24 | face) and history slots.
+  static constexpr int wall_slots = 6;
+  std::vector<std::uint32_t> wall_candidate_offset_, wall_candidate_;
+  std::vector<std::uint32_t> wall_particles_; // particles with at least one candidate
+  std::vector<std::vector<std::uint32_t>> wall_chunk_found_; // rebuild scratch, per chunk
+  // History slots of the wall contacts of near-wall particle q (in wall_particles_ order):
+  // entries [wall_slots q, wall_slots q + wall_slots), valid entries first (wall >= 0).
+  struct WallSlot {
+    Vec3 normal, delta; ///< unit contact normal; tangential history [m]
+    std::int32_t wall = -1;
+  };
+  std::vector<WallSlot> slots_;
+  /// The history of the untaken old slot (of a near-wall particle) of this wall whose normal
+  /// is closest to `normal` (within about 25 degrees), which it marks taken; zero if none.
+  static Vec3 carried_wall_history(const WallSlot* old, bool* taken, std::uint32_t wall,
+                                   const Vec3& normal);
+  // Per thread, per wearing wall: 8 doubles per face + totals.
+  std::vector<std::vector<std::vector<double>>> wear_acc_;
+
+  // First problem seen inside a parallel loop (smallest particle index wins).
+  std::vector<long> error_particle_;
+  std::vector<int> error_kind_;
+};
+
+} // namespace wear::dem

@@ -1,0 +1,232 @@
+// Contact forces of the DEM System: the pairs of the neighbour list and the particle-wall
+// contacts, each thread over the particles it owns (split at the last rebuild).
+//
+// Wall histories are kept in fixed slots per particle and matched by wall and contact normal
+// (within about 25 degrees), so sliding across triangle boundaries of a smooth or flat wall
+// keeps the history. Contacts of one wall whose normals lie within 25 degrees are merged into
+// the deepest: on a finely tessellated concave surface (a worn fillet) each triangle's
+// interior is its own distance minimum, and counting them all would stiffen the contact
+// several times and overflow the slots; distinct contacts (a particle in a corner between an
+// element flank and the base) differ by more.
+//
+// Pair forces are accumulated per thread (thread 0 into the particles' own arrays) and
+// summed in thread order, so a run is bitwise reproducible for a given thread count.
+// Wear integrals are accumulated per thread and summed in thread order.
+#include "dem/engine/contact_law.h"
+#include "dem/engine/pair_kernel.h"
+#include "dem/engine/system.h"
+#include "meshes/surface_mesh.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace wear::dem {
+
+namespace {
+/// A particle-wall contact found on a candidate face, before merging.
+struct Candidate {
+  ClosestFeature feature;
+  Vec3 normal; ///< unit, wall to particle centre
+  double dist; ///< [m] centre to closest point
+  std::uint32_t wall, face;
+};
+constexpr int max_wall_candidates = 32;
+/// Contacts of one wall whose normals differ by less than 25 degrees are one contact.
+const double cos_merge_angle = std::cos(25.0 * 3.14159265358979323846 / 180.0);
+
+/// The contacts of a particle (centre x, radius r) on its candidate faces [b, e), each
+/// (wall << 24) | face, into `found`: faces it overlaps whose closest feature it owns. Returns
+/// their count, or -1 when there are more than max_wall_candidates.
+[[gnu::always_inline]] inline int find_wall_contacts(const std::vector<MeshWall>& walls,
+                                                     const std::uint32_t* b, const std::uint32_t* e,
+                                                     const Vec3& x, double r, Candidate* found) {
+  int n_found = 0;
+  for (; b != e; ++b) {
+    const std::uint32_t w = *b >> 24, f = *b & 0xFFFFFFu;
+    const MeshWall& wall = walls[w];
+    if (wall.plane_distance(f, x) >= r || wall.beyond_bound(f, x, r))
+      continue;
+    const ClosestFeature cf = wall.closest(f, x);
+    const Vec3 d = x - cf.point;
+    const double dist2 = meshes::norm2(d);
+    if (dist2 >= r * r || dist2 == 0 || !wall.owns_contact(f, cf, x))
+      continue;
+    if (n_found == max_wall_candidates)
+      return -1;
+    const double dist = std::sqrt(dist2);
+    found[n_found++] = {cf, d / dist, dist, w, f};
+  }
+  return n_found;
+}
+
+/// True when contact c is merged into another of the same wall: one whose normal lies within
+/// the merge angle and which is deeper (on a tie, found first).
+[[gnu::always_inline]] inline bool merged_into_another(const Candidate* found, int n_found, int c) {
+  const Candidate& cand = found[c];
+  bool merged = false;
+  for (int o = 0; o < n_found && !merged; ++o)
+    merged = o != c && found[o].wall == cand.wall &&
+             meshes::dot(found[o].normal, cand.normal) > cos_merge_angle &&
+             (found[o].dist < cand.dist || (found[o].dist == cand.dist && o < c));
+  return merged;
+}
+
+/// The contact geometry of particle i with a wall at contact `cand`.
+[[gnu::always_inline]] inline ContactGeometry wall_contact_geometry(const Particles& p,
+                                                                    std::size_t i,
+                                                                    const MeshWall& wall,
+                                                                    const Candidate& cand) {
+  const double r = p.radius[i];
+  ContactGeometry g;
+  g.normal = cand.normal;
+  g.overlap = r - cand.dist;
+  g.r_eff = r;
+  g.m_eff = p.mass[i];
+  g.arm_i = cand.dist;
+  g.arm_j = 0;
+  g.lever_i = r;
+  g.v_contact = p.velocity[i] + meshes::cross(p.angular_velocity[i], g.normal * -r) -
+                wall.velocity_at(cand.feature.point);
+  g.w_relative = p.angular_velocity[i] - wall.angular_velocity_vector();
+  return g;
+}
+
+/// Adds one contact's wear integrals over a step dt to a wearing wall's accumulator `a`: to
+/// the faces sharing the contact's feature, by their shares (8 entries per face: impulse,
+/// normal impulse, Archard integral, sliding work, contact-steps), and undivided to the totals
+/// after the last face.
+[[gnu::always_inline]] inline void add_wear(std::vector<double>& a, const MeshWall& wall,
+                                            const Candidate& cand, const ContactResult& res,
+                                            double dt) {
+  std::uint32_t faces[32];
+  double shares[32];
+  const int n_faces = wall.faces_sharing(cand.face, cand.feature, faces, shares, 32);
+  const Vec3 impulse = res.force * (-dt);
+  const double fn_dt = res.normal_force * dt;
+  const double archard = fn_dt * meshes::norm(res.v_tangential);
+  const double work = std::abs(meshes::dot(res.tangential_force, res.v_tangential)) * dt;
+  for (int k = 0; k < n_faces; ++k) {
+    double* v = &a[8 * faces[k]];
+    const double share = shares[k];
+    v[0] += impulse.x * share;
+    v[1] += impulse.y * share;
+    v[2] += impulse.z * share;
+    v[3] += fn_dt * share;
+    v[4] += archard * share;
+    v[5] += work * share;
+    v[6] += share;
+  }
+  double* tot = &a[8 * wall.n_faces()];
+  tot[0] += impulse.x;
+  tot[1] += impulse.y;
+  tot[2] += impulse.z;
+  tot[3] += fn_dt;
+  tot[4] += archard;
+  tot[5] += work;
+}
+} // namespace
+
+std::size_t System::pair_forces(int thread, Vec3* F, Vec3* T) {
+  auto& p = particles;
+  const PairKernelData kernel{p.position.data(),
+                              p.velocity.data(),
+                              p.angular_velocity.data(),
+                              p.radius.data(),
+                              p.mass.data(),
+                              p.material.data(),
+                              neighbors_.pair_i.data(),
+                              neighbors_.pair_j.data(),
+                              contact_.data(),
+                              n_mat_,
+                              pair_history_.data(),
+                              ghost_owner_.data(),
+                              p.n_real,
+                              cos_t_,
+                              sin_t_,
+                              dt_};
+  std::size_t n_contacts = 0;
+  PairBlock& bl = pair_block_[thread];
+  for (std::size_t k0 = pair_split_[thread]; k0 < pair_split_[thread + 1]; k0 += pair_block_size) {
+    const std::size_t m = std::min<std::size_t>(pair_block_size, pair_split_[thread + 1] - k0);
+    n_contacts += std::size_t(pair_block_forces(kernel, k0, int(m), bl, F, T));
+  }
+  return n_contacts;
+}
+
+inline Vec3 System::carried_wall_history(const WallSlot* old, bool* taken, std::uint32_t wall,
+                                         const Vec3& normal) {
+  // The old slot of this wall with the closest normal, within about 25 degrees.
+  int best = -1;
+  double best_dot = 0.9;
+  for (int s = 0; s < wall_slots && old[s].wall >= 0; ++s) {
+    if (old[s].wall == std::int32_t(wall) && !taken[s]) {
+      const double cd = meshes::dot(old[s].normal, normal);
+      if (cd > best_dot) {
+        best_dot = cd;
+        best = s;
+      }
+    }
+  }
+  if (best < 0)
+    return {};
+  taken[best] = true;
+  return old[best].delta;
+}
+
+void System::wall_forces(int thread, Vec3* F, Vec3* T) {
+  const auto& p = particles;
+  const double dt = dt_;
+  auto& acc = wear_acc_[thread];
+  // Scratch of one particle, declared once: default-initialising it per particle cost more
+  // than the contacts themselves.
+  Candidate found[max_wall_candidates];
+  std::int32_t new_wall[wall_slots];
+  Vec3 new_normal[wall_slots], new_delta[wall_slots];
+  for (std::size_t q = wall_split_[thread]; q < wall_split_[thread + 1]; ++q) {
+    const std::size_t i = wall_particles_[q];
+    const Vec3 x = p.position[i];
+    const std::uint32_t* candidates = wall_candidate_.data();
+    const int n_found =
+        find_wall_contacts(walls_, candidates + wall_candidate_offset_[i],
+                           candidates + wall_candidate_offset_[i + 1], x, p.radius[i], found);
+    bool overflow = n_found < 0;
+    bool taken[wall_slots] = {}; // old slots whose history went to a new contact
+    int n_new = 0;
+    Vec3 f_sum{}, t_sum{};
+    for (int c = 0; c < n_found; ++c) {
+      if (merged_into_another(found, n_found, c))
+        continue;
+      if (n_new == wall_slots) {
+        overflow = true;
+        break;
+      }
+      const Candidate& cand = found[c];
+      const MeshWall& wall = walls_[cand.wall];
+      const ContactGeometry g = wall_contact_geometry(p, i, wall, cand);
+      Vec3 delta = carried_wall_history(&slots_[wall_slots * q], taken, cand.wall, g.normal);
+      const auto res =
+          hertz_mindlin(contact_[p.material[i] * n_mat_ + wall.material()], g, dt, delta);
+      f_sum += res.force;
+      t_sum += res.torque_i;
+      new_wall[n_new] = std::int32_t(cand.wall);
+      new_normal[n_new] = g.normal;
+      new_delta[n_new] = delta;
+      ++n_new;
+      if (wall.wearing())
+        add_wear(acc[cand.wall], wall, cand, res, dt);
+    }
+    if (overflow && (error_particle_[thread] < 0 || long(i) < error_particle_[thread])) {
+      error_particle_[thread] = long(i);
+      error_kind_[thread] = 4; // too many wall contacts (system.cc)
+    }
+    WallSlot* slot = &slots_[wall_slots * q];
+    for (int s = 0; s < n_new; ++s)
+      slot[s] = {new_normal[s], new_delta[s], new_wall[s]};
+    if (n_new < wall_slots)
+      slot[n_new].wall = -1;
+    F[i] += f_sum;
+    T[i] += t_sum;
+  }
+}
+
+} // namespace wear::dem

@@ -1,0 +1,412 @@
+// Neighbour-list rebuild of the DEM System (when a particle moved more than half the skin).
+//
+// In order: take the pair histories out of the old list into a frame-free form; wrap the
+// particles back into the periodic sector; every few rebuilds reorder them along the cell grid;
+// create ghost images of the particles near the theta = angle cut (rotated by -angle, so they
+// sit next to the theta = 0 cut); build the pair list and carry the histories over to it;
+// list candidate wall faces per particle and carry the wall-contact slots over; split the
+// force evaluation between the threads.
+//
+// Histories across the cut: a pair's history is stored relative to the frame in which the
+// particle with the lower stable id sits at its real position ("canonical frame"). A pair
+// computed with a ghost of that particle lives in a frame rotated by -angle, so its history
+// is rotated by +angle into the canonical frame and back; a wrap of that particle rotates the
+// canonical frame with it. A history is the tangential displacement of the listed first
+// particle relative to the second, so it is stored oriented from the lower id to the higher
+// (negated when listed the other way) and re-oriented to the new list: the spatial reordering
+// and a wrap across the cut change which of the two is listed first. Keys are stable ids, so
+// the periodic spatial reordering of the particle arrays (for cache locality) keeps every
+// history. Wall-contact slots are per particle, found again by stable id.
+#include "dem/engine/system.h"
+#include "meshes/surface_mesh.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace wear::dem {
+
+namespace {
+inline Vec3 rotate_z(const Vec3& v, double c, double s) {
+  return {c * v.x - s * v.y, s * v.x + c * v.y, v.z};
+}
+
+/// A pair history between its listing (i, j) and the canonical frame and orientation (those
+/// of the lower-id particle): with s = sin(angle) from the listing to canonical, with -s
+/// back. Nothing changes when the lower id is listed first; listed second, the history is
+/// negated, and rotated by the sector angle when that particle is present as a ghost.
+inline Vec3 reorient_history(const Vec3& h, bool lower_second, bool ghost, double c, double s) {
+  if (!lower_second)
+    return h;
+  return ghost ? rotate_z(-h, c, s) : -h;
+}
+
+/// The wrap that brings x back into the sector 0 <= theta < angle: +1 (rotate by +angle) when
+/// it lies before theta = 0, -1 beyond theta = angle, 0 inside. The gap outside the sector is
+/// split at its middle.
+inline signed char sector_wrap(const Vec3& x, double angle) {
+  const double th = std::atan2(x.y, x.x);
+  const double theta =
+      th < 0 && th < -0.5 * (2 * 3.141592653589793 - angle) ? th + 2 * 3.141592653589793 : th;
+  if (theta < 0)
+    return +1;
+  if (theta >= angle)
+    return -1;
+  return 0;
+}
+
+/// Near-wall particles cluster (the floor's are all at the start of the spatial order), so
+/// the wall-candidate scan goes in chunks of this many particles handed out dynamically.
+constexpr std::size_t wall_scan_chunk = 512;
+} // namespace
+
+/// A pair's tangential history in the canonical frame and orientation, keyed by the two
+/// stable ids (lower << 32 | higher), so that it survives wrapping and reordering.
+struct System::CarriedHistory {
+  std::uint64_t key;
+  std::uint32_t lower; ///< current index of the lower-id particle
+  Vec3 h;              ///< [m]
+};
+
+/// Carried histories bucketed by the lower id (counting sort, O(n)): those whose lower id is
+/// l are entries [bucket[l], bucket[l + 1]), a few each.
+struct System::HistoryTable {
+  std::vector<std::uint32_t> bucket;
+  std::vector<CarriedHistory> entry;
+};
+
+void System::rebuild(bool in_step) {
+  const std::size_t n = particles.n_real;
+  // Pair histories and wall slots leave the old lists keyed by stable id: the wrap, the
+  // reordering and the new lists keep them.
+  std::vector<CarriedHistory> old = canonical_pair_histories();
+  const std::vector<std::int32_t> slots_of_id = wall_slots_by_id();
+  if (settings.periodic.enabled)
+    wrap_into_sector(in_step, slots_of_id, old);
+  const HistoryTable old_by_id = bucket_by_lower_id(std::move(old));
+  // Every few rebuilds, reorder particles along the cell grid so that neighbours are
+  // neighbours in memory (histories are keyed by id, so nothing is lost).
+  if (n >= 1000 && n_rebuilds_ % 10 == 0)
+    sort_spatially();
+  make_ghosts();
+  check_particles_or_throw("at a neighbour-list rebuild");
+  neighbors_.build(particles, skin_);
+  carry_pair_histories(old_by_id);
+  index_wall_particles(find_wall_candidates());
+  carry_wall_slots(slots_of_id);
+  count_particle_costs();
+  split_ownership();
+  reference_position_.assign(particles.position.begin(), particles.position.begin() + n);
+  ++n_rebuilds_;
+}
+
+std::vector<System::CarriedHistory> System::canonical_pair_histories() const {
+  const auto& p = particles;
+  const std::size_t n = p.n_real;
+  const double c = cos_t_, s = sin_t_;
+  // Each thread collects a contiguous range; the order of the result does not matter (lookups
+  // match the whole key).
+  std::vector<std::vector<CarriedHistory>> part(n_threads_);
+#pragma omp parallel num_threads(n_threads_)
+  {
+    auto& mine = part[omp_get_thread_num()];
+#pragma omp for schedule(static)
+    for (std::size_t k = 0; k < neighbors_.n_pairs(); ++k) {
+      if (meshes::norm2(pair_history_[k]) == 0)
+        continue;
+      const std::uint32_t i = neighbors_.pair_i[k], j = neighbors_.pair_j[k];
+      const bool ghost = j >= n;
+      const std::uint32_t b = ghost ? ghost_owner_[j - n] : j;
+      const auto id_i = std::uint64_t(p.id[i]), id_b = std::uint64_t(p.id[b]);
+      const Vec3 h = reorient_history(pair_history_[k], id_b < id_i, ghost, c, s);
+      mine.push_back({(std::min(id_i, id_b) << 32) | std::max(id_i, id_b), id_b < id_i ? b : i, h});
+    }
+  }
+  std::size_t total = 0;
+  for (const auto& v : part)
+    total += v.size();
+  std::vector<CarriedHistory> old;
+  old.reserve(total);
+  for (const auto& v : part)
+    old.insert(old.end(), v.begin(), v.end());
+  return old;
+}
+
+std::vector<std::int32_t> System::wall_slots_by_id() const {
+  std::vector<std::int32_t> slots_of_id(particles.n_real, -1);
+  for (std::size_t q = 0; q < wall_particles_.size(); ++q)
+    slots_of_id[particles.id[wall_particles_[q]]] = std::int32_t(q);
+  return slots_of_id;
+}
+
+void System::wrap_into_sector(bool in_step, const std::vector<std::int32_t>& slots_of_id,
+                              std::vector<CarriedHistory>& old) {
+  auto& p = particles;
+  const std::size_t n = p.n_real;
+  const double c = cos_t_, s = sin_t_, angle = settings.periodic.angle;
+  std::vector<signed char> wrap(n, 0);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    const signed char w = sector_wrap(p.position[i], angle);
+    if (w != 0) {
+      const double cs = c, sn = w > 0 ? s : -s;
+      p.position[i] = rotate_z(p.position[i], cs, sn);
+      p.velocity[i] = rotate_z(p.velocity[i], cs, sn);
+      p.angular_velocity[i] = rotate_z(p.angular_velocity[i], cs, sn);
+      // Forces too, between steps: they are used for the next half-kick as stored (within a
+      // step they hold gravity only, the pair loop's start, which the sector keeps along z).
+      if (!in_step) {
+        p.force[i] = rotate_z(p.force[i], cs, sn);
+        p.torque[i] = rotate_z(p.torque[i], cs, sn);
+      }
+      const std::int32_t q = slots_of_id[p.id[i]];
+      for (int k = 0; q >= 0 && k < wall_slots; ++k) {
+        WallSlot& sl = slots_[wall_slots * q + k];
+        sl.normal = rotate_z(sl.normal, cs, sn);
+        sl.delta = rotate_z(sl.delta, cs, sn);
+      }
+    }
+    wrap[i] = w;
+  }
+  for (auto& e : old)
+    if (wrap[e.lower] != 0)
+      e.h = rotate_z(e.h, c, wrap[e.lower] > 0 ? s : -s);
+}
+
+System::HistoryTable System::bucket_by_lower_id(std::vector<CarriedHistory> old) const {
+  const std::size_t n = particles.n_real;
+  HistoryTable table;
+  table.bucket.assign(n + 1, 0);
+  for (const auto& e : old)
+    ++table.bucket[(e.key >> 32) + 1];
+  for (std::size_t i = 0; i < n; ++i)
+    table.bucket[i + 1] += table.bucket[i];
+  table.entry.resize(old.size());
+  std::vector<std::uint32_t> fill(table.bucket.begin(), table.bucket.end() - 1);
+  for (const auto& e : old)
+    table.entry[fill[e.key >> 32]++] = e;
+  return table;
+}
+
+void System::make_ghosts() {
+  auto& p = particles;
+  const std::size_t n = p.n_real;
+  const double c = cos_t_, s = sin_t_;
+  ghost_owner_.clear();
+  if (settings.periodic.enabled) {
+    const double reach = 2 * r_max_ + skin_;
+    for (std::uint32_t i = 0; i < n; ++i) {
+      const Vec3& x = p.position[i];
+      const double dist = s * x.x - c * x.y;  // distance to the cut plane theta = angle
+      const double along = c * x.x + s * x.y; // position along the cut plane direction
+      if (dist < reach && along > -reach)
+        ghost_owner_.push_back(i);
+    }
+  }
+  p.resize_ghosts(ghost_owner_.size());
+  for (std::size_t g = 0; g < ghost_owner_.size(); ++g) {
+    const auto o = ghost_owner_[g];
+    p.radius[n + g] = p.radius[o];
+    p.mass[n + g] = p.mass[o];
+    p.inertia[n + g] = p.inertia[o];
+    p.material[n + g] = p.material[o];
+    p.id[n + g] = p.id[o];
+  }
+  refresh_ghosts();
+}
+
+void System::carry_pair_histories(const HistoryTable& old) {
+  const auto& p = particles;
+  const std::size_t n = p.n_real, np = neighbors_.n_pairs();
+  const double c = cos_t_, s = sin_t_;
+  pair_history_.assign(np, {});
+  if (old.entry.empty())
+    return;
+#pragma omp parallel for schedule(static)
+  for (std::size_t k = 0; k < np; ++k) {
+    const std::uint32_t i = neighbors_.pair_i[k], j = neighbors_.pair_j[k];
+    const bool ghost = j >= n;
+    const std::uint32_t b = ghost ? ghost_owner_[j - n] : j;
+    const auto id_i = std::uint64_t(p.id[i]), id_b = std::uint64_t(p.id[b]);
+    const std::uint64_t key = (std::min(id_i, id_b) << 32) | std::max(id_i, id_b);
+    const std::size_t lower = std::min(id_i, id_b);
+    for (auto q = old.bucket[lower]; q < old.bucket[lower + 1]; ++q)
+      if (old.entry[q].key == key) {
+        pair_history_[k] = reorient_history(old.entry[q].h, id_b < id_i, ghost, c, -s);
+        break;
+      }
+  }
+}
+
+std::vector<std::uint32_t> System::find_wall_candidates() {
+  // Faces within radius + skin/2 of each particle centre. Until the next rebuild no particle
+  // moves more than skin/2 from here (the rebuild trigger), and wall geometry changes only
+  // through set_wall_vertices, which rebuilds; so no other face can be touched. (A pair needs
+  // the whole skin: both partners move.) Widened by a relative 1e-9 against round-off.
+  const auto& p = particles;
+  const std::size_t n = p.n_real;
+  std::vector<std::uint32_t> count(n, 0);
+  const auto scan = [&](std::size_t i, auto&& emit) {
+    const Vec3& x = p.position[i];
+    const double reach = (p.radius[i] + 0.5 * skin_) * (1 + 1e-9);
+    for (std::size_t w = 0; w < walls_.size(); ++w) {
+      auto [b, e] = walls_[w].candidates(x);
+      for (; b != e; ++b)
+        if (meshes::norm2(walls_[w].closest(*b, x).point - x) < reach * reach)
+          emit(std::uint32_t(w << 24) | *b);
+    }
+  };
+  // Each chunk has its own buffer and they are concatenated in chunk order, which is the
+  // serial order.
+  const std::size_t n_chunks = (n + wall_scan_chunk - 1) / wall_scan_chunk;
+  if (wall_chunk_found_.size() < n_chunks)
+    wall_chunk_found_.resize(n_chunks);
+#pragma omp parallel for schedule(dynamic) num_threads(n_threads_)
+  for (std::size_t ch = 0; ch < n_chunks; ++ch) {
+    auto& mine = wall_chunk_found_[ch];
+    mine.clear();
+    for (std::size_t i = ch * wall_scan_chunk; i < std::min(n, (ch + 1) * wall_scan_chunk); ++i) {
+      const std::size_t before = mine.size();
+      scan(i, [&](std::uint32_t v) { mine.push_back(v); });
+      count[i] = std::uint32_t(mine.size() - before);
+    }
+  }
+  wall_candidate_.clear();
+  for (std::size_t ch = 0; ch < n_chunks; ++ch)
+    wall_candidate_.insert(wall_candidate_.end(), wall_chunk_found_[ch].begin(),
+                           wall_chunk_found_[ch].end());
+  return count;
+}
+
+void System::index_wall_particles(const std::vector<std::uint32_t>& n_candidates) {
+  const std::size_t n = particles.n_real;
+  wall_candidate_offset_.assign(n + 1, 0);
+  wall_particles_.clear();
+  for (std::size_t i = 0; i < n; ++i) {
+    wall_candidate_offset_[i + 1] = wall_candidate_offset_[i] + n_candidates[i];
+    if (n_candidates[i] > 0)
+      wall_particles_.push_back(std::uint32_t(i));
+  }
+}
+
+void System::carry_wall_slots(const std::vector<std::int32_t>& slots_of_id) {
+  std::vector<WallSlot> slots(wall_slots * wall_particles_.size());
+  for (std::size_t q = 0; q < wall_particles_.size(); ++q) {
+    const std::int32_t old_q = slots_of_id[particles.id[wall_particles_[q]]];
+    if (old_q >= 0)
+      std::copy_n(slots_.begin() + wall_slots * old_q, wall_slots, slots.begin() + wall_slots * q);
+  }
+  slots_.swap(slots);
+}
+
+void System::sort_spatially() {
+  auto& p = particles;
+  const std::size_t n = p.n_real;
+  const auto box = meshes::bounding_box(p.position.data(), n);
+  const Vec3 lo = box.min, extent = box.extent();
+  // Cells in lexicographic order with the longest axis slowest and the shortest fastest: a
+  // cell's stencil then spans the fewest cells of the order (for a flat bed, plus or minus a
+  // layer of columns instead of a whole horizontal layer), and the threads' contiguous ranges
+  // meet across vertical planes instead of one horizontal plane through the whole bed.
+  int axis[3] = {0, 1, 2};
+  std::stable_sort(axis, axis + 3, [&](int a, int b) { return extent[a] > extent[b]; });
+  const double cell = 2 * r_max_ + skin_;
+  std::vector<std::uint64_t> key(n);
+  std::vector<std::uint32_t> perm(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 q = (p.position[i] - lo) / cell;
+    key[i] = (std::uint64_t(q[axis[0]]) << 42) | (std::uint64_t(q[axis[1]]) << 21) |
+             std::uint64_t(q[axis[2]]);
+    perm[i] = std::uint32_t(i);
+  }
+  std::stable_sort(perm.begin(), perm.end(),
+                   [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
+  const auto apply = [&](auto& v, std::size_t per) {
+    auto copy = v;
+    for (std::size_t k = 0; k < n; ++k)
+      for (std::size_t q = 0; q < per; ++q)
+        v[per * k + q] = copy[per * perm[k] + q];
+  };
+  apply(p.position, 1);
+  apply(p.velocity, 1);
+  apply(p.angular_velocity, 1);
+  apply(p.force, 1);
+  apply(p.torque, 1);
+  apply(p.radius, 1);
+  apply(p.mass, 1);
+  apply(p.inertia, 1);
+  apply(p.material, 1);
+  apply(p.id, 1);
+}
+
+void System::refresh_ghosts() {
+  auto& p = particles;
+  const std::size_t n = p.n_real;
+  const double c = cos_t_, s = -sin_t_; // ghosts are rotated by -angle
+  for (std::size_t g = 0; g < ghost_owner_.size(); ++g) {
+    const auto o = ghost_owner_[g];
+    p.position[n + g] = rotate_z(p.position[o], c, s);
+    p.velocity[n + g] = rotate_z(p.velocity[o], c, s);
+    p.angular_velocity[n + g] = rotate_z(p.angular_velocity[o], c, s);
+  }
+}
+
+void System::count_particle_costs() {
+  // Estimated cost of each particle's share of the force evaluation, in units of one listed
+  // pair's distance test, as measured on a settled bed: a contact costs 4 more (the law, its
+  // gathers and the scatter), a wall candidate face 4 (closest feature), a near-wall particle
+  // 8 of its own.
+  const auto& p = particles;
+  const std::size_t n = p.n_real, np = neighbors_.n_pairs();
+  pair_touch_.resize(np);
+#pragma omp parallel for schedule(static) num_threads(n_threads_)
+  for (std::size_t k = 0; k < np; ++k) {
+    const double rs = p.radius[neighbors_.pair_i[k]] + p.radius[neighbors_.pair_j[k]];
+    pair_touch_[k] = meshes::norm2(p.position[neighbors_.pair_i[k]] -
+                                   p.position[neighbors_.pair_j[k]]) < rs * rs;
+  }
+  particle_cost_.resize(n);
+#pragma omp parallel for schedule(static) num_threads(n_threads_)
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto n_candidates = wall_candidate_offset_[i + 1] - wall_candidate_offset_[i];
+    particle_cost_[i] = 4.0 * n_candidates + (n_candidates > 0 ? 8.0 : 0.0);
+  }
+  for (std::size_t k = 0; k < np; ++k)
+    particle_cost_[neighbors_.pair_i[k]] += 1.0 + 4.0 * pair_touch_[k];
+}
+
+void System::split_ownership() {
+  // In the force evaluation each thread owns a contiguous range of particles of equal
+  // estimated cost: the pairs listed under them and their wall contacts. With the pairs and
+  // the walls split together, the threads meet once per evaluation instead of twice, and a
+  // particle's wall contacts stay with the thread that owns its pairs. The split is a
+  // function of the state at the last rebuild, so a run stays bitwise reproducible.
+  const std::size_t n = particles.n_real;
+  double total = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    total += particle_cost_[i];
+  owner_split_.assign(n_threads_ + 1, n);
+  owner_split_[0] = 0;
+  double sum = 0;
+  int t = 1;
+  for (std::size_t i = 0; i < n && t < n_threads_; ++i) {
+    sum += particle_cost_[i];
+    while (t < n_threads_ && sum >= total * t / n_threads_)
+      owner_split_[t++] = i + 1;
+  }
+  // Pairs are listed by their first particle, near-wall particles in index order.
+  pair_split_.resize(n_threads_ + 1);
+  wall_split_.resize(n_threads_ + 1);
+  for (int t = 0; t <= n_threads_; ++t) {
+    const auto first = std::uint32_t(owner_split_[t]);
+    pair_split_[t] =
+        std::size_t(std::lower_bound(neighbors_.pair_i.begin(), neighbors_.pair_i.end(), first) -
+                    neighbors_.pair_i.begin());
+    wall_split_[t] =
+        std::size_t(std::lower_bound(wall_particles_.begin(), wall_particles_.end(), first) -
+                    wall_particles_.begin());
+  }
+}
+
+} // namespace wear::dem

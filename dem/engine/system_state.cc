@@ -1,0 +1,122 @@
+// Export and import of the DEM state that decides how a run continues (checkpoints).
+//
+// What is kept: the real particles in the engine's current order (state, forces of the last
+// step, properties, stable ids), the listed pairs with their tangential histories and the
+// ghost owners they refer to, the wall-contact slots, the clock and the rebuild counter (it
+// decides when the arrays are next sorted). What is not kept is rebuilt: ghosts, pair
+// constants, wall candidates, reference positions.
+//
+// Import goes through rebuild(), which carries the histories over by stable id exactly as a
+// rebuild inside the step loop does. A coupled run therefore passes every stage boundary
+// through export + import, resumed or not, and a resumed run repeats the uninterrupted one
+// bit for bit (same thread count). Forces are restored, not recomputed: computing them again
+// would advance the tangential histories a second time.
+#include "dem/engine/system.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace wear::dem {
+
+SystemState System::export_state() const {
+  if (!set_up_)
+    throw std::logic_error("System::export_state() before setup()");
+  const auto& p = particles;
+  const std::size_t n = p.n_real;
+  SystemState s;
+  s.position.assign(p.position.begin(), p.position.begin() + n);
+  s.velocity.assign(p.velocity.begin(), p.velocity.begin() + n);
+  s.angular_velocity.assign(p.angular_velocity.begin(), p.angular_velocity.begin() + n);
+  s.force.assign(p.force.begin(), p.force.begin() + n);
+  s.torque.assign(p.torque.begin(), p.torque.begin() + n);
+  s.radius.assign(p.radius.begin(), p.radius.begin() + n);
+  s.mass.assign(p.mass.begin(), p.mass.begin() + n);
+  s.inertia.assign(p.inertia.begin(), p.inertia.begin() + n);
+  s.material.assign(p.material.begin(), p.material.begin() + n);
+  s.id.assign(p.id.begin(), p.id.begin() + n);
+  s.ghost_owner = ghost_owner_;
+  s.pair_i = neighbors_.pair_i;
+  s.pair_j = neighbors_.pair_j;
+  s.pair_history = pair_history_;
+  s.wall_particles = wall_particles_;
+  s.slot_normal.reserve(slots_.size());
+  s.slot_delta.reserve(slots_.size());
+  s.slot_wall.reserve(slots_.size());
+  for (const auto& sl : slots_) {
+    s.slot_normal.push_back(sl.normal);
+    s.slot_delta.push_back(sl.delta);
+    s.slot_wall.push_back(sl.wall);
+  }
+  s.time = time_;
+  s.n_steps = n_steps_;
+  s.n_rebuilds = n_rebuilds_;
+  return s;
+}
+
+void System::check_importable(const SystemState& s) const {
+  const std::size_t n = s.position.size();
+  const auto require = [](bool ok, const std::string& what) {
+    if (!ok)
+      throw std::invalid_argument("DEM state: " + what);
+  };
+  require(n == particles.n_real, "holds " + std::to_string(n) + " particles, the system " +
+                                     std::to_string(particles.n_real));
+  for (const auto size :
+       {s.velocity.size(), s.angular_velocity.size(), s.force.size(), s.torque.size(),
+        s.radius.size(), s.mass.size(), s.inertia.size(), s.material.size(), s.id.size()})
+    require(size == n, "particle arrays of different lengths");
+  require(s.pair_j.size() == s.pair_i.size() && s.pair_history.size() == s.pair_i.size(),
+          "pair arrays of different lengths");
+  require(s.slot_normal.size() == wall_slots * s.wall_particles.size() &&
+              s.slot_delta.size() == s.slot_normal.size() &&
+              s.slot_wall.size() == s.slot_normal.size(),
+          "wall slots do not match the particles that own them");
+  const std::size_t n_slots_total = n + s.ghost_owner.size();
+  for (std::size_t k = 0; k < s.pair_i.size(); ++k)
+    require(s.pair_i[k] < n && s.pair_j[k] < n_slots_total,
+            "pair " + std::to_string(k) + " refers to a missing particle");
+  for (const auto o : s.ghost_owner)
+    require(o < n, "a ghost refers to a missing particle");
+  for (const auto q : s.wall_particles)
+    require(q < n, "a wall slot refers to a missing particle");
+  for (std::size_t i = 0; i < n; ++i)
+    require(s.id[i] >= 0 && std::size_t(s.id[i]) < n && s.radius[i] > 0 && s.mass[i] > 0 &&
+                s.material[i] >= 0 && s.material[i] < materials.n_materials(),
+            "particle " + std::to_string(i) + " has an invalid id, radius, mass or material");
+  for (const auto w : s.slot_wall)
+    require(w >= -1 && w < n_walls(), "a wall slot refers to a missing wall");
+}
+
+void System::import_state(const SystemState& s) {
+  if (!set_up_)
+    throw std::logic_error("System::import_state() before setup()");
+  check_importable(s);
+  auto& p = particles;
+  p.resize_ghosts(0);
+  p.position = s.position;
+  p.velocity = s.velocity;
+  p.angular_velocity = s.angular_velocity;
+  p.force = s.force;
+  p.torque = s.torque;
+  p.radius = s.radius;
+  p.mass = s.mass;
+  p.inertia = s.inertia;
+  p.material = s.material;
+  p.id = s.id;
+  p.resize_ghosts(s.ghost_owner.size());
+  ghost_owner_ = s.ghost_owner;
+  neighbors_.pair_i = s.pair_i;
+  neighbors_.pair_j = s.pair_j;
+  pair_history_ = s.pair_history;
+  wall_particles_ = s.wall_particles;
+  slots_.resize(s.slot_normal.size());
+  for (std::size_t k = 0; k < slots_.size(); ++k)
+    slots_[k] = {s.slot_normal[k], s.slot_delta[k], s.slot_wall[k]};
+  time_ = s.time;
+  n_steps_ = s.n_steps;
+  n_rebuilds_ = s.n_rebuilds;
+  reset_wear_integrals();
+  rebuild();
+}
+
+} // namespace wear::dem

@@ -1,0 +1,93 @@
+// Per-face window loads of a wearing wall as revision-checked FaceFields (wall_loads.h).
+// Every field is extensive: sums over windows and over faces are physical totals, and they
+// transfer conservatively between triangulations (meshes::FaceTransfer).
+#include "dem/tester/wall_loads.h"
+
+#include <stdexcept>
+
+namespace wear::dem {
+
+namespace {
+using meshes::Extensivity;
+using meshes::FaceField;
+
+template <typename T>
+FaceField<T> field(const char* name, const char* unit, const meshes::SurfaceMesh& mesh,
+                   const std::vector<T>& values) {
+  FaceField<T> f(name, unit, Extensivity::extensive, mesh);
+  if (values.size() != f.size())
+    throw std::logic_error(std::string("wall loads: '") + name + "' has " +
+                           std::to_string(values.size()) + " values for " +
+                           std::to_string(f.size()) + " faces");
+  f.values() = values;
+  return f;
+}
+
+template <typename T>
+void add(FaceField<T>& to, const FaceField<T>& from) {
+  if (to.revision() != from.revision() || to.size() != from.size())
+    throw std::logic_error("wall loads: cannot add '" + from.name() + "' of mesh revision " +
+                           std::to_string(from.revision()) + " to one of revision " +
+                           std::to_string(to.revision()));
+  for (std::size_t f = 0; f < to.size(); ++f)
+    to[f] += from[f];
+}
+
+template <typename T>
+FaceField<T> followed(FaceField<T> f, const meshes::SurfaceMesh& mesh) {
+  f.follow(mesh);
+  return f;
+}
+} // namespace
+
+WallLoads WallLoads::zero(const meshes::SurfaceMesh& mesh) {
+  WallLoads w;
+  w.impulse = FaceField<meshes::Vec3>("impulse", "N s", Extensivity::extensive, mesh);
+  w.normal_impulse = FaceField<double>("normal impulse", "N s", Extensivity::extensive, mesh);
+  w.archard = FaceField<double>("Archard load-distance", "N m", Extensivity::extensive, mesh);
+  w.sliding_work = FaceField<double>("sliding work", "J", Extensivity::extensive, mesh);
+  w.contact_steps = FaceField<double>("contact-steps", "1", Extensivity::extensive, mesh);
+  w.wear_volume = FaceField<double>("wear-law volume", "m^3", Extensivity::extensive, mesh);
+  return w;
+}
+
+WallLoads& WallLoads::operator+=(const WallLoads& o) {
+  add(impulse, o.impulse);
+  add(normal_impulse, o.normal_impulse);
+  add(archard, o.archard);
+  add(sliding_work, o.sliding_work);
+  add(contact_steps, o.contact_steps);
+  add(wear_volume, o.wear_volume);
+  duration += o.duration;
+  return *this;
+}
+
+WallLoads WallLoads::follow(const meshes::SurfaceMesh& mesh,
+                            const std::function<meshes::Vec3(const meshes::Vec3&)>& rotate) const {
+  WallLoads w;
+  w.impulse = followed(impulse, mesh);
+  for (auto& v : w.impulse.values())
+    v = rotate(v);
+  w.normal_impulse = followed(normal_impulse, mesh);
+  w.archard = followed(archard, mesh);
+  w.sliding_work = followed(sliding_work, mesh);
+  w.contact_steps = followed(contact_steps, mesh);
+  w.wear_volume = followed(wear_volume, mesh);
+  w.duration = duration;
+  return w;
+}
+
+WallLoads wall_loads(const WearIntegrals& integrals, const std::vector<double>& wear_volume,
+                     const meshes::SurfaceMesh& mesh, double duration) {
+  WallLoads w;
+  w.impulse = field("impulse", "N s", mesh, integrals.impulse);
+  w.normal_impulse = field("normal impulse", "N s", mesh, integrals.normal_impulse);
+  w.archard = field("Archard load-distance", "N m", mesh, integrals.archard);
+  w.sliding_work = field("sliding work", "J", mesh, integrals.sliding_work);
+  w.contact_steps = field("contact-steps", "1", mesh, integrals.contact_steps);
+  w.wear_volume = field("wear-law volume", "m^3", mesh, wear_volume);
+  w.duration = duration;
+  return w;
+}
+
+} // namespace wear::dem

@@ -1,0 +1,41 @@
+#pragma once
+// What the DEM hands to the rest of the toolchain about a wearing wall: one window's
+// extensive loads per face, as FaceFields tied to the revision of the mesh they were summed
+// on. Only extensive, window-integrated quantities cross the module boundary; intensive
+// ones (pressure, traction, wear depth) are derived where they are used.
+#include "dem/engine/system.h"
+#include "meshes/face_field.h"
+
+#include <functional>
+
+namespace wear::dem {
+
+struct WallLoads {
+  meshes::FaceField<meshes::Vec3> impulse;  ///< [N s] integral of the contact force
+  meshes::FaceField<double> normal_impulse; ///< [N s] integral of F_n
+  meshes::FaceField<double> archard;        ///< [N m] Archard load-distance, integral of F_n |v_t|
+  meshes::FaceField<double> sliding_work;   ///< [J] integral of |F_t . v_t|
+  meshes::FaceField<double> contact_steps;  ///< [-] contact-steps (split contacts fractionally)
+  meshes::FaceField<double> wear_volume;    ///< [m^3] the wear law applied to this window
+  double duration = 0;                      ///< [s] of the window
+
+  /// Zero loads on every face of `mesh`.
+  static WallLoads zero(const meshes::SurfaceMesh& mesh);
+
+  /// Adds another window on the same faces (same revision): the windows' sums and
+  /// durations add. Throws when the faces differ.
+  WallLoads& operator+=(const WallLoads& other);
+
+  /// The same loads on `mesh`, a revision of the same triangles in another frame or after
+  /// vertex moves: scalar fields follow their faces unchanged, impulse vectors are mapped by
+  /// `rotate` (a rotation: vectors are never translated).
+  WallLoads follow(const meshes::SurfaceMesh& mesh,
+                   const std::function<meshes::Vec3(const meshes::Vec3&)>& rotate) const;
+};
+
+/// The loads of one window from the engine's per-face integrals of a wall with mesh `mesh`
+/// and the wear law's removed volume per face [m^3] over the same window.
+WallLoads wall_loads(const WearIntegrals& integrals, const std::vector<double>& wear_volume,
+                     const meshes::SurfaceMesh& mesh, double duration);
+
+} // namespace wear::dem

@@ -1,0 +1,352 @@
+// Assembly and time loop of the circular wear tester in DEM (docs/wear-tester.md).
+//
+// Frame: z up, the sector 0 <= theta < Theta about the z axis, the bed (floor and both
+// cylinders) rotating at +omega about z, the sample fixed at its placement. The walls are
+// widened a little past both periodic cuts so particles slightly beyond a cut still see them.
+// Filling: random insertion from the PSD into an annular sector `loose_factor` times the
+// fill height, leaving out the sample (with a particle diameter of clearance) and the space
+// above the consolidator, then settling with the walls at rest. A revolution is one pass of
+// the bed through the sector, T = Theta / omega, and n = round(T / dt) steps.
+// The reference deformation moves the sample's nodes every N_update steps by the removed
+// volume accumulated since the previous move (times the declared amplification).
+#include "dem/tester/wear_tester.h"
+
+#include "meshes/sample_frame.h"
+#include "meshes/sample_generator.h"
+#include "meshes/stopwatch.h"
+#include "meshes/surface_locator.h"
+#include "meshes/tester_walls.h"
+
+#include <omp.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace wear::dem {
+
+namespace {
+constexpr double pi = 3.14159265358979323846;
+
+void require(bool ok, const std::string& parameter, const std::string& what) {
+  if (!ok)
+    throw std::invalid_argument("DEM/" + parameter + ": " + what);
+}
+
+Material material(const std::string& name, const DemMaterial& m) {
+  return {name, 2 * m.shear_modulus * (1 + m.poisson_ratio), m.poisson_ratio, m.density};
+}
+} // namespace
+
+void validate(const TesterDemParameters& p) {
+  const auto check_material = [](const DemMaterial& m, const std::string& which) {
+    require(m.shear_modulus > 0 && std::isfinite(m.shear_modulus), which + " shear modulus",
+            "must be positive [Pa]");
+    require(m.poisson_ratio > -1 && m.poisson_ratio < 0.5, which + " Poisson ratio",
+            "must lie in (-1, 0.5)");
+    require(m.density > 0 && std::isfinite(m.density), which + " density",
+            "must be positive [kg/m^3]");
+  };
+  check_material(p.particle, "Particle");
+  check_material(p.sample, "Sample");
+  check_material(p.walls, "Wall");
+  p.psd.validate();
+  require(p.fill_height > 0, "Fill height", "must be positive [m]");
+  require(p.loose_factor >= 1.2, "Loose factor", "must be at least 1.2");
+  require(p.assumed_packing > 0.2 && p.assumed_packing < 0.74, "Assumed packing",
+          "must lie in (0.2, 0.74)");
+  require(p.settle_time > 0, "Settle time", "must be positive [s]");
+  require(p.rotation_rate_deg > 0 && std::isfinite(p.rotation_rate_deg), "Rotation rate",
+          "must be positive [deg/s]");
+  require(p.time_step_fraction > 0 && p.time_step_fraction <= 0.4, "Time step fraction",
+          "must lie in (0, 0.4] of the Rayleigh time");
+  require(p.max_speed > 0, "Maximum speed", "must be positive [m/s]");
+  require(p.n_threads >= 0, "Threads", "must be 0 (all cores) or positive");
+  require(p.revolutions >= 1, "Revolutions", "must be at least 1");
+  require(p.samples_per_revolution >= 2, "Samples per revolution", "must be at least 2");
+  require(p.steady_threshold > 0, "Steady threshold", "must be positive");
+  require(p.steady_revolutions >= 1, "Steady revolutions", "must be at least 1");
+}
+
+WearTester::WearTester(const meshes::GeometryParameters& geometry, const TesterDemParameters& dem,
+                       const WearLawParameters& wear_law,
+                       const ReferenceDeformationParameters& deformation,
+                       const meshes::SurfaceMesh& sample)
+    : geometry_(geometry), dem_(dem), deformation_parameters_(deformation),
+      law_(make_wear_law(wear_law)) {
+  meshes::validate(geometry_);
+  validate(dem_);
+  if (deformation.enabled) {
+    if (deformation.update_interval < 1)
+      throw std::invalid_argument("Deformation/Update interval: must be at least one step");
+    if (!(deformation.amplification > 0))
+      throw std::invalid_argument("Deformation/Amplification: must be positive");
+  }
+  const auto& t = geometry_.tester;
+  sector_ = t.sector_angle_deg * pi / 180;
+  auto& m = system_.materials;
+  particle_material_ = m.add(material("particle", dem_.particle));
+  const int sample_material = m.add(material("sample", dem_.sample));
+  const int wall_material = m.add(material("walls", dem_.walls));
+  m.set_pair(particle_material_, particle_material_, dem_.particle_particle);
+  m.set_pair(particle_material_, sample_material, dem_.particle_wall);
+  m.set_pair(particle_material_, wall_material, dem_.particle_wall);
+  m.set_pair(sample_material, sample_material, dem_.particle_wall); // walls never meet
+  m.set_pair(sample_material, wall_material, dem_.particle_wall);
+  m.set_pair(wall_material, wall_material, dem_.particle_wall);
+
+  const auto walls = meshes::generate_tester_walls(t);
+  const double margin = 0.02; // [rad]
+  const auto widen = [&](const meshes::SurfaceMesh& w) {
+    return t.sector_angle_deg < 360 ? meshes::widen_sector(w, sector_, margin) : w;
+  };
+  rotating_walls_.push_back(
+      system_.add_wall(MeshWall(widen(walls.floor), wall_material, {}, false, "floor")));
+  rotating_walls_.push_back(
+      system_.add_wall(MeshWall(widen(walls.inner), wall_material, {}, false, "inner")));
+  rotating_walls_.push_back(
+      system_.add_wall(MeshWall(widen(walls.outer), wall_material, {}, false, "outer")));
+  if (walls.consolidator)
+    system_.add_wall(MeshWall(*walls.consolidator, wall_material, {}, false, "consolidator"));
+  const auto placed =
+      meshes::SampleFrame(geometry_.sample, geometry_.placement).place_in_tester(sample);
+  sample_wall_ = system_.add_wall(MeshWall(placed, sample_material, {}, true, "sample"));
+
+  auto& s = system_.settings;
+  s.time_step_fraction = dem_.time_step_fraction;
+  s.max_speed = dem_.max_speed;
+  s.periodic = {t.sector_angle_deg < 360, sector_};
+  const double ro = t.outer_radius + 0.05;
+  s.domain = {{-ro, -ro, -0.05}, {ro, ro, t.wall_height + dem_.fill_height * dem_.loose_factor}};
+  revolution_time_ = sector_ / (dem_.rotation_rate_deg * pi / 180);
+
+  const auto& psd = dem_.psd;
+  double mean_d = 0;
+  const auto frac = psd.number_fractions();
+  for (std::size_t k = 0; k < frac.size(); ++k)
+    mean_d += frac[k] * psd.diameters[k] * psd.scaling_factor;
+  evaluation_ =
+      std::make_unique<TesterEvaluation>(sample, geometry_.sample, geometry_.placement, mean_d,
+                                         dem_.steady_threshold, dem_.steady_revolutions);
+  if (deformation.enabled)
+    deformation_ = std::make_unique<ReferenceDeformation>(placed);
+  cumulative_removed_.assign(placed.n_faces(), 0);
+}
+
+FillReport WearTester::fill_and_settle(const std::function<void(const TesterProgress&)>& progress) {
+  const auto& t = geometry_.tester;
+  const auto& g = geometry_.sample;
+  const meshes::SampleFrame frame(g, geometry_.placement);
+  const double d_max = dem_.psd.max_diameter();
+  const double element_h = g.convex ? g.pattern.h : 0;
+  const double ri = t.inner_radius, ro = t.outer_radius, Th = sector_;
+  const auto make_region = [&, frame, d_max, element_h](double z_top) {
+    FillRegion base =
+        annular_sector_region(ri, ro, Th, 0, std::min(z_top, t.wall_height), 0.5 * d_max);
+    const auto inside = base.inside;
+    base.inside = [=](const Vec3& x) {
+      if (!inside(x))
+        return false;
+      const Vec3 q = frame.point_to_sample(x);
+      const double c = d_max;
+      if (std::abs(q.x) < g.width / 2 + c && std::abs(q.y) < g.length / 2 + c && q.z > -c &&
+          q.z < g.thickness + element_h + c)
+        return false;
+      if (t.consolidator && x.z > t.consolidator_height - c) {
+        double th = std::atan2(x.y, x.x);
+        if (th < 0)
+          th += 2 * pi;
+        const double half = 0.5 * t.consolidator_extent_deg * pi / 180 + c / ri;
+        if (std::abs(th - t.consolidator_angle_deg * pi / 180) < half)
+          return false;
+      }
+      return true;
+    };
+    return base;
+  };
+  use_thread_count();
+  const double area = 0.5 * Th * (ro * ro - ri * ri);
+  const meshes::Stopwatch wall_clock;
+  const auto report = fill_to_height(
+      system_, make_region, area, 0, dem_.fill_height, dem_.psd, dem_.particle.density,
+      particle_material_, dem_.seed, dem_.loose_factor, 0.01, dem_.settle_time,
+      [&](double time) {
+        if (!progress)
+          return;
+        const double wall = wall_clock.seconds();
+        TesterProgress pr;
+        pr.phase = "settling";
+        pr.time = time;
+        pr.fraction = time / dem_.settle_time;
+        pr.particle_steps_per_second =
+            wall > 0 ? double(system_.n_steps()) * double(system_.particles.n_real) / wall : 0;
+        progress(pr);
+      },
+      dem_.assumed_packing);
+  steps_per_revolution_ = std::uint64_t(std::llround(revolution_time_ / system_.time_step()));
+  return report;
+}
+
+const RevolutionRecord&
+WearTester::run_revolution(const std::function<void(const TesterProgress&)>& progress) {
+  if (steps_per_revolution_ == 0)
+    throw std::logic_error("WearTester::run_revolution before fill_and_settle");
+  start_rotation();
+  system_.reset_wear_integrals();
+  evaluation_->begin_revolution(system_.time());
+  const std::uint64_t n = steps_per_revolution_;
+  const std::uint64_t sample_every = std::max<std::uint64_t>(1, n / dem_.samples_per_revolution);
+  const std::uint64_t update_every =
+      deformation_ ? std::min<std::uint64_t>(deformation_parameters_.update_interval, n) : n;
+  std::vector<double> applied(cumulative_removed_.size(), 0), delta(applied.size());
+  const meshes::Stopwatch wall_clock;
+  const auto apply_deformation = [&](const std::vector<double>& removed) {
+    const double amp = deformation_parameters_.amplification;
+    for (std::size_t f = 0; f < delta.size(); ++f)
+      delta[f] = amp * (removed[f] - applied[f]);
+    applied = removed;
+    system_.set_wall_vertices(sample_wall_, deformation_->update(delta, system_.time()));
+  };
+  std::uint64_t done = 0, next_progress = 0;
+  while (done < n) {
+    const std::uint64_t to_sample = sample_every - done % sample_every;
+    const std::uint64_t to_update = update_every - done % update_every;
+    const std::uint64_t k = std::min({to_sample, to_update, n - done});
+    system_.run(k);
+    done += k;
+    const bool sample = done % sample_every == 0;
+    const bool update = deformation_ && (done % update_every == 0 || done == n);
+    if (sample || update) {
+      const WearIntegrals wi = system_.wear_integrals(sample_wall_);
+      const auto removed = law_->removed_volume(wi);
+      if (sample)
+        evaluation_->sample(system_.particles, sample_mesh(), system_.time(), removed,
+                            wi.normal_impulse);
+      if (update)
+        apply_deformation(removed);
+    }
+    if (progress && (done >= next_progress || done == n)) {
+      next_progress = done + n / 100;
+      const double wall = wall_clock.seconds();
+      TesterProgress pr;
+      pr.phase = "revolution";
+      pr.revolution = revolution_ + 1;
+      pr.fraction = double(done) / double(n);
+      pr.time = system_.time();
+      pr.particle_steps_per_second =
+          wall > 0 ? double(done) * double(system_.particles.n_real) / wall : 0;
+      progress(pr);
+    }
+  }
+  const double wall = wall_clock.seconds();
+  const WearIntegrals integrals = system_.wear_integrals(sample_wall_);
+  // The window's duration is the nominal revolution (the step count rounds it to a step).
+  last_loads_ =
+      wall_loads(integrals, law_->removed_volume(integrals), sample_mesh(), revolution_time_);
+  const auto& removed = last_loads_.wear_volume.values();
+  for (std::size_t f = 0; f < removed.size(); ++f)
+    cumulative_removed_[f] += removed[f];
+  RevolutionRecord& r =
+      evaluation_->end_revolution(system_.time(), removed, law_->total_removed_volume(integrals));
+  r.wall_seconds = wall;
+  r.particle_steps_per_second = double(n) * double(system_.particles.n_real) / wall;
+  if (deformation_) {
+    r.swept_volume = deformation_->swept_volume();
+    r.applied_volume = deformation_->applied_volume();
+    r.enclosed_volume_loss = deformation_->enclosed_volume_loss();
+    r.min_angle_deg = deformation_->quality().min_angle_deg;
+    if (const auto& d = deformation_->first_distortion())
+      r.distortion = d->kind + " at face " + std::to_string(d->face) + " (" +
+                     meshes::label::name(d->label) + "), t = " + std::to_string(d->time) + " s";
+  }
+  ++revolution_;
+  return r;
+}
+
+void WearTester::use_thread_count() {
+  // gmsh may have lowered OpenMP's default thread count: set it explicitly.
+  omp_set_num_threads(dem_.n_threads > 0 ? dem_.n_threads : omp_get_num_procs());
+}
+
+void WearTester::start_rotation() {
+  if (rotating_)
+    return;
+  WallMotion rotation;
+  rotation.angular_velocity = dem_.rotation_rate_deg * pi / 180;
+  for (int w : rotating_walls_)
+    system_.set_wall_motion(w, rotation);
+  rotating_ = true;
+}
+
+WearTester::PushReport WearTester::set_sample_surface(const meshes::SurfaceMesh& sample,
+                                                      double push_tolerance) {
+  if (deformation_)
+    throw std::logic_error("WearTester: the sample surface cannot be replaced while the "
+                           "reference deformation moves its nodes");
+  const auto placed =
+      meshes::SampleFrame(geometry_.sample, geometry_.placement).place_in_tester(sample);
+  PushReport report;
+  auto& p = system_.particles;
+  if (p.n_real > 0) {
+    // A receding surface moves away from the bed; only where the new surface lies outside
+    // the old one can it enclose particles: remeshing chords, the volume-restoring offset,
+    // and tangential relaxation on a convex cap (a tangential move leaves a curved surface
+    // outwards).
+    const meshes::SurfaceLocator locator(placed);
+    const auto normals = meshes::face_normals(placed);
+    const auto box = meshes::bounding_box(placed);
+    double r_max = 0;
+    for (std::size_t i = 0; i < p.n_real; ++i)
+      r_max = std::max(r_max, p.radius[i]);
+    for (std::size_t i = 0; i < p.n_real; ++i) {
+      const Vec3& x = p.position[i];
+      if (x.x < box.min.x - r_max || x.y < box.min.y - r_max || x.z < box.min.z - r_max ||
+          x.x > box.max.x + r_max || x.y > box.max.y + r_max || x.z > box.max.z + r_max)
+        continue;
+      const auto near = locator.nearest(x);
+      if (near.face < 0)
+        continue;
+      // Bed particles lie outside the sample, and one stage moves the surface by far less
+      // than a radius, so the centre is still outside: push along closest point -> centre.
+      // (The face normal's sign is no test of side at a convex edge or vertex.)
+      const double r = p.radius[i];
+      const double overlap = r - near.distance;
+      if (overlap <= push_tolerance * r)
+        continue;
+      const Vec3 out =
+          near.distance > 0 ? (x - near.point) / near.distance : normals[std::size_t(near.face)];
+      const Vec3 moved = near.point + out * r;
+      report.max_distance = std::max(report.max_distance, meshes::norm(moved - x));
+      p.position[i] = moved;
+      ++report.n_pushed;
+    }
+  }
+  system_.replace_wall_mesh(sample_wall_, placed);
+  evaluation_->set_surface(sample);
+  cumulative_removed_.assign(placed.n_faces(), 0);
+  last_loads_ = {};
+  return report;
+}
+
+void WearTester::restore(const SystemState& state, int revolutions_done,
+                         const std::vector<RevolutionRecord>& records) {
+  if (system_.particles.n_real == 0) {
+    auto& p = system_.particles;
+    for (std::size_t i = 0; i < state.position.size(); ++i) {
+      p.add(state.position[i], state.velocity[i], state.radius[i], dem_.particle.density,
+            state.material[i]);
+      p.mass.back() = state.mass[i];
+      p.inertia.back() = state.inertia[i];
+      p.id.back() = state.id[i];
+    }
+    use_thread_count();
+    system_.setup();
+    steps_per_revolution_ = std::uint64_t(std::llround(revolution_time_ / system_.time_step()));
+  }
+  if (revolutions_done > 0)
+    start_rotation();
+  system_.import_state(state);
+  evaluation_->history() = records;
+  revolution_ = revolutions_done;
+}
+
+} // namespace wear::dem

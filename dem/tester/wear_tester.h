@@ -1,0 +1,103 @@
+#pragma once
+// The circular wear tester in DEM (docs/wear-tester.md): a periodic sector of the annular bed
+// with rotating floor and cylinders, the fixed sample as a wearing wall, an optional
+// consolidator, a bed filled from the PSD and settled; then revolutions with per-face wear
+// integrals, evaluations and, optionally, the reference node-moving deformation.
+#include "dem/engine/filling.h"
+#include "dem/engine/system.h"
+#include "dem/tester/reference_deformation.h"
+#include "dem/tester/tester_evaluation.h"
+#include "dem/tester/tester_parameters.h"
+#include "dem/tester/wall_loads.h"
+#include "dem/tester/wear_law.h"
+#include "meshes/geometry_parameters.h"
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace wear::dem {
+
+/// Progress of a running tester, for a live line.
+struct TesterProgress {
+  std::string phase; ///< "settling" or "revolution"
+  int revolution = 0;
+  double fraction = 0; ///< [-] of the current phase
+  double time = 0;     ///< [s] simulated
+  double particle_steps_per_second = 0;
+};
+
+class WearTester {
+public:
+  /// `sample` is the sample surface in its own frame (meshes::generate_sample); it is placed
+  /// in the tester by geometry.placement. Throws naming the parameter on bad input.
+  WearTester(const meshes::GeometryParameters& geometry, const TesterDemParameters& dem,
+             const WearLawParameters& wear_law, const ReferenceDeformationParameters& deformation,
+             const meshes::SurfaceMesh& sample);
+
+  /// Inserts the bed from the PSD and lets it settle with the walls at rest.
+  FillReport fill_and_settle(const std::function<void(const TesterProgress&)>& progress = {});
+  /// Runs one revolution with the walls rotating: evaluation samples, wear integrals, the
+  /// reference deformation if enabled. Returns the record (also kept in evaluation()).
+  const RevolutionRecord&
+  run_revolution(const std::function<void(const TesterProgress&)>& progress = {});
+
+  /// Replaces the sample surface (sample frame, e.g. worn and remeshed by the FEM; face
+  /// order defines the face fields from now on). Particles that the new surface overlaps by
+  /// more than `push_tolerance` of their radius are moved out along the surface normal to
+  /// zero overlap; says how many and how far. Per-face sums restart on the new faces.
+  struct PushReport {
+    int n_pushed = 0;
+    double max_distance = 0; ///< [m] largest displacement of a pushed particle
+  };
+  PushReport set_sample_surface(const meshes::SurfaceMesh& sample, double push_tolerance = 0.01);
+
+  /// Continues a run from a checkpoint instead of fill_and_settle(): sets the system up with
+  /// the state's particles and takes over the state, the revolution count and the evaluation
+  /// records. The surface must be set first (set_sample_surface) when it changed.
+  void restore(const SystemState& state, int revolutions_done,
+               const std::vector<RevolutionRecord>& records);
+
+  System& system() { return system_; }
+  const System& system() const { return system_; }
+  int sample_wall() const { return sample_wall_; }
+  const meshes::SurfaceMesh& sample_mesh() const { return system_.wall(sample_wall_).mesh(); }
+  const TesterEvaluation& evaluation() const { return *evaluation_; }
+  TesterEvaluation& evaluation() { return *evaluation_; }
+  const WearLaw& wear_law() const { return *law_; }
+  const ReferenceDeformation* deformation() const { return deformation_.get(); }
+  /// The loads on the sample wall over the last completed revolution, on sample_mesh() in
+  /// the tester frame (empty fields before the first revolution).
+  const WallLoads& last_loads() const { return last_loads_; }
+  /// Removed volume per face summed over all revolutions [m^3].
+  const std::vector<double>& cumulative_removed_volume() const { return cumulative_removed_; }
+  std::uint64_t steps_per_revolution() const { return steps_per_revolution_; }
+  double revolution_time() const { return revolution_time_; } ///< [s]
+  int n_revolutions_done() const { return revolution_; }
+
+private:
+  meshes::GeometryParameters geometry_;
+  TesterDemParameters dem_;
+  ReferenceDeformationParameters deformation_parameters_;
+  System system_;
+  int sample_wall_ = -1, particle_material_ = 0;
+  std::vector<int> rotating_walls_;
+  std::unique_ptr<WearLaw> law_;
+  std::unique_ptr<ReferenceDeformation> deformation_;
+  std::unique_ptr<TesterEvaluation> evaluation_;
+  WallLoads last_loads_;
+  std::vector<double> cumulative_removed_; ///< [m^3] per face, all revolutions
+  double revolution_time_ = 0, sector_ = 0;
+  std::uint64_t steps_per_revolution_ = 0;
+  int revolution_ = 0;
+  bool rotating_ = false;
+  void start_rotation();
+  void use_thread_count(); ///< DEM/Threads, or all cores, for the engine's loops
+};
+
+/// Throws std::invalid_argument naming "DEM/<parameter>" for a non-physical value.
+void validate(const TesterDemParameters& p);
+
+} // namespace wear::dem

@@ -1,0 +1,62 @@
+#pragma once
+// The FEM subsection of a case file: the sample's material and stress solver, when and how
+// the worn sample is remeshed, and where it counts as worn through. Each default is declared
+// once, in the struct of the code that uses it (ElasticityParameters, WornSampleParameters,
+// RemeshParameters); FemParameters holds those structs, and worn_sample_parameters()
+// completes a worn sample's parameters with what a run adds.
+#include "fem/elasticity.h"
+#include "fem/worn_sample.h"
+#include "meshes/geometry_parameters.h"
+#include "meshes/parameter_visitor.h"
+
+#include <string>
+
+namespace wear::fem {
+
+struct FemParameters {
+  ElasticityParameters elasticity;
+  /// The case file sets remesh_min_scaled_jacobian, worn_through_thickness and
+  /// remesh.feature_angle_deg, remesh.chord_tolerance, remesh.min_tet_quality; the others
+  /// keep their defaults, except remesh.sizes and mesh_directory, which are the run's
+  /// (worn_sample_parameters()).
+  WornSampleParameters worn_sample;
+};
+
+/// The worn sample's parameters of a run: those of `p`, remeshed with the mesh sizes and
+/// grading of `sizes` (the unworn sample's), remeshes written to `mesh_directory`.
+WornSampleParameters worn_sample_parameters(const FemParameters& p,
+                                            const meshes::SampleGeometry& sizes,
+                                            const std::string& mesh_directory);
+
+/// Throws std::invalid_argument naming the parameter ("FEM/...").
+void validate(const FemParameters& p);
+
+/// The FEM subsection (meshes/parameter_visitor.h).
+template <typename Visitor>
+void visit_parameters(FemParameters& f, Visitor& v) {
+  auto& e = f.elasticity;
+  auto& w = f.worn_sample;
+  v.enter("FEM");
+  v.real("Youngs modulus", e.youngs_modulus, "[Pa] Sample material (PE1000: 700 MPa).");
+  v.real("Poisson ratio", e.poisson_ratio, "[-] Sample material (PE1000: 0.40).");
+  v.real("Yield stress", e.yield_stress, "[Pa] For the safety factor (PE1000: about 20 MPa).");
+  v.unsigned_integer("Degree", e.degree, 1, 2, "Polynomial degree of the simplex elements.");
+  v.real("Solver tolerance", e.relative_tolerance, "[-] Relative residual of the AMG-CG solve.");
+  v.real("Remesh scaled Jacobian", w.remesh_min_scaled_jacobian,
+         "[-] Remesh when mesh motion leaves a cell below this scaled Jacobian (or inverted).");
+  v.real("Feature angle", w.remesh.feature_angle_deg,
+         "[deg] Edges sharper than this are kept as edges when remeshing the worn surface.");
+  v.real("Chord tolerance", w.remesh.chord_tolerance,
+         "[m] Largest gap between the remeshed and the worn surface the size field aims at.");
+  v.real("Remesh tetrahedron quality", w.remesh.min_tet_quality,
+         "[-] A remesh attempt that leaves a tetrahedron of lower quality (6 sqrt(2) |V| / "
+         "l_max^3, 1 for a regular one) is refused and the next attempt tried; the last one, "
+         "which keeps the worn surface triangles, refuses only flat tetrahedra.");
+  v.real("Worn-through thickness", w.worn_through_thickness,
+         "[m] A wear face with a vertex closer than this to the sample's clamped bottom is worn "
+         "through: no material is left there, so the wear asked of it is recorded "
+         "(stages.csv: worn_through_volume_m3) and not removed.");
+  v.leave();
+}
+
+} // namespace wear::fem
