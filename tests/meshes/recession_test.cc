@@ -29,16 +29,21 @@ SurfaceMesh plate() {
       m.face_labels[f] = label::side;
   return m;
 }
+// The removed volume per face of a uniform depth [m] on the wear face.
+std::vector<double> uniform_depth_volume(const SurfaceMesh& m, double depth) {
+  const auto area = face_areas(m);
+  std::vector<double> v(m.n_faces(), 0);
+  for (std::size_t f = 0; f < m.n_faces(); ++f)
+    if (label::wears(m.face_labels[f]))
+      v[f] = depth * area[f];
+  return v;
+}
 } // namespace
 
 TEST_CASE("area-weighted recession of a uniform depth: straight down, by that depth",
           "[meshes][recession]") {
   const auto m = plate();
-  const auto area = face_areas(m);
-  std::vector<double> v(m.n_faces(), 0);
-  for (std::size_t f = 0; f < m.n_faces(); ++f)
-    if (label::wears(m.face_labels[f]))
-      v[f] = 2e-4 * area[f]; // 0.2 mm everywhere on the wear face
+  const std::vector<double> v = uniform_depth_volume(m, 2e-4);
   const auto depth = area_weighted_depth(m, v);
   const auto displacement = area_weighted_recession(m, v);
   std::vector<char> on_wear_face(m.n_vertices(), 0);
@@ -104,11 +109,7 @@ TEST_CASE("spreading removed volume keeps the total and stays local", "[meshes][
 
 TEST_CASE("spreading leaves a uniform depth unchanged", "[meshes][recession]") {
   const auto m = plate();
-  const auto area = face_areas(m);
-  std::vector<double> v(m.n_faces(), 0);
-  for (std::size_t f = 0; f < m.n_faces(); ++f)
-    if (label::wears(m.face_labels[f]))
-      v[f] = 2e-4 * area[f]; // 0.2 mm everywhere on the wear face
+  const std::vector<double> v = uniform_depth_volume(m, 2e-4);
   auto spread = v;
   const double moved = spread_removed_volume(m, spread, {0, 1, 2}, 8);
   CHECK(moved < 1e-12 * std::accumulate(v.begin(), v.end(), 0.0));
