@@ -201,10 +201,7 @@ WornSample::WornSample(const WornSampleState& st, const WornSampleParameters& p)
           throw std::runtime_error("worn sample state: a boundary face has no label");
         cell->face(f)->set_boundary_id(dealii::types::boundary_id(it->second));
       }
-  map_ = std::make_unique<BoundaryFaceMap>(*tria_, st.surface);
-  removed_ = meshes::FaceField<double>("removed volume", "m^3", meshes::Extensivity::extensive,
-                                       st.surface);
-  depth_ = meshes::FaceField<double>("wear depth", "m", meshes::Extensivity::intensive, st.surface);
+  set_surface(st.surface);
   if (st.removed_volume.size() != removed_.size() || st.wear_depth.size() != depth_.size())
     throw std::runtime_error("worn sample state: face fields do not match the surface");
   removed_.values() = st.removed_volume;

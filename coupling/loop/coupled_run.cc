@@ -40,6 +40,14 @@ void RunTotals::add(const StageRecord& r) {
   stage_seconds = clock.seconds();
 }
 
+void RunTotals::add_dem_wear(const meshes::FaceField<double>& removed) {
+  if (removed.revision() != dem_wear.revision() || removed.size() != dem_wear.size())
+    throw std::logic_error("coupled run: a stage's removed volume is not on the faces of the "
+                           "DEM-only cumulative wear");
+  for (std::size_t f = 0; f < removed.size(); ++f)
+    dem_wear[f] += removed[f];
+}
+
 double RunTotals::mean_stage_seconds() const {
   return n_stages_run > 0 ? stage_seconds / n_stages_run : 0;
 }
@@ -54,6 +62,8 @@ void CoupledRun::run() {
     const dem::WallLoads loads = run_dem(r);
     const WearIncrement increment = compute_wear(loads, r);
     meshes::FaceField<double> applied = increment.removed;
+    if (r.scheme == Scheme::dem_only && !sample_)
+      totals_.add_dem_wear(increment.removed);
     if (r.scheme == Scheme::staged) {
       const StageStress stress = solve_stress(loads, r);
       GeometryUpdate update = update_geometry(increment, stress, r);
@@ -158,9 +168,6 @@ WearIncrement CoupledRun::compute_wear(const dem::WallLoads& loads, StageRecord&
     check_depth_cap(w, p_.coupling, r.stage);
   } else if (r.scheme == Scheme::dem_only) {
     r.cumulative_applied = totals_.cumulative_applied;
-    if (!sample_)
-      for (std::size_t f = 0; f < surface.n_faces(); ++f)
-        totals_.dem_wear[f] += w.removed[f];
   }
   r.wear_seconds = clock.seconds();
   return w;

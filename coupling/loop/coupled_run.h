@@ -40,6 +40,8 @@ struct RunTotals {
 
   /// Adds a finished stage's volumes and counts it.
   void add(const StageRecord& r);
+  /// Adds a stage's removed volume per face to dem_wear (same faces).
+  void add_dem_wear(const meshes::FaceField<double>& removed);
   /// [s] mean wall time of this invocation's stages, 0 before the first.
   double mean_stage_seconds() const;
 };

@@ -11,16 +11,13 @@ namespace {
 using meshes::Extensivity;
 using meshes::FaceField;
 
+// The values of one field of a window, checked against the face count.
 template <typename T>
-FaceField<T> field(const char* name, const char* unit, const meshes::SurfaceMesh& mesh,
-                   const std::vector<T>& values) {
-  FaceField<T> f(name, unit, Extensivity::extensive, mesh);
-  if (values.size() != f.size())
-    throw std::logic_error(std::string("wall loads: '") + name + "' has " +
-                           std::to_string(values.size()) + " values for " +
-                           std::to_string(f.size()) + " faces");
-  f.values() = values;
-  return f;
+void fill(FaceField<T>& to, const std::vector<T>& values) {
+  if (values.size() != to.size())
+    throw std::logic_error("wall loads: '" + to.name() + "' has " + std::to_string(values.size()) +
+                           " values for " + std::to_string(to.size()) + " faces");
+  to.values() = values;
 }
 
 template <typename T>
@@ -79,13 +76,13 @@ WallLoads WallLoads::follow(const meshes::SurfaceMesh& mesh,
 
 WallLoads wall_loads(const WearIntegrals& integrals, const std::vector<double>& wear_volume,
                      const meshes::SurfaceMesh& mesh, double duration) {
-  WallLoads w;
-  w.impulse = field("impulse", "N s", mesh, integrals.impulse);
-  w.normal_impulse = field("normal impulse", "N s", mesh, integrals.normal_impulse);
-  w.archard = field("Archard load-distance", "N m", mesh, integrals.archard);
-  w.sliding_work = field("sliding work", "J", mesh, integrals.sliding_work);
-  w.contact_steps = field("contact-steps", "1", mesh, integrals.contact_steps);
-  w.wear_volume = field("wear-law volume", "m^3", mesh, wear_volume);
+  WallLoads w = WallLoads::zero(mesh);
+  fill(w.impulse, integrals.impulse);
+  fill(w.normal_impulse, integrals.normal_impulse);
+  fill(w.archard, integrals.archard);
+  fill(w.sliding_work, integrals.sliding_work);
+  fill(w.contact_steps, integrals.contact_steps);
+  fill(w.wear_volume, wear_volume);
   w.duration = duration;
   return w;
 }

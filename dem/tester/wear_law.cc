@@ -2,8 +2,8 @@
 //   archard:         dV_f = alpha * A_f,   A_f = integral of F_n |v_t| dt      [N m]
 //   frictional-work: dV_f = k_w * W_f,     W_f = integral of |F_t . v_t| dt    [J]
 // Both are linear in extensive integrals, so the volume of a face set is the law applied to
-// the sum, and splitting contacts over faces conserves volume exactly. Each law class carries
-// its catalogue entry (name, description, parameters, factory); the catalogue lists them.
+// the sum, and splitting contacts over faces conserves volume exactly. Each law is one entry
+// of the catalogue (name, description, parameters, factory).
 #include "dem/tester/wear_law.h"
 
 #include <cmath>
@@ -13,67 +13,59 @@ namespace wear::dem {
 
 namespace {
 
-class ArchardLaw final : public WearLaw {
+// Both laws are a coefficient times one extensive integral of the window: per face, and the
+// same total from the per-contact sums.
+class LinearWearLaw final : public WearLaw {
 public:
-  static constexpr const char* law_name = "archard";
-  static WearLawEntry entry() {
-    return {law_name,
-            "Archard sliding wear: removed volume dV = alpha F_n |v_t| dt per contact and step, "
-            "alpha = k/H [1/Pa] ('Archard coefficient'). The reference study calibrated alpha = "
-            "5e-9 1/Pa so that two simulated revolutions represent 56 h of the laboratory test.",
-            {{"Archard coefficient", &WearLawParameters::archard_coefficient,
-              "[1/Pa] alpha = k/H of the Archard law."}},
-            [](const WearLawParameters& p) -> std::unique_ptr<WearLaw> {
-              return std::make_unique<ArchardLaw>(p.archard_coefficient);
-            }};
-  }
-
-  explicit ArchardLaw(double alpha) : alpha_(alpha) {}
-  std::string name() const override { return law_name; }
+  LinearWearLaw(const char* name, double coefficient, std::vector<double> WearIntegrals::*per_face,
+                double WearIntegrals::*total)
+      : name_(name), coefficient_(coefficient), per_face_(per_face), total_(total) {}
+  std::string name() const override { return name_; }
   std::vector<double> removed_volume(const WearIntegrals& w) const override {
-    std::vector<double> v(w.archard.size());
+    const std::vector<double>& integral = w.*per_face_;
+    std::vector<double> v(integral.size());
     for (std::size_t f = 0; f < v.size(); ++f)
-      v[f] = alpha_ * w.archard[f];
+      v[f] = coefficient_ * integral[f];
     return v;
   }
   double total_removed_volume(const WearIntegrals& w) const override {
-    return alpha_ * w.total_archard;
+    return coefficient_ * w.*total_;
   }
 
 private:
-  double alpha_;
+  const char* name_;
+  double coefficient_;
+  std::vector<double> WearIntegrals::*per_face_;
+  double WearIntegrals::*total_;
 };
 
-class FrictionalWorkLaw final : public WearLaw {
-public:
-  static constexpr const char* law_name = "frictional-work";
-  static WearLawEntry entry() {
-    return {law_name,
-            "Frictional-work (energy) wear: dV = k_w |F_t . v_t| dt [m^3/J] ('Work coefficient'). "
-            "Equals Archard with alpha = k_w mu where contacts fully slide; differs where they "
-            "stick, which removes nothing here.",
-            {{"Work coefficient", &WearLawParameters::work_coefficient,
-              "[m^3/J] Volume removed per frictional work (frictional-work law)."}},
-            [](const WearLawParameters& p) -> std::unique_ptr<WearLaw> {
-              return std::make_unique<FrictionalWorkLaw>(p.work_coefficient);
-            }};
-  }
+WearLawEntry archard_law() {
+  return {"archard",
+          "Archard sliding wear: removed volume dV = alpha F_n |v_t| dt per contact and step, "
+          "alpha = k/H [1/Pa] ('Archard coefficient'). The reference study calibrated alpha = "
+          "5e-9 1/Pa so that two simulated revolutions represent 56 h of the laboratory test.",
+          {{"Archard coefficient", &WearLawParameters::archard_coefficient,
+            "[1/Pa] alpha = k/H of the Archard law."}},
+          [](const WearLawParameters& p) -> std::unique_ptr<WearLaw> {
+            return std::make_unique<LinearWearLaw>("archard", p.archard_coefficient,
+                                                   &WearIntegrals::archard,
+                                                   &WearIntegrals::total_archard);
+          }};
+}
 
-  explicit FrictionalWorkLaw(double k) : k_(k) {}
-  std::string name() const override { return law_name; }
-  std::vector<double> removed_volume(const WearIntegrals& w) const override {
-    std::vector<double> v(w.sliding_work.size());
-    for (std::size_t f = 0; f < v.size(); ++f)
-      v[f] = k_ * w.sliding_work[f];
-    return v;
-  }
-  double total_removed_volume(const WearIntegrals& w) const override {
-    return k_ * w.total_sliding_work;
-  }
-
-private:
-  double k_;
-};
+WearLawEntry frictional_work_law() {
+  return {"frictional-work",
+          "Frictional-work (energy) wear: dV = k_w |F_t . v_t| dt [m^3/J] ('Work coefficient'). "
+          "Equals Archard with alpha = k_w mu where contacts fully slide; differs where they "
+          "stick, which removes nothing here.",
+          {{"Work coefficient", &WearLawParameters::work_coefficient,
+            "[m^3/J] Volume removed per frictional work (frictional-work law)."}},
+          [](const WearLawParameters& p) -> std::unique_ptr<WearLaw> {
+            return std::make_unique<LinearWearLaw>("frictional-work", p.work_coefficient,
+                                                   &WearIntegrals::sliding_work,
+                                                   &WearIntegrals::total_sliding_work);
+          }};
+}
 
 void check_coefficient(double c, const std::string& parameter) {
   if (!(c >= 0) || !std::isfinite(c))
@@ -84,7 +76,7 @@ void check_coefficient(double c, const std::string& parameter) {
 } // namespace
 
 const std::vector<WearLawEntry>& wear_law_catalogue() {
-  static const std::vector<WearLawEntry> laws = {ArchardLaw::entry(), FrictionalWorkLaw::entry()};
+  static const std::vector<WearLawEntry> laws = {archard_law(), frictional_work_law()};
   return laws;
 }
 

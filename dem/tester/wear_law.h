@@ -1,11 +1,11 @@
 #pragma once
 // Wear laws: removed volume per face from the extensive window integrals of a wearing wall.
-// The laws form a catalogue of plugins (as in ASPECT): each entry, beside its law class in
-// wear_law.cc, holds the law's name (case file "Wear law/Model"), its description, the
-// parameters it declares and its factory. The Wear law subsection, the selection of Model
-// and its documentation are built from the catalogue, and make_wear_law finds a law by
-// name; a new law is a class and its entry in wear_law.cc (plus, for a new coefficient, its
-// member in WearLawParameters).
+// The laws form a catalogue of plugins (as in ASPECT): each entry in wear_law.cc holds the
+// law's name (case file "Wear law/Model"), its description, the parameters it declares and
+// its factory. The Wear law subsection, the selection of Model and its documentation are
+// built from the catalogue, and make_wear_law finds a law by name. A new law is an entry in
+// wear_law.cc (and a class only when it is not a coefficient times one window integral); a
+// new coefficient is also a member of WearLawParameters.
 #include "dem/engine/system.h"
 #include "meshes/parameter_visitor.h"
 
