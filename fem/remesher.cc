@@ -12,8 +12,32 @@
 // input every patch is pure, and a mixed patch is reported. An attempt is refused (and the next
 // one tried) when a tetrahedron is nearly flat, the new boundary is open or folds, or the
 // volume or a label's area changes by more than the chords can explain.
+//
+// Why first attempts failed (issue 34: 2 of 4 staged remeshes of the quick convex case refused,
+// "Invalid boundary mesh (overlapping facets)" on the base, or a tetrahedron of quality 7.7e-5):
+// createGeometry parametrises a patch by projection onto its least-squares plane only when it
+// is planar to Geometry.MatchMeshTolerance (1e-8) x its diagonal; any other patch gets a
+// mean-value (harmonic) map onto the unit disk that pins its longest boundary loop and leaves
+// every other loop free. For a disk that map cannot fold; for a patch with holes it can. The
+// worn base top is such a patch: a plate with the 23 element footprints as holes, no longer
+// planar once worn (0.5 to 2.3 um per mm of diagonal in the quick case), so the free
+// footprint loops folded in the parameter plane, and the triangles gmsh built there folded
+// onto each other beside a footprint (two facets at 0.06 deg) or came out nearly flat (the
+// slivers). Every attempt classified the same patch, so the larger feature angle and Delaunay
+// failed alike, until only keeping the worn triangles was left. A worn element whose sharpened
+// tip splits off at the feature angle leaves a second kind: a ring around the tip.
+// Fix (classify_mappable): a patch with holes that is a graph over its plane (the worn base)
+// is projected, gmsh's planarity tolerance raised to cover it; one that is not, with at most
+// two holes (the rings), is cut open (fem/discrete_patches.h) and classified again. Over 79
+// worn surfaces that runs handed to the remesher (quick convex 17, of which the 2 refused
+// inputs of the issue's run; quick plain 19; deformation-like at 1 mm 14; the first 14 stages
+// of the wear-out case 29) the first attempt now succeeds on 73 (was 57 in the runs); it fails
+// where a worn tip is crumpled (faces turning by over 90 deg within 0.5 mm), and on the base
+// late in the wear-out case, which overhangs at its leading edge and keeps the harmonic map.
+// An attempt also takes a third of the time: see set_size_field.
 #include "fem/remesher.h"
 
+#include "fem/discrete_patches.h"
 #include "meshes/gmsh_session.h"
 #include "meshes/mesh_quality.h"
 #include "meshes/planar_flip.h"
@@ -26,6 +50,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -71,14 +96,19 @@ std::map<int, int> add_discrete_surfaces(const meshes::SurfaceMesh& worn) {
 // surfaces they came in, and only existing 1D elements stop it: without them, a wear face
 // rounded into a side below the feature angle joins the side's patch (707 to 2,428 faces
 // in the staged deformation run, every such remesh fell back to keeping the surface).
-void add_label_boundaries(const meshes::SurfaceMesh& worn) {
+// `cuts` (fem/discrete_patches.h) join them, so that the patches they split off carry no hole.
+void add_label_boundaries(const meshes::SurfaceMesh& worn, const std::vector<Edge>& cuts) {
   std::vector<std::size_t> lines, nodes;
+  const auto add = [&](std::uint32_t a, std::uint32_t b) {
+    lines.push_back(worn.n_faces() + lines.size() + 1); // element tags follow the faces'
+    nodes.push_back(a + 1);
+    nodes.push_back(b + 1);
+  };
   for (const auto& [edge, faces] : meshes::edge_faces(worn))
-    if (faces.size() == 2 && worn.face_labels[faces[0]] != worn.face_labels[faces[1]]) {
-      lines.push_back(worn.n_faces() + lines.size() + 1); // element tags follow the faces'
-      nodes.push_back(edge.first + 1);
-      nodes.push_back(edge.second + 1);
-    }
+    if (faces.size() == 2 && worn.face_labels[faces[0]] != worn.face_labels[faces[1]])
+      add(edge.first, edge.second);
+  for (const auto& [a, b] : cuts)
+    add(a, b);
   const int tag = 1;
   gmsh::model::addDiscreteEntity(1, tag);
   gmsh::model::mesh::addElementsByType(tag, 1, lines, nodes);
@@ -140,6 +170,10 @@ void set_size_field(const meshes::SurfaceMesh& worn, const RemeshParameters& p) 
   gmsh::model::mesh::field::setNumbers(both, "FieldsList", {double(graded), double(local)});
   gmsh::model::mesh::field::setAsBackgroundMesh(both);
   gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+  // gmsh places the nodes of a curve by integrating 1 / size along it, to 1e-9 by default:
+  // on this piecewise-linear field that took 5.4 of the 6.5 s of an attempt in the quick
+  // case; to 1e-4 (0.05 s) a node moves by less than a thousandth of an edge.
+  gmsh::option::setNumber("Mesh.LcIntegrationPrecision", 1e-4);
 }
 
 // Label of each classified patch: the label most of its input triangles carry.
@@ -175,13 +209,102 @@ constexpr int keep_surface = 0; // attempt that keeps the input triangles, meshi
 // which has no other attempt to fall back to.
 constexpr double flat_tet_quality = 1e-8;
 
-// The patches gmsh splits the input into (at the label boundaries, at feature edges, and
-// where one map cannot parametrise them), with their parametrisation; returns the label of
-// each patch. Refuses (throws) a classification that loses a label or mixes labels in a patch.
+// The input faces of each patch gmsh classified (element tag = face + 1), by patch tag.
+std::map<int, std::vector<std::uint32_t>> patch_faces(const meshes::SurfaceMesh& worn) {
+  gmsh::vectorpair surfaces;
+  gmsh::model::getEntities(surfaces, 2);
+  std::map<int, std::vector<std::uint32_t>> faces;
+  for (const auto& [dim, tag] : surfaces) {
+    std::vector<std::size_t> elements, nodes;
+    gmsh::model::mesh::getElementsByType(2, elements, nodes, tag);
+    auto& list = faces[tag];
+    for (const auto e : elements)
+      if (e >= 1 && e <= worn.n_faces())
+        list.push_back(static_cast<std::uint32_t>(e - 1));
+  }
+  return faces;
+}
+
+// A patch with holes whose face normals all lie within 84 deg of its plane's normal is mapped
+// by projection: below 90 deg it cannot fold (the worn base of the wear-out case reached
+// 82 deg at its leading edge and was meshed so).
+constexpr double graph_normal_cos = 0.1;
+// gmsh's planarity tolerance is set this factor above the largest relative deviation of a
+// patch to project, and must stay this factor below that of every patch that would fold.
+constexpr double planarity_margin = 1.5;
+
+// A patch with holes that projection could fold is cut open when it has at most this many
+// boundary loops (a ring around a split-off tip: 2). Cut into strips, the base with its 23
+// footprints meshed worse than uncut: 8 first attempts of 21 succeeded.
+constexpr int max_loops_to_cut = 3;
+
+// The largest relative deviation of the patches with holes that project (0: none), the
+// smallest of the patches that must not project, and the cuts that open the holes of those
+// patches with few holes that cannot project.
+struct HolePlan {
+  double project_deviation = 0;
+  double fold_deviation = std::numeric_limits<double>::infinity();
+  std::vector<Edge> cuts;
+  bool projection_safe() const {
+    return planarity_margin * planarity_margin * project_deviation < fold_deviation;
+  }
+};
+
+HolePlan plan_holes(const meshes::SurfaceMesh& worn) {
+  HolePlan plan;
+  for (const auto& [tag, faces] : patch_faces(worn)) {
+    const PatchShape shape = patch_shape(worn, faces);
+    const bool graph = shape.min_normal_cos > graph_normal_cos;
+    if (!graph)
+      plan.fold_deviation = std::min(plan.fold_deviation, shape.relative_deviation);
+    if (shape.n_loops < 2)
+      continue;
+    if (graph) {
+      plan.project_deviation = std::max(plan.project_deviation, shape.relative_deviation);
+    } else if (shape.n_loops <= max_loops_to_cut) {
+      const auto cuts = hole_cuts(worn, faces);
+      plan.cuts.insert(plan.cuts.end(), cuts.begin(), cuts.end());
+    }
+  }
+  return plan;
+}
+
+void classify(const meshes::SurfaceMesh& worn, double feature_angle_deg,
+              const std::vector<Edge>& cuts) {
+  add_label_boundaries(worn, cuts);
+  gmsh::model::mesh::classifySurfaces(feature_angle_deg * pi / 180, true, true, pi);
+}
+
+// Classifies the input so that the patches gmsh reparametrises map without folding. gmsh
+// maps a patch with holes harmonically with the holes' loops free, and those fold; so a
+// patch with holes is projected onto its plane when it is a graph over it (gmsh projects a
+// patch that lies within Geometry.MatchMeshTolerance x its diagonal of the plane: the
+// tolerance is raised to cover them, when every patch it would also cover is a graph over
+// its plane), or else, with few holes, cut open and classified again. A patch with many
+// holes that is no graph (the base late in the wear-out case) is left to the harmonic map.
+void classify_mappable(const meshes::SurfaceMesh& worn, double feature_angle_deg, RemeshReport& r) {
+  classify(worn, feature_angle_deg, {});
+  HolePlan plan = plan_holes(worn);
+  r.n_cut_edges = plan.cuts.size();
+  if (!plan.cuts.empty()) {
+    gmsh::clear();
+    add_discrete_surfaces(worn);
+    classify(worn, feature_angle_deg, plan.cuts);
+    plan = plan_holes(worn); // the pieces are new patches
+  }
+  if (plan.project_deviation > 0 && plan.projection_safe()) {
+    r.planarity_tolerance = planarity_margin * plan.project_deviation;
+    gmsh::option::setNumber("Geometry.MatchMeshTolerance", r.planarity_tolerance);
+  }
+}
+
+// The patches gmsh splits the input into (at the label boundaries, at feature edges, at
+// the cuts that open holes, and where one map cannot parametrise them), with their
+// parametrisation; returns the label of each patch. Refuses (throws) a classification that
+// loses a label or mixes labels in a patch.
 std::map<int, int> classify_patches(const meshes::SurfaceMesh& worn, double feature_angle_deg,
                                     RemeshReport& r) {
-  add_label_boundaries(worn);
-  gmsh::model::mesh::classifySurfaces(feature_angle_deg * pi / 180, true, true, pi);
+  classify_mappable(worn, feature_angle_deg, r);
   auto label_of = patch_labels(worn, &r.n_mixed_faces);
   // A small worn region can end up inside a neighbour's patch and lose its label in the
   // vote; fail this attempt so the next one (finally: keep the worn triangles) is tried.
@@ -278,6 +401,8 @@ meshes::SurfaceMesh mesh_discrete_volume(const meshes::SurfaceMesh& worn, const 
   // With keep_surface the input entities stay and only the volume is meshed anew.
   auto label_of = add_discrete_surfaces(worn);
   r.n_mixed_faces = 0;
+  r.n_cut_edges = 0;
+  r.planarity_tolerance = 0;
   if (algorithm != keep_surface)
     label_of = classify_patches(worn, feature_angle_deg, r);
   add_volume(label_of, r);
@@ -288,6 +413,16 @@ meshes::SurfaceMesh mesh_discrete_volume(const meshes::SurfaceMesh& worn, const 
   // discrete surfaces can take many minutes (closest-point searches); fail fast instead and
   // let the next attempt (larger feature angle, other algorithm) take over.
   gmsh::option::setNumber("Mesh.AlgorithmSwitchOnFailure", 0);
+  // gmsh meshes curves and surfaces in OpenMP loops, out of which its exception on an error
+  // cannot pass (std::terminate: "Unable to recover the edge" ended the program): there an
+  // error only stops the meshing, and is thrown here.
+  gmsh::option::setNumber("General.AbortOnError", 1);
+  gmsh::model::mesh::generate(2);
+  std::string error;
+  gmsh::logger::getLastError(error);
+  if (!error.empty())
+    throw std::runtime_error(error);
+  gmsh::option::setNumber("General.AbortOnError", 2);
   gmsh::model::mesh::generate(3);
   auto remeshed =
       meshes::gmsh_labelled_surface(&r.n_tetrahedra, &r.volume_after, &r.min_tet_quality);
@@ -329,9 +464,12 @@ bool mesh_first_attempt_that_succeeds(const meshes::SurfaceMesh& input, const Re
                                              {p.surface_algorithm, std::min(89.0, angle + 20)},
                                              {5, std::min(89.0, angle + 20)},
                                              {keep_surface, angle}};
+  int attempt = 0;
   for (const auto& [algorithm, feature_angle] : attempts) {
+    ++attempt;
     try {
       remeshed = mesh_discrete_volume(input, p, algorithm, feature_angle, msh_path, r);
+      r.attempt = attempt;
       r.surface_algorithm = algorithm;
       r.feature_angle_deg = feature_angle;
       r.failed_attempts = errors;

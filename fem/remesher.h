@@ -52,19 +52,26 @@ struct RemeshReport {
   double feature_angle_deg = 0;      ///< [deg] the angle that succeeded
   std::string failed_attempts;       ///< errors of the attempts before, if any (the input
                                      ///< is then kept in `<msh_path>.refused-input.msh`)
-  std::size_t n_flat_flips = 0;      ///< Delaunay flips in flat regions of the input
-  double min_tet_quality = 0;        ///< [-] smallest 6 sqrt(2) |V| / l_max^3 (1 regular)
+  int attempt = 0; ///< 1 when the first attempt succeeded (1-based index of the one that did)
+  /// input edges cut to open the holes of patches that projection could fold (0: none)
+  std::size_t n_cut_edges = 0;
+  /// [-] gmsh's planarity tolerance, raised so patches with holes are projected (0: kept)
+  double planarity_tolerance = 0;
+  std::size_t n_flat_flips = 0; ///< Delaunay flips in flat regions of the input
+  double min_tet_quality = 0;   ///< [-] smallest 6 sqrt(2) |V| / l_max^3 (1 regular)
   double seconds = 0;
 };
 
 /// Meshes the volume enclosed by `worn` (closed, outward, labelled, in the sample frame) and
 /// writes it to `msh_path` (gmsh 4.1, physical groups as generate_sample writes them, so
 /// read_sample_mesh reads it). The input faces of each label form separate discrete
-/// surfaces, split further at feature edges and into patches gmsh can reparametrise; every
-/// new face inherits its patch's label. Flat regions of the input are first re-triangulated
-/// by Delaunay flips (same surface), and an attempt leaving a flat tetrahedron (quality below
-/// 1e-8) fails like a gmsh error. Returns the new boundary surface with revision
-/// worn.revision() + 1. Throws when the surface is not closed, gmsh fails, or a label is lost.
+/// surfaces, split further at feature edges and into patches gmsh can reparametrise (a patch
+/// with holes is projected onto its plane when it is a graph over it, or else cut open, so
+/// that gmsh's map does not fold it); every new face inherits its patch's label. Flat regions of
+/// the input are first re-triangulated by Delaunay flips (same surface), and an attempt leaving a
+/// flat tetrahedron (quality below 1e-8) fails like a gmsh error. Returns the new boundary surface
+/// with revision worn.revision() + 1. Throws when the surface is not closed, gmsh fails, or a label
+/// is lost.
 meshes::SurfaceMesh remesh_sample(const meshes::SurfaceMesh& worn, const RemeshParameters& p,
                                   const std::string& msh_path, RemeshReport* report = nullptr);
 

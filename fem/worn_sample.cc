@@ -77,6 +77,8 @@ void relax_less(StageSplit& split, WearStageReport& r) {
 // Adds one remesh of the stage to its report.
 void record_remesh(const RemeshReport& remesh, WearStageReport& r) {
   r.last_remesh = remesh;
+  if (remesh.attempt == 1)
+    ++r.n_first_attempt_remeshes;
   if (!remesh.failed_attempts.empty())
     r.remesh_refusals.push_back(remesh.failed_attempts);
   if (remesh.restore_held_rings > 0)

@@ -41,7 +41,8 @@ struct WearStageReport {
   double volume_change = 0;  ///< [m^3] mesh volume before minus after
   int increments = 0;        ///< recession steps the stage was applied in
   int n_remeshes = 0;
-  int n_spreadings = 0; ///< spreading steps taken where the recession folded
+  int n_first_attempt_remeshes = 0; ///< remeshes of the stage whose first attempt succeeded
+  int n_spreadings = 0;             ///< spreading steps taken where the recession folded
   /// times the surface relaxation was halved because it alone folded the surface (the
   /// sixth halving turns it off for the rest of the stage)
   int n_relaxation_halvings = 0;

@@ -7,8 +7,10 @@ cd "$(dirname "$0")/.."
 bash scripts/install_deps.sh
 mkdir -p build
 bash scripts/build.sh
-./build/wearsim run cases/quick/plain.prm
-./build/wearsim run cases/quick/convex.prm
+# --overwrite: running the default command again replaces the earlier quick runs (wearsim run
+# refuses a folder that holds a run without it)
+./build/wearsim run --overwrite cases/quick/plain.prm
+./build/wearsim run --overwrite cases/quick/convex.prm
 ./build/wearsim compare output/quick-plain output/quick-convex
 /usr/bin/python3 coupling/output/plot_run.py output/quick-plain output/quick-convex
 /usr/bin/python3 coupling/output/plot_run.py --compare output/quick-plain output/quick-convex \

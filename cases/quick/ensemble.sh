@@ -24,7 +24,7 @@ for seed in "${seeds[@]}"; do
     sed -e "s|^subsection DEM|subsection DEM\n  set Seed = $seed|" \
         -e "s|set Directory = .*|set Directory = $out|" cases/quick/$kind.prm > "$out.prm"
     echo "ensemble: $kind, seed $seed ($(date +%T))"
-    if build/wearsim run "$out.prm" > "$out.log" 2>&1; then
+    if build/wearsim run --overwrite "$out.prm" > "$out.log" 2>&1; then
       dirs+=("$out")
     else
       # a failed run (e.g. a wear stage that would fold the surface) is reported and left out

@@ -13,6 +13,8 @@ int run_run_command(const std::vector<std::string>& args, std::ostream& log) {
   for (const auto& a : args) {
     if (a == "--resume")
       options.resume = true;
+    else if (a == "--overwrite")
+      options.overwrite = true;
     else if (a.rfind("--", 0) == 0)
       throw std::invalid_argument("wearsim run: unknown option '" + a + "'");
     else if (case_file.empty())
@@ -22,11 +24,10 @@ int run_run_command(const std::vector<std::string>& args, std::ostream& log) {
                                   "' and '" + a + "'");
   }
   if (case_file.empty())
-    throw std::invalid_argument("wearsim run: expected a case file: wearsim run [--resume] "
-                                "<case.prm>");
+    throw std::invalid_argument("wearsim run: expected a case file: wearsim run [--resume | "
+                                "--overwrite] <case.prm>");
   CoupledRun run(read_case(case_file), log, options);
-  run.run();
-  return 0;
+  return run.run();
 }
 
 } // namespace wear::coupling

@@ -30,6 +30,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 namespace wear::coupling {
 
@@ -52,20 +53,23 @@ double RunTotals::mean_stage_seconds() const {
   return n_stages_run > 0 ? stage_seconds / n_stages_run : 0;
 }
 
-void CoupledRun::run() {
-  setup();
+int CoupledRun::run() {
+  const StopSignals signals;
+  std::optional<OpenStage> open = setup();
   print_header();
   totals_.n_stages_run = 0;
   totals_.clock.restart();
   for (std::size_t k = stages_.size(); k < plan_.size(); ++k) {
-    StageRecord r = begin_stage(k);
-    const dem::WallLoads loads = run_dem(r);
-    const WearIncrement increment = compute_wear(loads, r);
+    StageRecord r = begin_stage(k, open);
+    const std::optional<dem::WallLoads> loads = run_dem(r, std::exchange(open, {}), signals);
+    if (!loads)
+      return stopped_by(signals.requested(), r, true);
+    const WearIncrement increment = compute_wear(*loads, r);
     meshes::FaceField<double> applied = increment.removed;
     if (r.scheme == Scheme::dem_only && !sample_)
       totals_.add_dem_wear(increment.removed);
     if (r.scheme == Scheme::staged) {
-      const StageStress stress = solve_stress(loads, r);
+      const StageStress stress = solve_stress(*loads, r);
       GeometryUpdate update = update_geometry(increment, stress, r);
       applied = std::move(update.applied);
       previous_stress_ = std::move(update.von_mises);
@@ -77,36 +81,62 @@ void CoupledRun::run() {
       break;
     }
     checkpoint();
+    if (signals.requested() != 0 && k + 1 < plan_.size()) // came during the FEM part
+      return stopped_by(signals.requested(), r, false);
     if (options_.stop_after > 0 && totals_.n_stages_run >= options_.stop_after &&
         k + 1 < plan_.size()) {
       log_ << "stopped after stage " << r.stage << " as asked; continue with --resume\n";
-      return;
+      return 0;
     }
   }
   print_end();
+  return 0;
 }
 
-StageRecord CoupledRun::begin_stage(std::size_t k) const {
+StageRecord CoupledRun::begin_stage(std::size_t k, const std::optional<OpenStage>& open) const {
   StageRecord r;
   r.stage = int(k) + 1;
   r.scheme = plan_[k];
   r.amplification = p_.coupling.amplification;
-  r.first_revolution = tester_->n_revolutions_done() + 1;
+  r.first_revolution = tester_->n_revolutions_done() + 1 - (open ? open->revolutions_done : 0);
   return r;
 }
 
 // The stage's revolutions; their loads, turned from the tester's frame into the sample's
-// (vectors rotated only), summed on the current sample surface.
-dem::WallLoads CoupledRun::run_dem(StageRecord& r) {
+// (vectors rotated only), summed on the current sample surface. Between two steps the run
+// may checkpoint itself (every Output/Checkpoint interval) or stop (a signal); an open stage
+// from a checkpoint continues where it stood.
+std::optional<dem::WallLoads> CoupledRun::run_dem(StageRecord& r, std::optional<OpenStage> open,
+                                                  const StopSignals& signals) {
   const meshes::Stopwatch clock;
   const auto& surface = sample_surface();
-  dem::WallLoads loads = dem::WallLoads::zero(surface);
+  dem::WallLoads loads = open ? loads_of(*open, surface) : dem::WallLoads::zero(surface);
+  const double seconds_before = open ? open->dem_seconds : 0;
   const auto to_sample = [this](const meshes::Vec3& v) { return frame_.vector_to_sample(v); };
+  // The node-moving method's state is not checkpointed (checkpoint() explains).
+  const bool can_checkpoint = p_.coupling.checkpoints && !has_reference_;
+  const double interval = p_.output.checkpoint_interval;
+  meshes::Stopwatch since_checkpoint;
   ProgressLine line(options_.progress);
   const int n_rev = p_.coupling.revolutions_per_stage;
-  for (int q = 0; q < n_rev; ++q) {
-    const auto& rec = tester_->run_revolution(
-        [&](const dem::TesterProgress& pr) { line.show(progress_text(r, pr, q)); });
+  for (int q = open ? open->revolutions_done : 0; q < n_rev; ++q) {
+    const auto stop = [&] {
+      if (signals.requested() != 0)
+        return true;
+      if (can_checkpoint && interval > 0 && since_checkpoint.seconds() >= interval) {
+        checkpoint_inside(loads, q, seconds_before + clock.seconds());
+        since_checkpoint.restart();
+      }
+      return false;
+    };
+    const auto show = [&](const dem::TesterProgress& pr) { line.show(progress_text(r, pr, q)); };
+    if (!tester_->advance_revolution(show, stop)) {
+      line.clear();
+      if (can_checkpoint)
+        checkpoint_inside(loads, q, seconds_before + clock.seconds());
+      return std::nullopt;
+    }
+    const auto& rec = tester_->evaluation().history().back();
     loads += tester_->last_loads().follow(surface, to_sample);
     if (r.scheme == Scheme::reference) { // the records are cumulative
       const auto& history = tester_->evaluation().history();
@@ -122,7 +152,7 @@ dem::WallLoads CoupledRun::run_dem(StageRecord& r) {
   line.clear();
   r.last_revolution = tester_->n_revolutions_done();
   r.time = tester_->system().time();
-  r.dem_seconds = clock.seconds();
+  r.dem_seconds = seconds_before + clock.seconds();
   return loads;
 }
 
@@ -212,6 +242,7 @@ GeometryUpdate CoupledRun::update_geometry(const WearIncrement& increment,
   r.geometry_volume_change = report.volume_change;
   r.increments = report.increments;
   r.n_remeshes = report.n_remeshes;
+  r.n_first_attempt_remeshes = report.n_first_attempt_remeshes;
   r.total_remeshes = sample_->n_remeshes();
   r.spread_volume = report.spread_volume;
   r.worn_through_volume = report.worn_through_volume;

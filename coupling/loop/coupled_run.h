@@ -2,8 +2,11 @@
 // `wearsim run`: the coupled DEM-FEM wear loop, one stage at a time (docs/coupling.md).
 // run() reads as the algorithm; each step takes the values it needs and returns what it
 // made: loads = run_dem -> increment = compute_wear(loads) -> stress = solve_stress(loads)
-// -> update = update_geometry(increment, stress) -> record -> checkpoint.
+// -> update = update_geometry(increment, stress) -> record -> checkpoint. Inside run_dem the
+// run can stop between two steps (a signal) and checkpoint itself (a signal, or every
+// Output/Checkpoint interval), and a resume continues there bit for bit.
 #include "coupling/loop/stage_record.h"
+#include "coupling/loop/stop_signals.h"
 #include "coupling/loop/wear_increment.h"
 #include "coupling/output/checkpoint.h"
 #include "coupling/output/run_output.h"
@@ -15,6 +18,7 @@
 #include "meshes/stopwatch.h"
 
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -22,9 +26,10 @@
 namespace wear::coupling {
 
 struct RunOptions {
-  bool resume = false;  ///< continue from <output>/checkpoint.h5
-  bool progress = true; ///< live line on a terminal (stderr)
-  int stop_after = 0;   ///< stop after this many stages of this invocation (0: run all)
+  bool resume = false;    ///< continue from <output>/checkpoint.h5
+  bool progress = true;   ///< live line on a terminal (stderr)
+  int stop_after = 0;     ///< stop after this many stages of this invocation (0: run all)
+  bool overwrite = false; ///< replace a run in the output folder (kept until the first checkpoint)
 };
 
 /// What a run accumulates over its stages; rebuilt from the stage records on resume.
@@ -62,8 +67,10 @@ public:
   /// Checks the case and the output folder; nothing runs yet.
   CoupledRun(const CaseParameters& p, std::ostream& log, const RunOptions& options = {});
 
-  /// The whole schedule (or what is left of it when resuming).
-  void run();
+  /// The whole schedule (or what is left of it when resuming). Returns the exit status: 0
+  /// when the schedule (or the stages asked by stop_after) ran, 128 + the signal when a
+  /// signal stopped it (after a checkpoint, so that --resume continues).
+  int run();
 
   const std::vector<StageRecord>& stages() const { return stages_; }
   const dem::WearTester& tester() const { return *tester_; }
@@ -71,24 +78,34 @@ public:
   std::string checkpoint_path() const { return p_.output.directory + "/checkpoint.h5"; }
 
 private:
-  // setup, in coupled_run_setup.cc
-  void setup();
-  void prepare_output_folder() const;
+  // setup, in coupled_run_setup.cc; a resume inside a stage returns the open stage
+  std::optional<OpenStage> setup();
+  /// Returns where a run it replaces (--overwrite) was moved, empty if none.
+  std::string prepare_output_folder() const;
   meshes::SurfaceMesh generate_initial_surface() const;
-  void resume();
+  std::optional<OpenStage> resume();
   void fill_and_settle();
   fem::WornSampleParameters worn_parameters() const;
 
   // one stage
-  StageRecord begin_stage(std::size_t k) const;
-  dem::WallLoads run_dem(StageRecord& r);
+  StageRecord begin_stage(std::size_t k, const std::optional<OpenStage>& open) const;
+  /// The stage's loads; none when a signal stopped the run inside it (then checkpointed).
+  std::optional<dem::WallLoads> run_dem(StageRecord& r, std::optional<OpenStage> open,
+                                        const StopSignals& signals);
   WearIncrement compute_wear(const dem::WallLoads& loads, StageRecord& r);
   StageStress solve_stress(const dem::WallLoads& loads, StageRecord& r);
   GeometryUpdate update_geometry(const WearIncrement& increment, const StageStress& stress,
                                  StageRecord& r);
   void record(StageRecord r, const meshes::FaceField<double>& applied);
   void checkpoint();
+  /// An in-stage checkpoint: the state as it is, the stage's loads so far, nothing restored.
+  void checkpoint_inside(const dem::WallLoads& loads, int revolutions_done,
+                         double dem_seconds) const;
+  Checkpoint capture() const;
   void restore(const Checkpoint& c);
+  /// Says where a signal stopped the run (inside stage r, or after it) and how to go on;
+  /// returns the exit status.
+  int stopped_by(int signal, const StageRecord& r, bool inside) const;
 
   // what the run tells the user
   void print_header() const;

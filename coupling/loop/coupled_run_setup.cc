@@ -1,17 +1,23 @@
 // The coupled run's set-up, checkpoints and messages (the loop itself: coupled_run.cc).
 //
-// Set-up: the resolved parameters into the output folder, the sample generated (with its
-// volume mesh when a stage is staged), the DEM tester around it; then either a resume from
-// checkpoint.h5 (refused when the case differs) or the bed filled and settled, the initial
-// surface written and a first checkpoint. A checkpoint is written and read straight back
-// after every stage, so an uninterrupted run follows the same path as a resumed one.
+// Set-up: the output folder checked (a folder holding a run is refused unless --resume, or
+// --overwrite moves that run aside and deletes it after the new run's first checkpoint), the
+// resolved parameters written, the sample generated (with its volume mesh when a stage is
+// staged), the DEM tester around it; then either a resume from checkpoint.h5 (or the one
+// before it when it does not read; refused when the case differs) or the bed filled and
+// settled, the initial surface written and a first checkpoint. A checkpoint is written and
+// read straight back after every stage, so an uninterrupted run follows the same path as a
+// resumed one. An in-stage checkpoint is only written: the DEM state it holds continues
+// exactly (System::resume_state), so writing it changes nothing.
 #include "coupling/loop/coupled_run.h"
 
 #include "coupling/output/progress_line.h"
 #include "meshes/atomic_file.h"
 #include "meshes/sample_generator.h"
 
+#include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <limits>
 #include <stdexcept>
 
@@ -23,11 +29,24 @@ constexpr double never = std::numeric_limits<double>::infinity();
 meshes::FaceField<double> zero_stress(const meshes::SurfaceMesh& surface) {
   return {"von Mises", "Pa", meshes::Extensivity::intensive, surface};
 }
+
+// A folder holds a run once a run has written its tables or a checkpoint there.
+bool holds_run(const std::string& dir) {
+  for (const char* f : {"stages.csv", "summary.csv", "checkpoint.h5", "checkpoint.previous.h5"})
+    if (std::filesystem::exists(dir + "/" + f))
+      return true;
+  return false;
+}
 } // namespace
 
 CoupledRun::CoupledRun(const CaseParameters& p, std::ostream& log, const RunOptions& options)
     : p_(p), log_(log), options_(options), frame_(p.geometry.sample, p.geometry.placement) {
   validate(p_.coupling, p_.fem);
+  if (!(p_.output.checkpoint_interval >= 0))
+    throw std::invalid_argument("Output/Checkpoint interval: must be 0 (none) or positive [s]");
+  if (options_.resume && options_.overwrite)
+    throw std::invalid_argument("wearsim run: --resume continues the run in the output folder "
+                                "and --overwrite replaces it; give one of them");
   for (const auto& item : parse_schedule(p_.coupling.schedule))
     for (int k = 0; k < item.n_stages; ++k) {
       plan_.push_back(item.scheme);
@@ -48,16 +67,14 @@ const meshes::SurfaceMesh& CoupledRun::sample_surface() const {
   return sample_ ? sample_->surface() : initial_surface_;
 }
 
-void CoupledRun::setup() {
-  prepare_output_folder();
+std::optional<OpenStage> CoupledRun::setup() {
+  const std::string replaced = prepare_output_folder();
   initial_surface_ = generate_initial_surface();
   tester_ = std::make_unique<dem::WearTester>(p_.geometry, p_.dem, p_.wear_law, p_.deformation,
                                               initial_surface_);
   output_ = std::make_unique<RunOutput>(p_.output.directory);
-  if (options_.resume) {
-    resume();
-    return;
-  }
+  if (options_.resume)
+    return resume();
   if (has_staged_)
     sample_ = std::make_unique<fem::WornSample>(p_.output.directory + "/mesh/sample.msh",
                                                 initial_surface_, worn_parameters());
@@ -71,10 +88,37 @@ void CoupledRun::setup() {
   output_->write_tables({}, {}, tester_->evaluation().n_columns(),
                         tester_->evaluation().element_labels());
   checkpoint();
+  if (!replaced.empty()) {
+    std::filesystem::remove_all(replaced);
+    log_ << "the replaced run in '" << replaced << "' is deleted (this run has its first "
+         << "checkpoint)" << std::endl;
+  }
+  return std::nullopt;
 }
 
-void CoupledRun::prepare_output_folder() const {
+std::string CoupledRun::prepare_output_folder() const {
   const std::string& dir = p_.output.directory;
+  std::string aside;
+  if (!options_.resume && holds_run(dir)) {
+    if (!options_.overwrite)
+      throw std::runtime_error(
+          "Output/Directory: '" + dir +
+          "' holds a run (stages.csv or a checkpoint); continue "
+          "it with --resume, replace it with --overwrite, or set another Output/Directory");
+    aside = dir + ".replaced";
+    if (std::filesystem::exists(aside))
+      throw std::runtime_error("--overwrite: '" + aside +
+                               "' already holds a run an earlier "
+                               "--overwrite moved aside and could not delete; look at it and "
+                               "remove it first");
+    std::error_code ec;
+    std::filesystem::rename(dir, aside, ec);
+    if (ec)
+      throw std::runtime_error("--overwrite: cannot move the run in '" + dir + "' to '" + aside +
+                               "' (" + ec.message() + ")");
+    log_ << "the run in '" << dir << "' is moved to '" << aside
+         << "'; it is deleted when this run has written its first checkpoint" << std::endl;
+  }
   try {
     meshes::ensure_directory(dir);
     write_resolved_parameters(p_, dir + "/parameters.prm");
@@ -82,6 +126,7 @@ void CoupledRun::prepare_output_folder() const {
     throw std::runtime_error("Output/Directory: cannot write into '" + dir + "' (" + e.what() +
                              ")");
   }
+  return aside;
 }
 
 // The volume mesh is generated only for a new run with staged stages; a resumed run takes
@@ -102,8 +147,8 @@ meshes::SurfaceMesh CoupledRun::generate_initial_surface() const {
   return generated.surface;
 }
 
-void CoupledRun::resume() {
-  const Checkpoint c = read_checkpoint(checkpoint_path());
+std::optional<OpenStage> CoupledRun::resume() {
+  const Checkpoint c = read_latest_checkpoint(checkpoint_path(), log_);
   if (c.parameters != parameters_text_)
     throw std::runtime_error("--resume: the case differs from the one checkpoint '" +
                              checkpoint_path() +
@@ -111,9 +156,15 @@ void CoupledRun::resume() {
                              "parameters.prm holds it)");
   restore(c);
   output_->reload(stages_);
-  log_ << "resumed after stage " << stages_.size() << " of " << plan_.size() << " ("
-       << tester_->n_revolutions_done() << " revolutions, t = " << tester_->system().time() << " s)"
-       << std::endl;
+  log_ << "resumed after stage " << stages_.size() << " of " << plan_.size();
+  if (c.open_stage)
+    log_ << format(", inside stage %zu at revolution %d, %.1f %% of it", stages_.size() + 1,
+                   tester_->n_revolutions_done() + 1,
+                   100.0 * double(c.open_stage->revolution.steps_done) /
+                       double(tester_->steps_per_revolution()));
+  log_ << " (" << tester_->n_revolutions_done() << " revolutions, t = " << tester_->system().time()
+       << " s)" << std::endl;
+  return c.open_stage;
 }
 
 void CoupledRun::fill_and_settle() {
@@ -132,9 +183,7 @@ void CoupledRun::fill_and_settle() {
        << std::flush;
 }
 
-void CoupledRun::checkpoint() {
-  if (has_reference_)
-    return; // the node-moving method's state is not checkpointed; it runs in one go
+Checkpoint CoupledRun::capture() const {
   Checkpoint c;
   c.stages_done = int(stages_.size());
   c.parameters = parameters_text_;
@@ -149,9 +198,26 @@ void CoupledRun::checkpoint() {
   c.dem_cumulative =
       sample_ ? std::vector<double>(sample_surface().n_faces(), 0) : totals_.dem_wear.values();
   c.stages = stages_;
+  return c;
+}
+
+void CoupledRun::checkpoint() {
+  if (has_reference_)
+    return; // the node-moving method's state is not checkpointed; it runs in one go
+  const Checkpoint c = capture();
   if (p_.coupling.checkpoints)
     write_checkpoint(checkpoint_path(), c);
   restore(c);
+}
+
+void CoupledRun::checkpoint_inside(const dem::WallLoads& loads, int revolutions_done,
+                                   double dem_seconds) const {
+  const auto revolution = tester_->open_revolution();
+  if (!revolution)
+    throw std::logic_error("CoupledRun: an in-stage checkpoint outside a revolution");
+  Checkpoint c = capture();
+  c.open_stage = open_stage(loads, revolutions_done, dem_seconds, *revolution);
+  write_checkpoint(checkpoint_path(), c);
 }
 
 void CoupledRun::restore(const Checkpoint& c) {
@@ -172,7 +238,28 @@ void CoupledRun::restore(const Checkpoint& c) {
   totals_.worn_through = 0;
   for (const auto& s : stages_)
     totals_.worn_through += s.worn_through_volume;
-  tester_->restore(c.dem, c.revolutions_done, c.revolutions);
+  if (c.open_stage)
+    tester_->restore(c.dem, c.revolutions_done, c.revolutions, c.open_stage->revolution);
+  else
+    tester_->restore(c.dem, c.revolutions_done, c.revolutions);
+}
+
+int CoupledRun::stopped_by(int signal, const StageRecord& r, bool inside) const {
+  const bool saved = p_.coupling.checkpoints && !has_reference_;
+  log_ << "stopped by " << StopSignals::name(signal)
+       << format(inside ? " in stage %d of %zu (revolution %d, t = %.6g s); "
+                        : " after stage %d of %zu (revolution %d done, t = %.6g s); ",
+                 r.stage, plan_.size(), tester_->n_revolutions_done() + (inside ? 1 : 0),
+                 tester_->system().time());
+  if (saved)
+    log_ << "checkpoint written to '" << checkpoint_path()
+         << "'; continue with: wearsim run --resume <case.prm>" << std::endl;
+  else
+    log_ << "nothing was saved ("
+         << (has_reference_ ? "the reference scheme is not checkpointed"
+                            : "Coupling/Checkpoints is false")
+         << "); the run must start again" << std::endl;
+  return 128 + signal;
 }
 
 void CoupledRun::print_header() const {
@@ -227,6 +314,12 @@ void CoupledRun::print_end() const {
     log_ << format("  %-12s %10.1f s  %5.1f %%\n", names[k], t[k],
                    total > 0 ? 100 * t[k] / total : 0.0);
   log_ << format("  %-12s %10.1f s\n", "total", total);
+  int n_remeshes = 0, n_first = 0;
+  for (const auto& r : stages_)
+    n_remeshes += r.n_remeshes, n_first += r.n_first_attempt_remeshes;
+  if (n_remeshes > 0)
+    log_ << format("remeshes: %d, %d of them (%.0f %%) at gmsh's first attempt\n", n_remeshes,
+                   n_first, 100.0 * n_first / n_remeshes);
   if (totals_.worn_through > 0)
     log_ << format("worn through: %.4g mm^3 of the %.4g mm^3 asked was not removed\n",
                    totals_.worn_through * 1e9, totals_.cumulative_applied * 1e9);

@@ -23,7 +23,8 @@ struct StageRecord {
   double max_depth_fraction = 0;     ///< [-] of that face's longest edge (largest over faces)
   double mean_stress_factor = 1;     ///< [-] area-weighted stress-informed factor on wear faces
   int increments = 0, n_remeshes = 0, total_remeshes = 0;
-  double spread_volume = 0; ///< [m^3] moved between faces where the recession would fold
+  int n_first_attempt_remeshes = 0; ///< remeshes of the stage gmsh's first attempt made
+  double spread_volume = 0;         ///< [m^3] moved between faces where the recession would fold
   /// [m^3] asked of faces worn through to the clamped bottom, not removed
   /// (geometry_volume_change = applied_volume - worn_through_volume)
   double worn_through_volume = 0;

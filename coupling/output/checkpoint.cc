@@ -10,11 +10,20 @@
 //   /sample/...     the worn sample: mesh arrays, surface (vertices, triangles, labels,
 //                   attribute revision), removed_volume, wear_depth
 //   /face_von_mises, /dem/cumulative_removed   per face of the current sample surface
+//   in-stage checkpoints only (attribute has_open_stage = 1 on /):
+//   /dem/continuation/...  the DEM state's continuation part (reference positions, wall
+//                   candidates, cost estimate, the threads' wear window; attribute n_threads)
+//   /open_stage/... the stage's summed loads per face and its open revolution (steps done,
+//                   the evaluation's samples; column forces as n_columns x n_samples)
+// The checkpoint a write replaces is kept as checkpoint.previous.h5 (a hard link taken
+// before the rename), and a resume falls back to it when the latest one does not read.
 // Every value is stored in its binary form, so a read gives back the same bits. The file is
 // written to a temporary name and renamed over the previous one only when complete.
 #include "coupling/output/checkpoint.h"
 
 #include "coupling/output/hdf5_file.h"
+
+#include <filesystem>
 
 #include <stdexcept>
 
@@ -54,6 +63,7 @@ void visit(StageRecord& r, V& v) {
   v("increments", r.increments);
   v("remeshes", r.n_remeshes);
   v("total_remeshes", r.total_remeshes);
+  v("first_attempt_remeshes", r.n_first_attempt_remeshes);
   v("spread_volume_m3", r.spread_volume);
   v("worn_through_volume_m3", r.worn_through_volume);
   v("worn_through_faces", r.n_worn_through);
@@ -230,6 +240,109 @@ void write_vec3(Hdf5File& h5, const std::string& name, const std::vector<meshes:
   h5.write(name, flat(v), {v.size(), 3});
 }
 
+void write_doubles(Hdf5File& h5, const std::string& name, const std::vector<double>& v) {
+  h5.write(name, v, {v.size()});
+}
+
+void write_continuation(Hdf5File& h5, const dem::SystemState& d) {
+  const std::string g = "/dem/continuation";
+  write_vec3(h5, g + "/reference_position", d.reference_position);
+  h5.write(g + "/wall_candidate_offset", wide(d.wall_candidate_offset),
+           {d.wall_candidate_offset.size()});
+  h5.write(g + "/wall_candidate", wide(d.wall_candidate), {d.wall_candidate.size()});
+  write_doubles(h5, g + "/particle_cost", d.particle_cost);
+  write_doubles(h5, g + "/wear_window", d.wear_window);
+  h5.attribute(g + "/particle_cost", "n_threads", double(d.n_threads));
+}
+
+void read_continuation(const Hdf5Reader& h5, dem::SystemState& d) {
+  const std::string g = "/dem/continuation";
+  d.reference_position = vec3s(h5.doubles(g + "/reference_position"), "reference_position");
+  d.wall_candidate_offset = narrow<std::uint32_t>(h5.int64s(g + "/wall_candidate_offset"));
+  d.wall_candidate = narrow<std::uint32_t>(h5.int64s(g + "/wall_candidate"));
+  d.particle_cost = h5.doubles(g + "/particle_cost");
+  d.wear_window = h5.doubles(g + "/wear_window");
+  d.n_threads = int(h5.attribute(g + "/particle_cost", "n_threads"));
+}
+
+// The evaluation's samples: scalars in one dataset, in this order.
+void write_samples(Hdf5File& h5, const std::string& g, const dem::RevolutionSamples& s) {
+  write_doubles(
+      h5, g + "/scalars",
+      {s.start_time, s.last_time, s.bottom_n, s.bottom_v, s.bottom_v2, s.bottom_w, s.bottom_w2});
+  write_doubles(h5, g + "/last_removed", s.last_removed);
+  write_doubles(h5, g + "/last_impulse", s.last_impulse);
+  write_doubles(h5, g + "/force", s.force);
+  write_doubles(h5, g + "/speed", s.speed);
+  write_doubles(h5, g + "/height", s.height);
+  write_doubles(h5, g + "/rate", s.rate);
+  write_doubles(h5, g + "/bottom_count", s.bottom_count);
+  std::vector<double> columns;
+  for (const auto& c : s.column_force)
+    columns.insert(columns.end(), c.begin(), c.end());
+  h5.write(g + "/column_force", columns, {s.column_force.size(), s.force.size()});
+}
+
+dem::RevolutionSamples read_samples(const Hdf5Reader& h5, const std::string& g) {
+  dem::RevolutionSamples s;
+  const auto x = h5.doubles(g + "/scalars");
+  if (x.size() != 7)
+    throw std::runtime_error("'" + g + "/scalars' does not hold 7 values");
+  s.start_time = x[0], s.last_time = x[1], s.bottom_n = x[2], s.bottom_v = x[3];
+  s.bottom_v2 = x[4], s.bottom_w = x[5], s.bottom_w2 = x[6];
+  s.last_removed = h5.doubles(g + "/last_removed");
+  s.last_impulse = h5.doubles(g + "/last_impulse");
+  s.force = h5.doubles(g + "/force");
+  s.speed = h5.doubles(g + "/speed");
+  s.height = h5.doubles(g + "/height");
+  s.rate = h5.doubles(g + "/rate");
+  s.bottom_count = h5.doubles(g + "/bottom_count");
+  const auto dims = h5.dims(g + "/column_force");
+  const auto columns = h5.doubles(g + "/column_force");
+  if (dims.size() != 2 || dims[1] != s.force.size())
+    throw std::runtime_error("'" + g + "/column_force' is not n_columns x n_samples");
+  s.column_force.resize(dims[0]);
+  for (std::size_t c = 0; c < dims[0]; ++c)
+    s.column_force[c].assign(columns.begin() + std::ptrdiff_t(c * dims[1]),
+                             columns.begin() + std::ptrdiff_t((c + 1) * dims[1]));
+  return s;
+}
+
+void write_open_stage(Hdf5File& h5, const OpenStage& o) {
+  write_vec3(h5, "/open_stage/impulse", o.impulse);
+  write_doubles(h5, "/open_stage/normal_impulse", o.normal_impulse);
+  write_doubles(h5, "/open_stage/archard", o.archard);
+  write_doubles(h5, "/open_stage/sliding_work", o.sliding_work);
+  write_doubles(h5, "/open_stage/contact_steps", o.contact_steps);
+  write_doubles(h5, "/open_stage/wear_volume", o.wear_volume);
+  write_doubles(h5, "/open_stage/progress",
+                {double(o.revolutions_done), o.dem_seconds, o.duration,
+                 double(o.revolution.steps_done), o.revolution.wall_seconds});
+  write_samples(h5, "/open_stage/samples", o.revolution.samples);
+}
+
+OpenStage read_open_stage(const Hdf5Reader& h5) {
+  OpenStage o;
+  o.impulse = vec3s(h5.doubles("/open_stage/impulse"), "open_stage/impulse");
+  o.normal_impulse = h5.doubles("/open_stage/normal_impulse");
+  o.archard = h5.doubles("/open_stage/archard");
+  o.sliding_work = h5.doubles("/open_stage/sliding_work");
+  o.contact_steps = h5.doubles("/open_stage/contact_steps");
+  o.wear_volume = h5.doubles("/open_stage/wear_volume");
+  const std::size_t nf = o.impulse.size();
+  for (const auto* v :
+       {&o.normal_impulse, &o.archard, &o.sliding_work, &o.contact_steps, &o.wear_volume})
+    if (v->size() != nf)
+      throw std::runtime_error("the open stage's loads are of different lengths");
+  const auto x = h5.doubles("/open_stage/progress");
+  if (x.size() != 5 || !(x[0] >= 0) || !(x[3] >= 0))
+    throw std::runtime_error("'/open_stage/progress' does not hold the stage's progress");
+  o.revolutions_done = int(x[0]), o.dem_seconds = x[1], o.duration = x[2];
+  o.revolution.steps_done = std::uint64_t(x[3]), o.revolution.wall_seconds = x[4];
+  o.revolution.samples = read_samples(h5, "/open_stage/samples");
+  return o;
+}
+
 } // namespace
 
 std::vector<double> pack(const dem::RevolutionRecord& r) {
@@ -308,7 +421,66 @@ void write_checkpoint(const std::string& path, const Checkpoint& c) {
   h5.attribute("/", "revolutions_done", double(c.revolutions_done));
   h5.attribute("/", "has_sample", c.has_sample ? 1.0 : 0.0);
   h5.attribute("/", "parameters", c.parameters);
-  h5.commit();
+  h5.attribute("/", "has_open_stage", c.open_stage ? 1.0 : 0.0);
+  if (c.open_stage) {
+    write_continuation(h5, c.dem);
+    write_open_stage(h5, *c.open_stage);
+  }
+  h5.commit(previous_checkpoint_path(path));
+}
+
+OpenStage open_stage(const dem::WallLoads& loads, int revolutions_done, double dem_seconds,
+                     const dem::OpenRevolution& revolution) {
+  OpenStage o;
+  o.revolutions_done = revolutions_done;
+  o.dem_seconds = dem_seconds;
+  o.impulse = loads.impulse.values();
+  o.normal_impulse = loads.normal_impulse.values();
+  o.archard = loads.archard.values();
+  o.sliding_work = loads.sliding_work.values();
+  o.contact_steps = loads.contact_steps.values();
+  o.wear_volume = loads.wear_volume.values();
+  o.duration = loads.duration;
+  o.revolution = revolution;
+  return o;
+}
+
+dem::WallLoads loads_of(const OpenStage& o, const meshes::SurfaceMesh& surface) {
+  if (o.impulse.size() != surface.n_faces())
+    throw std::runtime_error("checkpoint: the open stage's loads are on " +
+                             std::to_string(o.impulse.size()) + " faces, the sample surface has " +
+                             std::to_string(surface.n_faces()));
+  dem::WallLoads l = dem::WallLoads::zero(surface);
+  l.impulse.values() = o.impulse;
+  l.normal_impulse.values() = o.normal_impulse;
+  l.archard.values() = o.archard;
+  l.sliding_work.values() = o.sliding_work;
+  l.contact_steps.values() = o.contact_steps;
+  l.wear_volume.values() = o.wear_volume;
+  l.duration = o.duration;
+  return l;
+}
+
+std::string previous_checkpoint_path(const std::string& path) {
+  const std::string ext = ".h5";
+  const bool h5 =
+      path.size() > ext.size() && path.compare(path.size() - ext.size(), ext.size(), ext) == 0;
+  return (h5 ? path.substr(0, path.size() - ext.size()) : path) + ".previous.h5";
+}
+
+Checkpoint read_latest_checkpoint(const std::string& path, std::ostream& warnings) {
+  const std::string previous = previous_checkpoint_path(path);
+  try {
+    return read_checkpoint(path);
+  } catch (const std::exception& e) {
+    if (!std::filesystem::exists(previous))
+      throw;
+    Checkpoint c = read_checkpoint(previous);
+    warnings << "warning: " << e.what() << "; resuming from the checkpoint before it, '" << previous
+             << "' (after stage " << c.stages_done
+             << (c.open_stage ? ", inside the next stage" : "") << ")" << std::endl;
+    return c;
+  }
 }
 
 Checkpoint read_checkpoint(const std::string& path) {
@@ -367,6 +539,10 @@ Checkpoint read_checkpoint(const std::string& path) {
       s.n_remeshes = int(h5.attribute("/sample", "n_remeshes"));
       if (s.removed_volume.size() != m.n_faces() || s.wear_depth.size() != m.n_faces())
         throw std::runtime_error("sample fields do not match its surface");
+    }
+    if (h5.has_attribute("/", "has_open_stage") && h5.attribute("/", "has_open_stage") != 0) {
+      read_continuation(h5, d);
+      c.open_stage = read_open_stage(h5);
     }
     if (int(c.stages.size()) != c.stages_done || int(c.revolutions.size()) != c.revolutions_done)
       throw std::runtime_error("the record counts do not match the stage and revolution counts");

@@ -91,7 +91,7 @@ void Hdf5File::attribute(const std::string& object, const std::string& name,
   check(status >= 0, path_, "write attribute '" + name + "'");
 }
 
-void Hdf5File::commit() {
+void Hdf5File::commit(const std::string& previous) {
   const herr_t status = H5Fclose(file_);
   file_ = -1;
   if (status < 0) {
@@ -99,6 +99,21 @@ void Hdf5File::commit() {
     check(false, path_, "close it");
   }
   std::error_code ec;
+  if (!previous.empty() && std::filesystem::exists(path_)) {
+    const std::string kept = previous + ".tmp." + std::to_string(getpid());
+    std::filesystem::remove(kept, ec);
+    std::filesystem::create_hard_link(path_, kept, ec);
+    if (ec)
+      std::filesystem::copy_file(path_, kept, std::filesystem::copy_options::overwrite_existing,
+                                 ec);
+    if (!ec)
+      std::filesystem::rename(kept, previous, ec);
+    if (ec) {
+      std::remove(tmp_.c_str());
+      std::remove(kept.c_str());
+      check(false, previous, "keep the file it replaces there (" + ec.message() + ")");
+    }
+  }
   std::filesystem::rename(tmp_, path_, ec);
   if (ec) {
     std::remove(tmp_.c_str());
@@ -176,6 +191,10 @@ double Hdf5Reader::attribute(const std::string& object, const std::string& name)
   H5Aclose(a);
   check(status >= 0, path_, "read the attribute '" + name + "' of '" + object + "'");
   return v;
+}
+
+bool Hdf5Reader::has_attribute(const std::string& object, const std::string& name) const {
+  return H5Aexists_by_name(file_, object.c_str(), name.c_str(), H5P_DEFAULT) > 0;
 }
 
 std::string Hdf5Reader::text_attribute(const std::string& object, const std::string& name) const {

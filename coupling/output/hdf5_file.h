@@ -28,8 +28,10 @@ public:
   void attribute(const std::string& object, const std::string& name, double value);
   void attribute(const std::string& object, const std::string& name, const std::string& value);
 
-  /// Closes the file and renames it into place. Throws naming the path on failure.
-  void commit();
+  /// Closes the file and renames it into place. Throws naming the path on failure. With
+  /// `previous`, the file it replaces is first kept under that name (a hard link, or a copy
+  /// where links are not possible), so a complete old and new file exist at every moment.
+  void commit(const std::string& previous = "");
 
 private:
   void write_raw(const std::string& name, hid_t type, const void* data,
@@ -52,6 +54,7 @@ public:
   std::vector<std::int64_t> int64s(const std::string& name) const;
   std::vector<int> ints(const std::string& name) const;
   double attribute(const std::string& object, const std::string& name) const;
+  bool has_attribute(const std::string& object, const std::string& name) const;
   std::string text_attribute(const std::string& object, const std::string& name) const;
   const std::string& path() const { return path_; }
 

@@ -2,16 +2,20 @@
 //
 // Values are in SI units (m, deg for angles as named). ParameterHandler refuses undeclared
 // entries, which makes misspelled names errors; validate() in each module then checks
-// physical sense and names the parameter. The resolved file is produced by declaring,
-// setting every value from the structs and printing in PRM style, so it always round-trips.
+// physical sense and names the parameter, and check_consistency (case_consistency.h) the
+// combinations that would fail later, before anything is written. The resolved file is
+// produced by declaring, setting every value from the structs and printing in PRM style, so
+// it always round-trips.
 #include "coupling/parameters/case_parameters.h"
 
+#include "coupling/parameters/case_consistency.h"
 #include "dem/tester/wear_tester.h"
 #include "meshes/atomic_file.h"
 
 #include <deal.II/base/utilities.h>
 
 #include <filesystem>
+#include <iostream>
 #include <sstream>
 #include <stdexcept>
 #include <type_traits>
@@ -180,7 +184,7 @@ void declare_parameters(ParameterHandler& prm) {
   visit(defaults, declare);
 }
 
-CaseParameters read_case(const std::string& path) {
+CaseParameters read_case(const std::string& path, std::ostream& warnings) {
   if (!std::filesystem::exists(path))
     throw std::runtime_error("case file '" + path + "' does not exist");
   ParameterHandler prm;
@@ -194,15 +198,23 @@ CaseParameters read_case(const std::string& path) {
   p.case_file = path;
   Parse parse{prm};
   visit(p, parse);
+  std::vector<std::string> notes;
   try {
     meshes::validate(p.geometry);
     dem::validate(p.dem);
     dem::make_wear_law(p.wear_law);
     validate(p.coupling, p.fem);
+    notes = check_consistency(p);
   } catch (const std::invalid_argument& e) {
     throw std::runtime_error("case file '" + path + "': " + e.what());
   }
+  for (const auto& note : notes)
+    warnings << "warning: case file '" << path << "': " << note << "\n";
   return p;
+}
+
+CaseParameters read_case(const std::string& path) {
+  return read_case(path, std::cerr);
 }
 
 std::string resolved_parameters(const CaseParameters& p) {

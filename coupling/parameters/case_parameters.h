@@ -12,12 +12,14 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <ostream>
 #include <string>
 
 namespace wear::coupling {
 
 struct OutputParameters {
-  std::string directory = "output"; ///< results folder, relative to the working directory
+  std::string directory = "output";  ///< results folder, relative to the working directory
+  double checkpoint_interval = 1800; ///< [s] wall time between in-stage checkpoints (0: none)
 };
 
 /// The Output subsection.
@@ -25,6 +27,11 @@ template <typename Visitor>
 void visit_parameters(OutputParameters& o, Visitor& v) {
   v.enter("Output");
   v.text("Directory", o.directory, "Results folder; created if missing.");
+  v.real("Checkpoint interval", o.checkpoint_interval,
+         "[s] Wall time between checkpoints inside a stage (the DEM state, the stage's loads "
+         "so far and its open revolution), on top of the checkpoint after every stage and the "
+         "one SIGINT, SIGTERM or SIGUSR1 asks for; 0 writes none. A stage is one or more "
+         "revolutions, hours at the real particle size.");
   v.leave();
 }
 
@@ -42,8 +49,12 @@ struct CaseParameters {
 /// Declares every subsection and parameter with its default and documentation.
 void declare_parameters(dealii::ParameterHandler& prm);
 
-/// Reads a case file. Unknown or misspelled parameters, malformed values and physically
-/// impossible values are errors naming the parameter and the file.
+/// Reads a case file. Unknown or misspelled parameters, malformed values, physically
+/// impossible values and combinations that would fail later (check_consistency,
+/// case_consistency.h) are errors naming the parameters and the file; the warnings of
+/// check_consistency go to `warnings`, each on a line "warning: case file '<path>': ...".
+CaseParameters read_case(const std::string& path, std::ostream& warnings);
+/// read_case with the warnings on std::cerr.
 CaseParameters read_case(const std::string& path);
 
 /// The fully resolved parameters (every value, defaults included) in PRM form.

@@ -43,7 +43,7 @@ struct CouplingParameters {
   std::string schedule = "2 staged";   ///< "N scheme, N scheme, ..." in order
   int revolutions_per_stage = 1;       ///< DEM revolutions per stage
   double amplification = 1;            ///< [-] declared factor on the removed volume
-  double max_depth_fraction = 0.5;     ///< [-] of the longest edge at a vertex, per stage
+  double max_depth_fraction = 10;      ///< [-] of the longest edge at a vertex, per stage
   bool adaptive_amplification = false; ///< lower a stage's amplification to meet the cap
   double min_amplification = 1;        ///< [-] below it an adaptive stage stops the run
   double push_tolerance = 0.01;        ///< [-] of the radius: overlaps above it are pushed out
@@ -90,9 +90,12 @@ void visit_parameters(CouplingParameters& k, Visitor& v) {
          "Deformation/Amplification for the reference scheme.");
   v.real("Maximum depth fraction", k.max_depth_fraction,
          "[-] Largest recession one stage may ask at a surface vertex (removed volume over "
-         "area of the wear faces around it), as a fraction of the longest edge there; a "
-         "stage asking for more stops the run (lower the amplification or the revolutions "
-         "per stage), or, with Adaptive amplification, runs at a lower amplification.");
+         "area of the wear faces around it), as a fraction of the longest edge there, at most "
+         "10 (the wear stage splits itself where the surface would fold); a stage asking for "
+         "more stops the run (lower the amplification or the revolutions per stage), or, with "
+         "Adaptive amplification, runs at a lower amplification. The default 10 lets the "
+         "reference sample run at amplification 1: its curvature-refined element tips ask up "
+         "to 7 edge lengths per revolution.");
   v.boolean("Adaptive amplification", k.adaptive_amplification,
             "A staged stage that would ask more than Maximum depth fraction at a vertex "
             "runs at the amplification that brings that vertex to the cap, A_stage = A x "

@@ -46,8 +46,10 @@ struct WearIntegrals {
 
 /// Everything that decides how a set-up System continues: the real particles in the engine's
 /// order, the pair list with its tangential histories, the wall-contact slots and the clock.
-/// Exported after a stage and imported into a System set up with the same particles, walls
-/// and thread count, it continues the run bit for bit (checkpoints).
+/// Imported into a System set up with the same particles, walls and thread count it continues
+/// the run bit for bit (checkpoints): import_state() through a list rebuild (the coupler does
+/// that at every stage boundary, resumed or not), resume_state() exactly as if the run had
+/// never stopped, at any step (in-stage checkpoints), from the continuation part below.
 struct SystemState {
   std::vector<Vec3> position, velocity, angular_velocity; ///< [m], [m/s], [rad/s]
   std::vector<Vec3> force, torque;                        ///< [N], [N m] of the last step
@@ -62,6 +64,14 @@ struct SystemState {
   std::vector<std::int32_t> slot_wall;       ///< wall of each slot (-1: free)
   double time = 0;                           ///< [s]
   std::uint64_t n_steps = 0, n_rebuilds = 0;
+  // Continuation: what the last rebuild decided and the open window, for resume_state().
+  std::vector<Vec3> reference_position; ///< [m] positions at the last rebuild (its trigger)
+  std::vector<std::uint32_t> wall_candidate_offset, wall_candidate; ///< per particle
+  std::vector<double> particle_cost; ///< [-] the threads' split of the force evaluation
+  /// The wear window's accumulators as the threads hold them: per thread, per wearing wall
+  /// in wall order, 8 values per face and 8 totals ([N s] x 3, [N s], [N m], [J], [-], 0).
+  std::vector<double> wear_window;
+  int n_threads = 0;
 };
 
 struct Energy {
@@ -124,6 +134,10 @@ public:
   /// walls and thread count, after setup(); rebuilds the lists from it. Forces are taken as
   /// stored, not recomputed, so tangential histories are not advanced twice.
   void import_state(const SystemState& state);
+  /// Takes over a state exported between two steps exactly as it was: lists, histories, wall
+  /// slots, thread split and the open wear window; nothing is rebuilt. The run then continues
+  /// as if it had never stopped, bit for bit (same thread count, which is checked).
+  void resume_state(const SystemState& state);
 
   /// Window integrals of a wearing wall (summed over threads in a fixed order).
   WearIntegrals wear_integrals(int wall) const;
@@ -187,6 +201,12 @@ private:
   void check_particles_or_throw(const char* stage);
   /// Throws std::invalid_argument naming what does not fit when state s cannot be imported.
   void check_importable(const SystemState& s) const;
+  /// The same for the continuation part that resume_state() takes over.
+  void check_resumable(const SystemState& s) const;
+  /// The real particles' arrays and the clock from s (both imports).
+  void take_particles(const SystemState& s);
+  /// Ghost slots of ghost_owner_ with their owners' properties and current state.
+  void fill_ghost_slots();
 
   std::vector<MeshWall> walls_;
   std::vector<ContactParameters> contact_;

@@ -204,6 +204,12 @@ void System::make_ghosts() {
         ghost_owner_.push_back(i);
     }
   }
+  fill_ghost_slots();
+}
+
+void System::fill_ghost_slots() {
+  auto& p = particles;
+  const std::size_t n = p.n_real;
   p.resize_ghosts(ghost_owner_.size());
   for (std::size_t g = 0; g < ghost_owner_.size(); ++g) {
     const auto o = ghost_owner_[g];

@@ -6,13 +6,21 @@
 // decides when the arrays are next sorted). What is not kept is rebuilt: ghosts, pair
 // constants, wall candidates, reference positions.
 //
-// Import goes through rebuild(), which carries the histories over by stable id exactly as a
-// rebuild inside the step loop does. A coupled run therefore passes every stage boundary
+// import_state() goes through rebuild(), which carries the histories over by stable id exactly
+// as a rebuild inside the step loop does. A coupled run therefore passes every stage boundary
 // through export + import, resumed or not, and a resumed run repeats the uninterrupted one
 // bit for bit (same thread count). Forces are restored, not recomputed: computing them again
 // would advance the tangential histories a second time.
+//
+// resume_state() continues at any step, where an extra rebuild would change the run (the
+// wrap rotates histories there and back, the pair order and the threads' split follow the
+// positions, the next rebuild's trigger moves). So the state also carries what the last
+// rebuild decided (reference positions, wall candidates, the cost estimate behind the
+// threads' split) and the open wear window as the threads hold it; nothing is rebuilt, and
+// only pure functions of those (ghost slots from their owners, the split) are recomputed.
 #include "dem/engine/system.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -50,6 +58,14 @@ SystemState System::export_state() const {
   s.time = time_;
   s.n_steps = n_steps_;
   s.n_rebuilds = n_rebuilds_;
+  s.reference_position = reference_position_;
+  s.wall_candidate_offset = wall_candidate_offset_;
+  s.wall_candidate = wall_candidate_;
+  s.particle_cost = particle_cost_;
+  for (const auto& thread : wear_acc_)
+    for (const auto& wall : thread)
+      s.wear_window.insert(s.wear_window.end(), wall.begin(), wall.end());
+  s.n_threads = n_threads_;
   return s;
 }
 
@@ -87,10 +103,34 @@ void System::check_importable(const SystemState& s) const {
     require(w >= -1 && w < n_walls(), "a wall slot refers to a missing wall");
 }
 
-void System::import_state(const SystemState& s) {
-  if (!set_up_)
-    throw std::logic_error("System::import_state() before setup()");
-  check_importable(s);
+void System::check_resumable(const SystemState& s) const {
+  const auto require = [](bool ok, const std::string& what) {
+    if (!ok)
+      throw std::invalid_argument("DEM state: " + what);
+  };
+  const std::size_t n = s.position.size();
+  require(s.n_threads == n_threads_, "was written with " + std::to_string(s.n_threads) +
+                                         " threads; this run has " + std::to_string(n_threads_) +
+                                         " (a stage continues bit for bit only with the same "
+                                         "thread count: set DEM/Threads)");
+  require(s.reference_position.size() == n && s.particle_cost.size() == n &&
+              s.wall_candidate_offset.size() == n + 1,
+          "continuation arrays do not match the particles");
+  require(s.wall_candidate_offset[0] == 0 &&
+              std::is_sorted(s.wall_candidate_offset.begin(), s.wall_candidate_offset.end()) &&
+              s.wall_candidate_offset[n] == s.wall_candidate.size(),
+          "wall-candidate offsets do not fit the candidates");
+  for (const auto c : s.wall_candidate)
+    require(int(c >> 24) < n_walls() && (c & 0xffffffu) < walls_[c >> 24].n_faces(),
+            "a wall candidate refers to a missing face");
+  std::size_t window = 0;
+  for (const auto& thread : wear_acc_)
+    for (const auto& wall : thread)
+      window += wall.size();
+  require(s.wear_window.size() == window, "the wear window does not match the walls");
+}
+
+void System::take_particles(const SystemState& s) {
   auto& p = particles;
   p.resize_ghosts(0);
   p.position = s.position;
@@ -103,7 +143,6 @@ void System::import_state(const SystemState& s) {
   p.inertia = s.inertia;
   p.material = s.material;
   p.id = s.id;
-  p.resize_ghosts(s.ghost_owner.size());
   ghost_owner_ = s.ghost_owner;
   neighbors_.pair_i = s.pair_i;
   neighbors_.pair_j = s.pair_j;
@@ -115,8 +154,36 @@ void System::import_state(const SystemState& s) {
   time_ = s.time;
   n_steps_ = s.n_steps;
   n_rebuilds_ = s.n_rebuilds;
+}
+
+void System::import_state(const SystemState& s) {
+  if (!set_up_)
+    throw std::logic_error("System::import_state() before setup()");
+  check_importable(s);
+  take_particles(s);
+  particles.resize_ghosts(s.ghost_owner.size());
   reset_wear_integrals();
   rebuild();
+}
+
+void System::resume_state(const SystemState& s) {
+  if (!set_up_)
+    throw std::logic_error("System::resume_state() before setup()");
+  check_importable(s);
+  check_resumable(s);
+  take_particles(s);
+  fill_ghost_slots();
+  wall_candidate_offset_ = s.wall_candidate_offset;
+  wall_candidate_ = s.wall_candidate;
+  particle_cost_ = s.particle_cost;
+  split_ownership();
+  reference_position_ = s.reference_position;
+  std::size_t at = 0;
+  for (auto& thread : wear_acc_)
+    for (auto& wall : thread) {
+      std::copy_n(s.wear_window.begin() + std::ptrdiff_t(at), wall.size(), wall.begin());
+      at += wall.size();
+    }
 }
 
 } // namespace wear::dem

@@ -166,47 +166,56 @@ double TesterEvaluation::surface_height(double x, double y) const {
 }
 
 void TesterEvaluation::begin_revolution(double time) {
-  revolution_start_ = last_time_ = time;
-  last_removed_.clear();
-  last_impulse_.clear();
-  s_force_.clear();
-  s_speed_.clear();
-  s_height_.clear();
-  s_rate_.clear();
-  s_bottom_count_.clear();
-  s_column_force_.assign(n_columns_, {});
-  bottom_n_ = bottom_v_ = bottom_v2_ = bottom_w_ = bottom_w2_ = 0;
+  open_ = RevolutionSamples{};
+  open_.start_time = open_.last_time = time;
+  open_.column_force.assign(n_columns_, {});
+}
+
+void TesterEvaluation::resume_samples(const RevolutionSamples& samples) {
+  const std::size_t n = samples.force.size();
+  const bool fits = samples.column_force.size() == std::size_t(n_columns_) &&
+                    samples.speed.size() == n && samples.height.size() == n &&
+                    samples.rate.size() == n && samples.bottom_count.size() == n &&
+                    samples.last_removed.size() == samples.last_impulse.size() &&
+                    (samples.last_removed.empty() || samples.last_removed.size() == wears_.size());
+  for (const auto& c : samples.column_force)
+    if (c.size() != n)
+      throw std::invalid_argument("evaluation samples: a column's samples do not match the others");
+  if (!fits)
+    throw std::invalid_argument("evaluation samples do not match the sample surface's columns "
+                                "and faces");
+  open_ = samples;
 }
 
 void TesterEvaluation::sample(const Particles& p, const meshes::SurfaceMesh& placed, double time,
                               const std::vector<double>& removed,
                               const std::vector<double>& normal_impulse) {
-  const double dt = time - last_time_;
+  const double dt = time - open_.last_time;
   if (!(dt > 0))
     return;
   update_height_map(placed);
   const std::size_t nf = removed.size();
-  if (last_removed_.empty()) {
-    last_removed_.assign(nf, 0);
-    last_impulse_.assign(nf, 0);
+  if (open_.last_removed.empty()) {
+    open_.last_removed.assign(nf, 0);
+    open_.last_impulse.assign(nf, 0);
   }
   double volume = 0, force = 0;
   std::vector<double> column_force(n_columns_, 0);
   for (std::size_t f = 0; f < nf; ++f) {
     if (!wears_[f])
       continue;
-    const double di = normal_impulse[f] - last_impulse_[f];
-    volume += removed[f] - last_removed_[f];
+    const double di = normal_impulse[f] - open_.last_impulse[f];
+    volume += removed[f] - open_.last_removed[f];
     force += di;
     column_force[face_column_[f] - 1] += di;
   }
-  last_removed_ = removed;
-  last_impulse_ = normal_impulse;
-  last_time_ = time;
-  s_force_.push_back(force / dt);
-  s_rate_.push_back(volume / dt);
+  open_.last_removed = removed;
+  open_.last_impulse = normal_impulse;
+  open_.last_time = time;
+  open_.force.push_back(force / dt);
+  open_.rate.push_back(volume / dt);
   for (int c = 0; c < n_columns_; ++c)
-    s_column_force_[c].push_back(column_force[c] / dt);
+    open_.column_force[c].push_back(column_force[c] / dt);
 
   const double L = geometry_.length, W = geometry_.width;
   double speed = 0, n_over = 0, n_bottom = 0;
@@ -223,15 +232,15 @@ void TesterEvaluation::sample(const Particles& p, const meshes::SurfaceMesh& pla
     if (gap < layer_diameter_) {
       const double w = meshes::norm(p.angular_velocity[i]);
       n_bottom += 1;
-      bottom_v_ += v;
-      bottom_v2_ += v * v;
-      bottom_w_ += w;
-      bottom_w2_ += w * w;
+      open_.bottom_v += v;
+      open_.bottom_v2 += v * v;
+      open_.bottom_w += w;
+      open_.bottom_w2 += w * w;
     }
   }
-  bottom_n_ += n_bottom;
-  s_bottom_count_.push_back(n_bottom);
-  s_speed_.push_back(n_over > 0 ? speed / n_over : 0);
+  open_.bottom_n += n_bottom;
+  open_.bottom_count.push_back(n_bottom);
+  open_.speed.push_back(n_over > 0 ? speed / n_over : 0);
   const auto per_layer =
       std::max<std::size_t>(1, std::size_t(L * W / (0.866 * layer_diameter_ * layer_diameter_)));
   const std::size_t m = std::min(per_layer, tops.size());
@@ -239,7 +248,7 @@ void TesterEvaluation::sample(const Particles& p, const meshes::SurfaceMesh& pla
   double top = 0;
   for (std::size_t k = 0; k < m; ++k)
     top += tops[k];
-  s_height_.push_back(m > 0 ? top / double(m) - geometry_.thickness : 0);
+  open_.height.push_back(m > 0 ? top / double(m) - geometry_.thickness : 0);
 }
 
 RevolutionRecord& TesterEvaluation::end_revolution(double time, const std::vector<double>& removed,
@@ -269,23 +278,23 @@ RevolutionRecord& TesterEvaluation::end_revolution(double time, const std::vecto
       sum += v;
     r.mean_element_increment = sum / double(element_labels_.size());
   }
-  r.normal_force = statistic(s_force_);
+  r.normal_force = statistic(open_.force);
   for (int c = 0; c < n_columns_; ++c)
-    r.column_normal_force.push_back(statistic(s_column_force_[c]));
-  if (bottom_n_ > 0) {
+    r.column_normal_force.push_back(statistic(open_.column_force[c]));
+  if (open_.bottom_n > 0) {
     const auto pooled = [&](double s, double s2) {
       Statistic st;
-      st.mean = s / bottom_n_;
-      st.std = std::sqrt(std::max(0.0, s2 / bottom_n_ - st.mean * st.mean));
+      st.mean = s / open_.bottom_n;
+      st.std = std::sqrt(std::max(0.0, s2 / open_.bottom_n - st.mean * st.mean));
       return st;
     };
-    r.bottom_speed = pooled(bottom_v_, bottom_v2_);
-    r.bottom_spin = pooled(bottom_w_, bottom_w2_);
+    r.bottom_speed = pooled(open_.bottom_v, open_.bottom_v2);
+    r.bottom_spin = pooled(open_.bottom_w, open_.bottom_w2);
   }
-  r.bottom_count = statistic(s_bottom_count_).mean;
-  r.speed_over_sample = statistic(s_speed_);
-  r.bed_height = statistic(s_height_);
-  r.wear_rate = statistic(s_rate_);
+  r.bottom_count = statistic(open_.bottom_count).mean;
+  r.speed_over_sample = statistic(open_.speed);
+  r.bed_height = statistic(open_.height);
+  r.wear_rate = statistic(open_.rate);
   r.steady = r.speed_over_sample.cv() < steady_threshold_ &&
              r.bed_height.cv() < steady_threshold_ && r.wear_rate.cv() < steady_threshold_;
   r.steady_revolution = history_.empty() ? 0 : history_.back().steady_revolution;

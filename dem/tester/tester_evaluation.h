@@ -62,6 +62,21 @@ struct RevolutionRecord {
   double particle_steps_per_second = 0;
 };
 
+/// The samples taken so far in an open revolution (kept by a checkpoint inside a revolution).
+struct RevolutionSamples {
+  double start_time = 0, last_time = 0;           ///< [s] of the revolution, of the last sample
+  std::vector<double> last_removed, last_impulse; ///< [m^3], [N s] per face at the last sample
+  std::vector<double> force;                      ///< [N] normal force per sample
+  std::vector<double> speed;                      ///< [m/s] mean speed over the sample
+  std::vector<double> height;                     ///< [m] bed height per sample
+  std::vector<double> rate;                       ///< [m^3/s] wear rate per sample
+  std::vector<double> bottom_count;               ///< [-] bottom-layer particles per sample
+  std::vector<std::vector<double>> column_force;  ///< [N] per column, per sample
+  double bottom_n = 0;                            ///< [-] bottom particles over all samples
+  double bottom_v = 0, bottom_v2 = 0;             ///< [m/s], [m^2/s^2] sums of their speeds
+  double bottom_w = 0, bottom_w2 = 0;             ///< [rad/s], [rad^2/s^2] sums of their spins
+};
+
 class TesterEvaluation {
 public:
   /// `sample`: the sample surface in its own frame (face order as in the DEM wall).
@@ -87,6 +102,9 @@ public:
   /// Closes the revolution with the per-face removed volume and the per-contact total.
   RevolutionRecord& end_revolution(double time, const std::vector<double>& removed,
                                    double contact_total_removed);
+  /// The open revolution's samples, and taking them back when a run continues inside it.
+  const RevolutionSamples& open_samples() const { return open_; }
+  void resume_samples(const RevolutionSamples& samples);
   const std::vector<RevolutionRecord>& history() const { return history_; }
   std::vector<RevolutionRecord>& history() { return history_; }
 
@@ -107,13 +125,7 @@ private:
   int hx_ = 0, hy_ = 0;
   double cell_ = 0;
   std::vector<double> height_;
-  // Samples of the current revolution.
-  double last_time_ = 0;
-  std::vector<double> last_removed_, last_impulse_;
-  std::vector<double> s_force_, s_speed_, s_height_, s_rate_, s_bottom_count_;
-  double bottom_n_ = 0, bottom_v_ = 0, bottom_v2_ = 0, bottom_w_ = 0, bottom_w2_ = 0;
-  std::vector<std::vector<double>> s_column_force_;
-  double revolution_start_ = 0;
+  RevolutionSamples open_; ///< the current revolution's samples
   std::vector<RevolutionRecord> history_;
 };
 

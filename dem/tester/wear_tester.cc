@@ -188,29 +188,45 @@ FillReport WearTester::fill_and_settle(const std::function<void(const TesterProg
 
 const RevolutionRecord&
 WearTester::run_revolution(const std::function<void(const TesterProgress&)>& progress) {
+  advance_revolution(progress, {});
+  return evaluation_->history().back();
+}
+
+void WearTester::open_revolution_now() {
   if (steps_per_revolution_ == 0)
     throw std::logic_error("WearTester::run_revolution before fill_and_settle");
   start_rotation();
   system_.reset_wear_integrals();
   evaluation_->begin_revolution(system_.time());
+  node_applied_.assign(cumulative_removed_.size(), 0);
+  steps_done_ = 0;
+  open_seconds_ = 0;
+  open_ = true;
+}
+
+// Steps go in chunks that end at every evaluation sample, node update and stop check; the
+// engine's run(k) gives the same bits whatever the chunks.
+bool WearTester::advance_revolution(const std::function<void(const TesterProgress&)>& progress,
+                                    const std::function<bool()>& stop) {
+  if (!open_)
+    open_revolution_now();
   const std::uint64_t n = steps_per_revolution_;
   const std::uint64_t sample_every = std::max<std::uint64_t>(1, n / dem_.samples_per_revolution);
   const std::uint64_t update_every =
       deformation_ ? std::min<std::uint64_t>(deformation_parameters_.update_interval, n) : n;
-  std::vector<double> applied(cumulative_removed_.size(), 0), delta(applied.size());
+  const std::uint64_t check_every = stop ? stop_check_steps : n;
   const meshes::Stopwatch wall_clock;
-  const auto apply_deformation = [&](const std::vector<double>& removed) {
-    const double amp = deformation_parameters_.amplification;
-    for (std::size_t f = 0; f < delta.size(); ++f)
-      delta[f] = amp * (removed[f] - applied[f]);
-    applied = removed;
-    system_.set_wall_vertices(sample_wall_, deformation_->update(delta, system_.time()));
-  };
-  std::uint64_t done = 0, next_progress = 0;
+  std::uint64_t& done = steps_done_;
+  const std::uint64_t first = done;
+  std::uint64_t next_progress = done;
   while (done < n) {
-    const std::uint64_t to_sample = sample_every - done % sample_every;
-    const std::uint64_t to_update = update_every - done % update_every;
-    const std::uint64_t k = std::min({to_sample, to_update, n - done});
+    if (stop && stop()) {
+      open_seconds_ += wall_clock.seconds();
+      return false;
+    }
+    const std::uint64_t k =
+        std::min({sample_every - done % sample_every, update_every - done % update_every,
+                  check_every - done % check_every, n - done});
     system_.run(k);
     done += k;
     const bool sample = done % sample_every == 0;
@@ -221,8 +237,13 @@ WearTester::run_revolution(const std::function<void(const TesterProgress&)>& pro
       if (sample)
         evaluation_->sample(system_.particles, sample_mesh(), system_.time(), removed,
                             wi.normal_impulse);
-      if (update)
-        apply_deformation(removed);
+      if (update) {
+        std::vector<double> delta(removed.size());
+        for (std::size_t f = 0; f < delta.size(); ++f)
+          delta[f] = deformation_parameters_.amplification * (removed[f] - node_applied_[f]);
+        node_applied_ = removed;
+        system_.set_wall_vertices(sample_wall_, deformation_->update(delta, system_.time()));
+      }
     }
     if (progress && (done >= next_progress || done == n)) {
       next_progress = done + n / 100;
@@ -233,11 +254,16 @@ WearTester::run_revolution(const std::function<void(const TesterProgress&)>& pro
       pr.fraction = double(done) / double(n);
       pr.time = system_.time();
       pr.particle_steps_per_second =
-          wall > 0 ? double(done) * double(system_.particles.n_real) / wall : 0;
+          wall > 0 ? double(done - first) * double(system_.particles.n_real) / wall : 0;
       progress(pr);
     }
   }
-  const double wall = wall_clock.seconds();
+  close_revolution(open_seconds_ + wall_clock.seconds());
+  return true;
+}
+
+const RevolutionRecord& WearTester::close_revolution(double wall) {
+  const std::uint64_t n = steps_per_revolution_;
   const WearIntegrals integrals = system_.wear_integrals(sample_wall_);
   // The window's duration is the nominal revolution (the step count rounds it to a step).
   last_loads_ =
@@ -259,7 +285,14 @@ WearTester::run_revolution(const std::function<void(const TesterProgress&)>& pro
                      meshes::label::name(d->label) + "), t = " + std::to_string(d->time) + " s";
   }
   ++revolution_;
+  open_ = false;
   return r;
+}
+
+std::optional<OpenRevolution> WearTester::open_revolution() const {
+  if (!open_ || deformation_)
+    return std::nullopt;
+  return OpenRevolution{steps_done_, open_seconds_, evaluation_->open_samples()};
 }
 
 void WearTester::use_thread_count() {
@@ -282,6 +315,9 @@ WearTester::PushReport WearTester::set_sample_surface(const meshes::SurfaceMesh&
   if (deformation_)
     throw std::logic_error("WearTester: the sample surface cannot be replaced while the "
                            "reference deformation moves its nodes");
+  if (open_)
+    throw std::logic_error("WearTester: the sample surface cannot be replaced inside a "
+                           "revolution");
   const auto placed =
       meshes::SampleFrame(geometry_.sample, geometry_.placement).place_in_tester(sample);
   PushReport report;
@@ -347,6 +383,25 @@ void WearTester::restore(const SystemState& state, int revolutions_done,
   system_.import_state(state);
   evaluation_->history() = records;
   revolution_ = revolutions_done;
+  open_ = false;
+}
+
+void WearTester::restore(const SystemState& state, int revolutions_done,
+                         const std::vector<RevolutionRecord>& records, const OpenRevolution& open) {
+  if (deformation_)
+    throw std::logic_error("WearTester: a revolution of the reference deformation cannot be "
+                           "continued from a checkpoint");
+  restore(state, revolutions_done, records);
+  if (open.steps_done >= steps_per_revolution_)
+    throw std::invalid_argument("checkpoint: the open revolution is past its " +
+                                std::to_string(steps_per_revolution_) + " steps");
+  start_rotation();
+  system_.resume_state(state);
+  evaluation_->resume_samples(open.samples);
+  node_applied_.assign(cumulative_removed_.size(), 0);
+  steps_done_ = open.steps_done;
+  open_seconds_ = open.wall_seconds;
+  open_ = true;
 }
 
 } // namespace wear::dem

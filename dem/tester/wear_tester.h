@@ -29,6 +29,14 @@ struct TesterProgress {
   double particle_steps_per_second = 0;
 };
 
+/// A revolution stopped before its end (advance_revolution with a stop request): where it
+/// stands, for an in-stage checkpoint. The DEM state goes with it (System::export_state).
+struct OpenRevolution {
+  std::uint64_t steps_done = 0; ///< [-] of steps_per_revolution()
+  double wall_seconds = 0;      ///< [s] spent on it so far (reporting only)
+  RevolutionSamples samples;    ///< the evaluation's samples so far
+};
+
 class WearTester {
 public:
   /// `sample` is the sample surface in its own frame (meshes::generate_sample); it is placed
@@ -43,6 +51,16 @@ public:
   /// reference deformation if enabled. Returns the record (also kept in evaluation()).
   const RevolutionRecord&
   run_revolution(const std::function<void(const TesterProgress&)>& progress = {});
+  /// The same, stoppable: `stop` is asked every few steps (stop_check_steps) and a true
+  /// answer returns false with the revolution left open between two steps; the next call
+  /// continues it. Returns true when the revolution is complete (its record is
+  /// evaluation().history().back()). Stopping changes nothing in the results.
+  bool advance_revolution(const std::function<void(const TesterProgress&)>& progress,
+                          const std::function<bool()>& stop);
+  /// The open revolution, if one was stopped (none with the reference deformation, whose
+  /// node moves are not part of it).
+  std::optional<OpenRevolution> open_revolution() const;
+  static constexpr std::uint64_t stop_check_steps = 50;
 
   /// Replaces the sample surface (sample frame, e.g. worn and remeshed by the FEM; face
   /// order defines the face fields from now on). Particles that the new surface overlaps by
@@ -59,6 +77,10 @@ public:
   /// records. The surface must be set first (set_sample_surface) when it changed.
   void restore(const SystemState& state, int revolutions_done,
                const std::vector<RevolutionRecord>& records);
+  /// The same inside a revolution: the state continues exactly (System::resume_state) and
+  /// the revolution goes on from `open` at the next advance_revolution().
+  void restore(const SystemState& state, int revolutions_done,
+               const std::vector<RevolutionRecord>& records, const OpenRevolution& open);
 
   System& system() { return system_; }
   const System& system() const { return system_; }
@@ -93,6 +115,13 @@ private:
   std::uint64_t steps_per_revolution_ = 0;
   int revolution_ = 0;
   bool rotating_ = false;
+  // The revolution under way between advance_revolution() calls.
+  bool open_ = false;
+  std::uint64_t steps_done_ = 0;
+  double open_seconds_ = 0;          ///< [s] wall time of its earlier calls
+  std::vector<double> node_applied_; ///< [m^3] per face, removed volume the nodes took up
+  void open_revolution_now();
+  const RevolutionRecord& close_revolution(double wall_seconds);
   void start_rotation();
   void use_thread_count(); ///< DEM/Threads, or all cores, for the engine's loops
 };

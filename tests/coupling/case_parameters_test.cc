@@ -1,7 +1,9 @@
+#include "coupling/parameters/case_consistency.h"
 #include "coupling/parameters/case_parameters.h"
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -101,4 +103,58 @@ TEST_CASE("every parameter is documented", "[coupling][parameters]") {
                            "Scaling factor", "Archard coefficient", "frictional-work",
                            "Reference method", "Update interval", "PSD mass fractions"})
     CHECK(text.find(name) != std::string::npos);
+}
+
+TEST_CASE("every case file under cases/ passes the consistency checks without a warning",
+          "[coupling][parameters]") {
+  int n_files = 0;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(WEAR_SOURCE_DIR "/cases")) {
+    if (e.path().extension() != ".prm")
+      continue;
+    INFO(e.path().string());
+    ++n_files;
+    std::ostringstream warnings;
+    const auto c = read_case(e.path().string(), warnings);
+    // The quick tester's cases set DEM/Threads = 2; on a machine with one core that warns.
+    std::string text = warnings.str();
+    if (text.find("DEM/Threads") != std::string::npos)
+      text.clear();
+    CHECK(text.empty());
+    CHECK(check_consistency(c).size() == (warnings.str().empty() ? 0u : 1u));
+  }
+  CHECK(n_files >= 20);
+}
+
+TEST_CASE("the a-priori depth estimate lies above the measured wear, within its floor",
+          "[coupling][parameters]") {
+  // Measured wear per revolution over the wear-face area (wearsim mesh) against the estimate's
+  // mean depth alpha p Theta R: the estimate must stay an upper one (the bed cannot slide
+  // past the sample faster than the floor turns), and the check's floor
+  // depth_efficiency_floor must lie at least 5 times below the lowest measured ratio, or the
+  // depth-cap check could refuse a run that works.
+  struct Measured {
+    const char* case_file;
+    double wear;      ///< [m^3] per revolution
+    double wear_area; ///< [m^2] base top and elements
+  };
+  const Measured runs[] = {
+      {"/cases/reference/plain.prm", 62.48e-9, 12000e-6},  // docs/results/dem-reference.md
+      {"/cases/reference/convex.prm", 34.97e-9, 14900e-6}, // the same
+      {"/cases/quick/plain.prm", 1.88e-9, 12000e-6},       // cases/quick/README.md, seed 20111
+      {"/cases/quick/convex.prm", 1.24e-9, 14625e-6},      // the same, seed 2 (the lowest)
+  };
+  double lowest = 1;
+  for (const auto& m : runs) {
+    INFO(m.case_file);
+    auto c = read_case(std::string(WEAR_SOURCE_DIR) + m.case_file);
+    c.coupling.amplification = 1;
+    c.coupling.revolutions_per_stage = 1;
+    const StageDepthEstimate e = stage_depth_estimate(c);
+    REQUIRE(e.known);
+    const double ratio = m.wear / m.wear_area / e.mean_depth;
+    CHECK(ratio < 1);
+    lowest = std::min(lowest, ratio);
+  }
+  CHECK(lowest == Approx(0.072).margin(0.005));
+  CHECK(depth_efficiency_floor * 5 < lowest);
 }

@@ -30,6 +30,7 @@ CaseParameters small_case(const std::string& dir, const std::string& schedule,
   p.geometry.sample.mesh_size_bottom = 5e-3;
   p.coupling.schedule = schedule;
   p.coupling.amplification = amplification;
+  p.coupling.max_depth_fraction = 0.5; // the cap these tests were written for
   return p;
 }
 

@@ -42,7 +42,7 @@ inline int add_gravel(System& s, double e, double mu, double mu_r) {
 /// The tester's walls (0.1 m high, 20 mm mesh, no consolidator) as a periodic sector of
 /// `angle_deg`, the floor turning at 90 deg/s and the cylinders too if `rotating_cylinders`.
 inline void add_periodic_tester_sector(System& s, int material, double angle_deg,
-                                       bool rotating_cylinders) {
+                                       bool rotating_cylinders, bool wearing_floor = false) {
   meshes::TesterGeometry t;
   t.sector_angle_deg = angle_deg;
   t.wall_height = 0.1;
@@ -52,7 +52,7 @@ inline void add_periodic_tester_sector(System& s, int material, double angle_deg
   WallMotion rot;
   rot.angular_velocity = 0.5 * pi; // 90 deg/s
   const WallMotion cylinders = rotating_cylinders ? rot : WallMotion{};
-  s.add_wall(MeshWall(w.floor, material, rot, false, "floor"));
+  s.add_wall(MeshWall(w.floor, material, rot, wearing_floor, "floor"));
   s.add_wall(MeshWall(w.inner, material, cylinders, false, "inner"));
   s.add_wall(MeshWall(w.outer, material, cylinders, false, "outer"));
   s.settings.periodic = {true, angle_deg * pi / 180};
