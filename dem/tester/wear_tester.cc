@@ -363,21 +363,27 @@ WearTester::PushReport WearTester::set_sample_surface(const meshes::SurfaceMesh&
   return report;
 }
 
+// A resumed run's tester has no particles yet: those of the state, set up (its own lists and
+// forces are then replaced by the state's).
+void WearTester::add_particles_of(const SystemState& state) {
+  if (system_.particles.n_real > 0)
+    return;
+  auto& p = system_.particles;
+  for (std::size_t i = 0; i < state.position.size(); ++i) {
+    p.add(state.position[i], state.velocity[i], state.radius[i], dem_.particle.density,
+          state.material[i]);
+    p.mass.back() = state.mass[i];
+    p.inertia.back() = state.inertia[i];
+    p.id.back() = state.id[i];
+  }
+  use_thread_count();
+  system_.setup();
+  steps_per_revolution_ = std::uint64_t(std::llround(revolution_time_ / system_.time_step()));
+}
+
 void WearTester::restore(const SystemState& state, int revolutions_done,
                          const std::vector<RevolutionRecord>& records) {
-  if (system_.particles.n_real == 0) {
-    auto& p = system_.particles;
-    for (std::size_t i = 0; i < state.position.size(); ++i) {
-      p.add(state.position[i], state.velocity[i], state.radius[i], dem_.particle.density,
-            state.material[i]);
-      p.mass.back() = state.mass[i];
-      p.inertia.back() = state.inertia[i];
-      p.id.back() = state.id[i];
-    }
-    use_thread_count();
-    system_.setup();
-    steps_per_revolution_ = std::uint64_t(std::llround(revolution_time_ / system_.time_step()));
-  }
+  add_particles_of(state);
   if (revolutions_done > 0)
     start_rotation();
   system_.import_state(state);
@@ -391,14 +397,15 @@ void WearTester::restore(const SystemState& state, int revolutions_done,
   if (deformation_)
     throw std::logic_error("WearTester: a revolution of the reference deformation cannot be "
                            "continued from a checkpoint");
-  restore(state, revolutions_done, records);
+  add_particles_of(state);
   if (open.steps_done >= steps_per_revolution_)
     throw std::invalid_argument("checkpoint: the open revolution is past its " +
                                 std::to_string(steps_per_revolution_) + " steps");
   start_rotation();
   system_.resume_state(state);
+  evaluation_->history() = records;
   evaluation_->resume_samples(open.samples);
-  node_applied_.assign(cumulative_removed_.size(), 0);
+  revolution_ = revolutions_done;
   steps_done_ = open.steps_done;
   open_seconds_ = open.wall_seconds;
   open_ = true;

@@ -121,6 +121,7 @@ private:
   double open_seconds_ = 0;          ///< [s] wall time of its earlier calls
   std::vector<double> node_applied_; ///< [m^3] per face, removed volume the nodes took up
   void open_revolution_now();
+  void add_particles_of(const SystemState& state);
   const RevolutionRecord& close_revolution(double wall_seconds);
   void start_rotation();
   void use_thread_count(); ///< DEM/Threads, or all cores, for the engine's loops
