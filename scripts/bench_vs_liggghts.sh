@@ -3,7 +3,7 @@
 # Runs, in one time window: our annulus workload (1 and 2 threads, interleaved repeats), the
 # anchor's annulus45k (1 and 2 MPI ranks), and our sector workloads 5k/20k/45k (2 threads)
 # for the cost-per-particle-step scaling. Raw logs go to $OUT (default /tmp/wear-bench).
-# usage: bash scripts/bench_vs_liggghts.sh [repeats]     (about 25 min with 3 repeats)
+# usage: bash scripts/bench_vs_liggghts.sh [repeats]     (about 15 min with 3 repeats)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 R=${1:-3}

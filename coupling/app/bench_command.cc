@@ -1,18 +1,26 @@
-// `wearsim bench dem`: builds a workload (dem/engine/benchmark.h), settles it with the floor
-// rotating, warms up, then times `steps` steps per repeat. Particle-steps per second =
-// N x timed steps / wall time of the timed loop; the median over repeats is reported last.
+// `wearsim bench dem`: builds a workload (dem/engine/benchmark.h, or the wear tester of
+// bench_tester.h), settles it with the floor rotating, warms up, then times `steps` steps per
+// repeat. Particle-steps per second = N x timed steps / wall time of the timed loop; the
+// median over repeats is reported last. The loop time per particle-step is split by the
+// engine's phase timers (System::phase_times: pair, wall and wait averaged over the threads);
+// what they leave out is printed as "other". Memory per particle: the engine's arrays
+// (System::bytes_per_particle) plus the contact history, 2 x 4 bytes of pair indices and
+// 24 of tangential overlap per listed neighbour pair; peak resident memory from getrusage.
 #include "coupling/app/bench_command.h"
 
 #include "coupling/app/bench_fem.h"
+#include "coupling/app/bench_tester.h"
 #include "coupling/output/progress_line.h"
 #include "dem/engine/benchmark.h"
 #include "meshes/stopwatch.h"
 
 #include <omp.h>
+#include <sys/resource.h>
 
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <ostream>
 #include <stdexcept>
 #include <thread>
@@ -43,9 +51,36 @@ std::vector<int> parse_thread_counts(const std::string& flag, const std::string&
   return counts;
 }
 
+double to_positive(const std::string& flag, const std::string& v) {
+  std::size_t used = 0;
+  double x = 0;
+  try {
+    x = std::stod(v, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != v.size() || !(x > 0) || !std::isfinite(x))
+    throw std::invalid_argument("wearsim bench: " + flag + " needs a positive number, got '" + v +
+                                "'");
+  return x;
+}
+
+// --scale, --sample, --case: the options of the tester workload.
+void parse_tester_option(TesterBenchOptions& t, const std::string& f, const std::string& v) {
+  if (f == "--scale")
+    t.scale = to_positive(f, v);
+  else if (f == "--sample") {
+    if (v != "convex" && v != "plain")
+      throw std::invalid_argument("wearsim bench: --sample takes convex or plain, got '" + v + "'");
+    t.convex = v == "convex";
+  } else
+    t.case_file = v;
+}
+
 struct BenchDemArguments {
   dem::BenchmarkOptions options;
   std::vector<int> thread_counts; ///< timed in turn in every repeat; 0 given means all cores
+  TesterBenchOptions tester;      ///< --workload tester only
 };
 
 BenchDemArguments bench_dem_arguments(const std::vector<std::string>& args) {
@@ -68,9 +103,19 @@ BenchDemArguments bench_dem_arguments(const std::vector<std::string>& args) {
       o.timed_steps = to_count(f, v);
     else if (f == "--repeats")
       o.repeats = std::max(1, int(to_count(f, v)));
+    else if (f == "--walls" && (v == "analytic" || v == "mesh"))
+      o.mesh_walls = v == "mesh";
+    else if (f == "--walls")
+      throw std::invalid_argument("wearsim bench: --walls takes 'analytic' or 'mesh', got '" + v +
+                                  "'");
+    else if (f == "--scale" || f == "--sample" || f == "--case")
+      parse_tester_option(a.tester, f, v);
     else
       throw std::invalid_argument("wearsim bench: unknown option '" + f + "'");
   }
+  if (a.tester.any_given() && o.workload != "tester")
+    throw std::invalid_argument("wearsim bench: --scale, --sample and --case belong to "
+                                "--workload tester");
   const int all = int(std::thread::hardware_concurrency());
   if (a.thread_counts.empty())
     a.thread_counts.push_back(all);
@@ -94,37 +139,97 @@ double settle(dem::System& s, const dem::BenchmarkOptions& o, int threads, std::
   return clock.seconds();
 }
 
-// Particle-steps per second of every repeat, per thread count. Repeats interleave the
-// thread counts, so each pair of figures shares one time window.
-std::map<int, std::vector<double>> timed_rates(dem::System& s, const BenchDemArguments& a,
-                                               std::ostream& out) {
+// Nanoseconds per particle-step of one timed loop: the whole loop and the engine's phases.
+struct PhaseSplit {
+  double total = 0, pair = 0, wall = 0, integration = 0, rebuild = 0, wait = 0; ///< [ns]
+};
+
+struct TimedRun {
+  double rate = 0; ///< [particle-steps/s]
+  PhaseSplit ns;
+  bool operator<(const TimedRun& o) const { return rate < o.rate; }
+};
+
+PhaseSplit phase_split(const dem::PhaseTimes& t, double loop_seconds, double particle_steps) {
+  const double k = 1e9 / std::max(1.0, particle_steps);
+  return {loop_seconds * k, t.pair * k, t.wall * k, t.integration * k, t.rebuild * k, t.wait * k};
+}
+
+std::string split_text(const PhaseSplit& s) {
+  const double other = s.total - s.pair - s.wall - s.integration - s.rebuild - s.wait;
+  return format("%.1f ns per particle-step: pair kernel %.1f, walls %.1f, integration %.1f, "
+                "list rebuild %.1f, waits %.1f, other %.1f",
+                s.total, s.pair, s.wall, s.integration, s.rebuild, s.wait, other);
+}
+
+// Rate and phase split of every repeat, per thread count. Repeats interleave the thread
+// counts, so each pair of figures shares one time window.
+std::map<int, std::vector<TimedRun>> timed_runs(dem::System& s, const BenchDemArguments& a,
+                                                std::ostream& out) {
   const auto& o = a.options;
   const double n = double(s.particles.n_real);
-  std::map<int, std::vector<double>> rates;
+  std::map<int, std::vector<TimedRun>> runs;
   for (int r = 0; r < o.repeats; ++r)
     for (int th : a.thread_counts) {
       s.set_n_threads(th);
       s.run(o.warm_steps);
       const auto n0 = s.n_rebuilds();
+      s.reset_phase_times();
       const meshes::Stopwatch clock;
       s.run(o.timed_steps);
       const double secs = clock.seconds();
-      const double rate = n * double(o.timed_steps) / secs;
-      rates[th].push_back(rate);
+      const double steps = n * double(o.timed_steps);
+      const TimedRun run{steps / secs, phase_split(s.phase_times(), secs, steps)};
+      runs[th].push_back(run);
       out << format("repeat %d, %d threads: %llu steps in %.3f s, %.4e particle-steps/s, rebuild "
-                    "every %.1f steps, %.2f neighbour pairs and %.2f contacts per particle\n",
-                    r + 1, th, (unsigned long long)o.timed_steps, secs, rate,
+                    "every %.1f steps, %.2f neighbour pairs and %.2f contacts per particle\n"
+                    "  %s\n",
+                    r + 1, th, (unsigned long long)o.timed_steps, secs, run.rate,
                     double(o.timed_steps) / std::max<double>(1, double(s.n_rebuilds() - n0)),
-                    double(s.n_neighbor_pairs()) / n, double(s.n_pair_contacts()) / n)
+                    double(s.n_neighbor_pairs()) / n, double(s.n_pair_contacts()) / n,
+                    split_text(run.ns).c_str())
           << std::flush;
     }
-  return rates;
+  return runs;
 }
 
-// The medians, the settled bed (top, mean angular velocity L_z / sum r^2) and the memory and
-// wall-contact figures; last the median rate of the last thread count, for scripts.
-void report(dem::System& s, double settle_seconds, std::map<int, std::vector<double>>& rates,
-            int last_threads, std::ostream& out) {
+// The engine's arrays, the contact history and the process's peak resident memory.
+void report_memory(const dem::System& s, std::ostream& out) {
+  const double n = double(std::max<std::size_t>(1, s.particles.n_real));
+  const double pairs = double(s.n_neighbor_pairs()) / n;
+  const double history = pairs * (2 * 4 + 24);
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  const double peak = double(usage.ru_maxrss) * 1024; // Linux gives kilobytes
+  out << format("memory per particle: %.0f bytes of engine arrays + %.0f of contact history "
+                "(%.2f neighbour pairs x (2 x 4 + 24) bytes) = %.0f bytes; peak resident "
+                "memory of the process %.1f MB (%.0f bytes per particle)\n",
+                s.bytes_per_particle(), history, pairs, s.bytes_per_particle() + history,
+                peak / 1048576, peak / n);
+}
+
+// Pair contacts and wall contacts per particle as the last force evaluation left them; the
+// wall contacts are the filled history slots of the exported state (after the peak memory
+// was read: the export is a copy).
+void report_contacts(const dem::System& s, std::ostream& out) {
+  const auto state = s.export_state();
+  const std::size_t n_near = state.wall_particles.size();
+  const std::size_t per = n_near > 0 ? state.slot_wall.size() / n_near : 0;
+  std::size_t n_wall = 0;
+  for (std::size_t q = 0; q < n_near; ++q)
+    for (std::size_t k = 0; k < per && state.slot_wall[q * per + k] >= 0; ++k)
+      ++n_wall;
+  const double n = double(std::max<std::size_t>(1, s.particles.n_real));
+  out << format("contacts per particle: %.3f pair contacts, %.3f wall contacts; %zu particles, "
+                "%zu near walls with %.2f candidate faces each\n",
+                double(s.n_pair_contacts()) / n, double(n_wall) / n, s.particles.n_real, n_near,
+                double(s.n_wall_candidates()) / std::max<double>(1, double(n_near)));
+}
+
+// The medians with their phase split, the settled bed (top, mean angular velocity
+// L_z / sum r^2), memory and contacts. Returns the median rate per thread count.
+std::map<int, double> report(dem::System& s, double settle_seconds,
+                             std::map<int, std::vector<TimedRun>>& runs, std::ostream& out) {
   double z_top = 0, lz = 0, r2 = 0;
   for (std::size_t i = 0; i < s.particles.n_real; ++i) {
     const auto& x = s.particles.position[i];
@@ -133,18 +238,19 @@ void report(dem::System& s, double settle_seconds, std::map<int, std::vector<dou
     lz += x.x * v.y - x.y * v.x;
     r2 += x.x * x.x + x.y * x.y;
   }
-  for (auto& [th, v] : rates) {
+  std::map<int, double> medians;
+  for (auto& [th, v] : runs) {
     std::sort(v.begin(), v.end());
-    out << format("median with %d threads: %.4e particle-steps/s\n", th, v[v.size() / 2]);
+    const TimedRun& m = v[v.size() / 2];
+    medians[th] = m.rate;
+    out << format("median with %d threads: %.4e particle-steps/s; %s\n", th, m.rate,
+                  split_text(m.ns).c_str());
   }
-  const auto& last = rates[last_threads];
-  out << format("settle %.1f s; bed top %.4f m, mean bed angular velocity %.3f rad/s; %.0f bytes "
-                "per particle plus contact history; %zu particles, %zu near walls with %.2f "
-                "candidate faces each\n",
-                settle_seconds, z_top, lz / r2, s.bytes_per_particle(), s.particles.n_real,
-                s.n_wall_particles(),
-                double(s.n_wall_candidates()) / std::max<double>(1, double(s.n_wall_particles())));
-  out << format("particle_steps_per_second %.6e\n", last[last.size() / 2]);
+  out << format("settle %.1f s; bed top %.4f m, mean bed angular velocity %.3f rad/s\n",
+                settle_seconds, z_top, lz / r2);
+  report_memory(s, out);
+  report_contacts(s, out);
+  return medians;
 }
 } // namespace
 
@@ -157,11 +263,21 @@ int run_bench_command(const std::vector<std::string>& args, std::ostream& out) {
   const BenchDemArguments a = bench_dem_arguments(args);
   const int threads = *std::max_element(a.thread_counts.begin(), a.thread_counts.end());
   omp_set_num_threads(threads);
-  dem::System s;
-  dem::build_benchmark(s, a.options.workload);
-  const double settle_seconds = settle(s, a.options, threads, out);
-  auto rates = timed_rates(s, a, out);
-  report(s, settle_seconds, rates, a.thread_counts.back(), out);
+  std::unique_ptr<dem::WearTester> tester;
+  dem::System workload;
+  double settle_seconds = 0;
+  if (a.options.workload == "tester")
+    tester = tester_workload(a.tester, a.options.settle_steps > 0, threads, settle_seconds, out);
+  else {
+    dem::build_benchmark(workload, a.options);
+    settle_seconds = settle(workload, a.options, threads, out);
+  }
+  dem::System& s = tester ? tester->system() : workload;
+  auto runs = timed_runs(s, a, out);
+  const auto medians = report(s, settle_seconds, runs, out);
+  if (tester)
+    report_tester(*tester, medians, out);
+  out << format("particle_steps_per_second %.6e\n", medians.at(a.thread_counts.back()));
   return 0;
 }
 

@@ -58,15 +58,30 @@ meshes::TesterGeometry tester(double sector_angle_deg, double wall_height) {
   return t;
 }
 
+/// Floor (z = 0) and cylinders (0 <= z <= height) of the full annulus ri..ro as revolution
+/// walls, the floor rotating and the cylinders too if `rotating_cylinders`.
+void add_revolution_walls(System& s, int g, double height, bool rotating_cylinders) {
+  const WallMotion cylinders = rotating_cylinders ? rotating() : WallMotion{};
+  s.add_wall(RevolutionWall(RevolutionSurface::annulus(0, ri, ro), g, rotating(), false, "floor"));
+  s.add_wall(
+      RevolutionWall(RevolutionSurface::cylinder(ri, 0, height), g, cylinders, false, "inner"));
+  s.add_wall(
+      RevolutionWall(RevolutionSurface::cylinder(ro, 0, height), g, cylinders, false, "outer"));
+}
+
 /// The anchor's full annulus: about 45,000 particles on the lattice, layers to match.
-void add_annulus(System& s, int g) {
+void add_annulus(System& s, int g, bool mesh_walls) {
   const double a = 1.03 * d0;
   const int layer = lattice_sites_per_layer(a);
   const int nz = std::max(1, int(std::lround(45000.0 / layer)));
-  const auto w = meshes::generate_tester_walls(tester(360, 0.12));
-  s.add_wall(MeshWall(w.floor, g, rotating(), false, "floor"));
-  s.add_wall(MeshWall(w.inner, g, {}, false, "inner"));
-  s.add_wall(MeshWall(w.outer, g, {}, false, "outer"));
+  if (mesh_walls) {
+    const auto w = meshes::generate_tester_walls(tester(360, 0.12));
+    s.add_wall(MeshWall(w.floor, g, rotating(), false, "floor"));
+    s.add_wall(MeshWall(w.inner, g, {}, false, "inner"));
+    s.add_wall(MeshWall(w.outer, g, {}, false, "outer"));
+  } else {
+    add_revolution_walls(s, g, 0.12, false);
+  }
   FillRegion region{{-ro, -ro, 0}, {ro, ro, nz * a}, [=](const Vec3& x) {
                       const double r = std::hypot(x.x, x.y);
                       return ri + 0.6 * a < r && r < ro - 0.6 * a && x.z > 0 && x.z < nz * a;
@@ -75,24 +90,28 @@ void add_annulus(System& s, int g) {
 }
 
 /// A periodic sector of about `target` particles in 14 layers, walls rotating with the bed;
-/// `with_plate`: a fixed vertical plate across the flow in the middle of the sector.
-void add_sector(System& s, int g, std::size_t target, bool with_plate) {
+/// `with_plate`: a fixed vertical plate (a mesh) across the flow in the middle of the sector.
+void add_sector(System& s, int g, std::size_t target, bool with_plate, bool mesh_walls) {
   // 14 layers as the anchor's channels; angle from the lattice sites per layer and radian.
   const double a = 1.03 * d0;
   const int nz = 14;
   const double z_top = nz * a;
   const double per_rad = lattice_sites_per_layer(a) / (2 * pi);
   const double angle = std::min(2 * pi * 0.9, double(target) / (nz * per_rad));
-  // Walls reach a little past both cut planes: particles may sit up to half a skin beyond a
-  // cut between list rebuilds.
-  const double margin = 0.02;
-  const auto w = meshes::generate_tester_walls(tester(angle * 180 / pi, 0.2));
-  const auto extend = [&](const meshes::SurfaceMesh& mesh) {
-    return meshes::widen_sector(mesh, angle, margin);
-  };
-  s.add_wall(MeshWall(extend(w.floor), g, rotating(), false, "floor"));
-  s.add_wall(MeshWall(extend(w.inner), g, rotating(), false, "inner"));
-  s.add_wall(MeshWall(extend(w.outer), g, rotating(), false, "outer"));
+  if (mesh_walls) {
+    // Mesh walls reach a little past both cut planes: particles may sit up to half a skin
+    // beyond a cut between list rebuilds. (The revolution walls are full circles.)
+    const double margin = 0.02;
+    const auto w = meshes::generate_tester_walls(tester(angle * 180 / pi, 0.2));
+    const auto extend = [&](const meshes::SurfaceMesh& mesh) {
+      return meshes::widen_sector(mesh, angle, margin);
+    };
+    s.add_wall(MeshWall(extend(w.floor), g, rotating(), false, "floor"));
+    s.add_wall(MeshWall(extend(w.inner), g, rotating(), false, "inner"));
+    s.add_wall(MeshWall(extend(w.outer), g, rotating(), false, "outer"));
+  } else {
+    add_revolution_walls(s, g, 0.2, true);
+  }
   if (with_plate)
     s.add_wall(MeshWall(plate(angle / 2, 0.345, 0.445, 0.015, 0.115, 40), g, {}, false, "plate"));
   s.settings.periodic = {true, angle};
@@ -109,14 +128,18 @@ void add_sector(System& s, int g, std::size_t target, bool with_plate) {
 }
 } // namespace
 
-void build_benchmark(System& s, const std::string& workload) {
+void build_benchmark(System& s, const BenchmarkOptions& o) {
+  build_benchmark(s, o.workload, o.mesh_walls);
+}
+
+void build_benchmark(System& s, const std::string& workload, bool mesh_walls) {
   const int g = s.materials.add({"gravel", 5e7, 0.25, 2650});
   s.materials.set_pair(g, g, {0.5, 0.5, 0.1});
   s.settings.skin = 0.002;
   s.settings.time_step_fraction = 0.2;
   s.settings.domain = {{-0.52, -0.52, -0.01}, {0.52, 0.52, 1.0}};
   if (workload == "annulus") {
-    add_annulus(s, g);
+    add_annulus(s, g, mesh_walls);
     return;
   }
   std::size_t target = 0;
@@ -129,7 +152,7 @@ void build_benchmark(System& s, const std::string& workload) {
   else
     throw std::invalid_argument("unknown benchmark workload '" + workload +
                                 "' (annulus, sector5k, sector20k, sector45k, sample45k)");
-  add_sector(s, g, target, workload == "sample45k");
+  add_sector(s, g, target, workload == "sample45k", mesh_walls);
 }
 
 } // namespace wear::dem

@@ -12,6 +12,9 @@ struct BenchmarkOptions {
   std::uint64_t warm_steps = 500;
   std::uint64_t timed_steps = 2000;
   int repeats = 1;
+  /// Floor and cylinders as triangle meshes (the walls before issue 30) instead of revolution
+  /// walls (`wearsim bench dem --walls mesh|analytic`).
+  bool mesh_walls = false;
 };
 
 /// Builds the workload into `s` (not set up): monodisperse 7.95 mm spheres, E = 5e7 Pa,
@@ -21,6 +24,11 @@ struct BenchmarkOptions {
 /// sectorNk: the cylindrical periodic sector (our geometry for the anchor's periodic
 /// channels monoNk), 14 lattice layers, angle chosen for about N particles, rotating walls;
 /// sample45k: sector45k plus the anchor's 100 x 100 mm plate of 3200 triangles facing the flow.
-void build_benchmark(System& s, const std::string& workload);
+/// The floor and cylinders are revolution walls (full circles, exact), or with `mesh_walls`
+/// the triangle meshes of meshes::generate_tester_walls (21 mm; in a sector widened 0.02 rad
+/// past both cuts); the plate is always a mesh.
+void build_benchmark(System& s, const std::string& workload, bool mesh_walls = false);
+/// The same from the options (workload, mesh_walls).
+void build_benchmark(System& s, const BenchmarkOptions& o);
 
 } // namespace wear::dem

@@ -89,8 +89,7 @@ void MeshWall::compute_geometry() {
   corners_.resize(nf);
   normal_.resize(nf);
   inward_.resize(nf);
-  bound_centre_.resize(nf);
-  bound_radius_.resize(nf);
+  bound_.resize(nf);
   for (std::size_t f = 0; f < nf; ++f) {
     for (int k = 0; k < 3; ++k)
       corners_[f][k] = mesh_.vertices[mesh_.triangles[f][k]];
@@ -103,11 +102,11 @@ void MeshWall::compute_geometry() {
     for (int k = 0; k < 3; ++k)
       inward_[f][k] = normalized(cross(normal_[f], corners_[f][(k + 1) % 3] - corners_[f][k]));
     // Widened by a relative 1e-9 so that round-off in the test never rejects a touching face.
-    bound_centre_[f] = (corners_[f][0] + corners_[f][1] + corners_[f][2]) * (1.0 / 3.0);
+    const Vec3 centre = (corners_[f][0] + corners_[f][1] + corners_[f][2]) * (1.0 / 3.0);
     double r2 = 0;
     for (int k = 0; k < 3; ++k)
-      r2 = std::max(r2, meshes::norm2(corners_[f][k] - bound_centre_[f]));
-    bound_radius_[f] = std::sqrt(r2) * (1 + 1e-9);
+      r2 = std::max(r2, meshes::norm2(corners_[f][k] - centre));
+    bound_[f] = {normal_[f], dot(normal_[f], corners_[f][0]), centre, std::sqrt(r2) * (1 + 1e-9)};
   }
   vertex_edge_dir_.resize(vertex_edge_.size());
   vertex_face_weight_.resize(vertex_face_.size());

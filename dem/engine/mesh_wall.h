@@ -54,7 +54,7 @@ public:
   /// Distance of c from the plane of triangle f [m]: a lower bound of the distance to the
   /// triangle, used to reject most candidates before the closest-point search.
   double plane_distance(std::uint32_t f, const Vec3& c) const {
-    return std::abs(meshes::dot(c - corners_[f][0], normal_[f]));
+    return std::abs(meshes::dot(c, bound_[f].normal) - bound_[f].offset);
   }
 
   /// True when no point of triangle f lies closer to c than r: c is at least r beyond the
@@ -62,8 +62,8 @@ public:
   /// plane passes near c but which lie elsewhere on a curved surface, before the
   /// closest-point search.
   bool beyond_bound(std::uint32_t f, const Vec3& c, double r) const {
-    const double reach = r + bound_radius_[f];
-    return meshes::norm2(c - bound_centre_[f]) >= reach * reach;
+    const double reach = r + bound_[f].radius;
+    return meshes::norm2(c - bound_[f].centre) >= reach * reach;
   }
 
   /// Closest point of triangle f to c (meshes::closest_point_on_triangle).
@@ -101,8 +101,16 @@ private:
   std::string name_;
   std::vector<std::array<Vec3, 3>> corners_;
   std::vector<Vec3> normal_;
-  std::vector<Vec3> bound_centre_;   ///< [m] centroid of face f
-  std::vector<double> bound_radius_; ///< [m] largest centroid-corner distance, slightly widened
+  /// What the two rejection tests of a candidate face read, in one cache line: most
+  /// candidates are rejected there, and the faces of a fine sample mesh do not fit a core's
+  /// cache.
+  struct alignas(64) FaceBound {
+    Vec3 normal;   ///< unit
+    double offset; ///< [m] normal . (a corner): the plane is normal . x = offset
+    Vec3 centre;   ///< [m] centroid
+    double radius; ///< [m] largest centroid-corner distance, slightly widened
+  };
+  std::vector<FaceBound> bound_;
   std::vector<std::array<std::uint32_t, 3>> face_edge_; // edge k of face f: global id
   std::vector<std::array<std::uint32_t, 2>> edge_face_; // adjacent faces (second = ~0u: none)
   std::vector<std::array<std::uint32_t, 2>> edge_vertex_;

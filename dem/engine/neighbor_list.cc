@@ -73,13 +73,15 @@ void NeighborList::bin(const Particles& p, const CellGrid& grid) {
   const int nx = grid.nx, ny = grid.ny, nz = grid.nz;
   cell_of_.resize(n_all);
   cell_start_.assign(n_cells + 1, 0);
+#pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n_all; ++i) {
     const Vec3& x = p.position[i];
     cell_of_[i] = static_cast<std::uint32_t>(
         (std::size_t(grid.coord(x, 2, nz)) * ny + grid.coord(x, 1, ny)) * nx +
         grid.coord(x, 0, nx));
-    ++cell_start_[cell_of_[i] + 1];
   }
+  for (std::size_t i = 0; i < n_all; ++i)
+    ++cell_start_[cell_of_[i] + 1];
   for (std::size_t c = 0; c < n_cells; ++c)
     cell_start_[c + 1] += cell_start_[c];
   cell_items_.resize(n_all);

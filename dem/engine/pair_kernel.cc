@@ -32,24 +32,28 @@ namespace {
 
 /// Pass 1: the distance of every listed pair; the touching ones are compacted into the block
 /// without a branch, and a pair that no longer touches loses its history. Returns the count.
+/// Only a pair that touched at the last evaluation can hold a history (touching[] says which),
+/// so the histories are written only where a contact ends, a rare, well predicted branch.
 [[gnu::always_inline]] inline int compact_touching(const PairKernelData& d, const std::uint32_t* pi,
                                                    const std::uint32_t* pj, Vec3* history,
-                                                   int n_listed, PairBlock& bl) {
+                                                   std::uint8_t* touching, int n_listed,
+                                                   PairBlock& bl) {
   int m = 0;
   for (int q = 0; q < n_listed; ++q) {
-    const Vec3 x = d.position[pi[q]] - d.position[pj[q]];
-    const double dist2 = meshes::norm2(x), rs = d.radius[pi[q]] + d.radius[pj[q]];
+    const PackedPosition& a = d.position[pi[q]];
+    const PackedPosition& b = d.position[pj[q]];
+    const double dx = a.x - b.x, dy = a.y - b.y, dz = a.z - b.z;
+    const double dist2 = dx * dx + dy * dy + dz * dz, rs = a.r + b.r;
     const bool touch = dist2 < rs * rs;
     bl.pair[m] = std::uint32_t(q);
-    bl.dx[m] = x.x;
-    bl.dy[m] = x.y;
-    bl.dz[m] = x.z;
+    bl.dx[m] = dx;
+    bl.dy[m] = dy;
+    bl.dz[m] = dz;
     bl.dist2[m] = dist2;
     m += touch;
-    Vec3& h = history[q];
-    h.x = touch ? h.x : 0.0;
-    h.y = touch ? h.y : 0.0;
-    h.z = touch ? h.z : 0.0;
+    if (touching[q] > std::uint8_t(touch))
+      history[q] = {};
+    touching[q] = std::uint8_t(touch);
   }
   return m;
 }
@@ -60,7 +64,7 @@ namespace {
 [[gnu::always_inline]] inline void pair_geometry(const PairKernelData& d, const PairBlock& bl,
                                                  int c, std::uint32_t i, std::uint32_t j,
                                                  ContactGeometry& g) {
-  const double ri = d.radius[i], rj = d.radius[j], rs = ri + rj;
+  const double ri = d.position[i].r, rj = d.position[j].r, rs = ri + rj;
   const double mi = d.mass[i], mj = d.mass[j];
   const double dist = std::sqrt(bl.dist2[c]);
   const double inv = 1.0 / dist;
@@ -118,11 +122,14 @@ namespace {
 }
 
 /// Pass 3: histories, forces and torques of the m contacts scattered in list order; a
-/// ghost's go to its owner, rotated by +angle.
+/// ghost's go to its owner, rotated by +angle; those on a particle another thread owns go to
+/// d.foreign. The listed first particle is always this thread's, the second is when it is
+/// real and below own_end (a real partner is listed after the first).
 [[gnu::always_inline]] inline void scatter(const PairKernelData& d, const std::uint32_t* pi,
                                            const std::uint32_t* pj, Vec3* history, int m,
                                            const PairBlock& bl, Vec3* force, Vec3* torque) {
   const double co = d.cos_angle, si = d.sin_angle;
+  ForeignForces& out = *d.foreign;
   for (int c = 0; c < m; ++c) {
     const std::uint32_t q = bl.pair[c], i = pi[q], j = pj[q];
     history[q] = {bl.hx[c], bl.hy[c], bl.hz[c]};
@@ -130,13 +137,25 @@ namespace {
     const Vec3 tj{bl.tjx[c], bl.tjy[c], bl.tjz[c]};
     force[i] += f;
     torque[i] += Vec3{bl.tix[c], bl.tiy[c], bl.tiz[c]};
-    if (j < d.n_real) {
+    if (j < d.own_end) {
       force[j] -= f;
       torque[j] += tj;
+      continue;
+    }
+    std::uint32_t o = j;
+    Vec3 fo = -f, to = tj;
+    if (j >= d.n_real) {
+      o = d.ghost_owner[j - d.n_real];
+      fo = -Vec3{co * f.x - si * f.y, si * f.x + co * f.y, f.z};
+      to = Vec3{co * tj.x - si * tj.y, si * tj.x + co * tj.y, tj.z};
+    }
+    if (o >= d.own_begin && o < d.own_end) {
+      force[o] += fo;
+      torque[o] += to;
     } else {
-      const std::uint32_t o = d.ghost_owner[j - d.n_real];
-      force[o] -= Vec3{co * f.x - si * f.y, si * f.x + co * f.y, f.z};
-      torque[o] += Vec3{co * tj.x - si * tj.y, si * tj.x + co * tj.y, tj.z};
+      out.target[out.n] = o;
+      out.force[out.n] = fo;
+      out.torque[out.n++] = to;
     }
   }
 }
@@ -151,7 +170,7 @@ int pair_block_forces(const PairKernelData& d, std::size_t k0, int n_listed, Pai
   const std::uint32_t* pi = d.pair_i + k0;
   const std::uint32_t* pj = d.pair_j + k0;
   Vec3* history = d.history + k0;
-  const int m = compact_touching(d, pi, pj, history, n_listed, bl);
+  const int m = compact_touching(d, pi, pj, history, d.touching + k0, n_listed, bl);
   contact_law_lanes(d, pi, pj, history, m, bl);
   scatter(d, pi, pj, history, m, bl, force, torque);
   return m;

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 namespace wear::dem {
 
@@ -24,28 +25,47 @@ struct alignas(64) PairBlock {
   double tix[n], tiy[n], tiz[n], tjx[n], tjy[n], tjz[n]; ///< [N m] on i and on j
 };
 
-/// What the kernel reads and writes, shared by all blocks of a step.
+/// Position and radius of one particle slot in one 32-byte record: the distance test of a
+/// listed pair reads one cache line per partner.
+struct alignas(32) PackedPosition {
+  double x, y, z; ///< [m]
+  double r;       ///< [m]
+};
+
+/// Forces of one thread's contacts on particles that another thread owns, kept aside and
+/// added after the evaluation in thread order (the threads never write the same particle).
+/// Sized at each rebuild to the thread's listed pairs with such a partner.
+struct ForeignForces {
+  std::vector<std::uint32_t> target; ///< real particle each entry goes to
+  std::vector<Vec3> force, torque;   ///< [N], [N m] on it
+  std::size_t n = 0;                 ///< entries of the current evaluation
+};
+
+/// What the kernel reads and writes, shared by all blocks of one thread's evaluation.
 struct PairKernelData {
-  const Vec3* position;         ///< [m] real and ghost slots
-  const Vec3* velocity;         ///< [m/s]
-  const Vec3* angular_velocity; ///< [rad/s]
-  const double* radius;         ///< [m]
-  const double* mass;           ///< [kg]
-  const int* material;          ///< material id
+  const PackedPosition* position; ///< [m] real and ghost slots
+  const Vec3* velocity;           ///< [m/s]
+  const Vec3* angular_velocity;   ///< [rad/s]
+  const double* mass;             ///< [kg]
+  const int* material;            ///< material id
   const std::uint32_t *pair_i, *pair_j;
   const ContactParameters* contact; ///< table indexed by material_i x n_materials + material_j
   int n_materials;
   Vec3* history;                    ///< [m] per listed pair, updated
+  std::uint8_t* touching;           ///< per listed pair: in contact at the last evaluation
   const std::uint32_t* ghost_owner; ///< real particle behind ghost slot j - n_real
   std::size_t n_real;
-  double cos_angle, sin_angle; ///< [-] of the periodic sector angle (ghost forces go back)
-  double dt;                   ///< [s]
+  std::uint32_t own_begin, own_end; ///< the particles this thread owns
+  ForeignForces* foreign;           ///< where forces on the other particles go
+  double cos_angle, sin_angle;      ///< [-] of the periodic sector angle (ghost forces go back)
+  double dt;                        ///< [s]
 };
 
 /// Pairs [k0, k0 + n_listed): updates their histories and adds their forces and torques into
-/// `force` and `torque` (indexed by particle; a ghost's go to its owner, rotated by +angle).
-/// Returns the number of pairs in contact. Built for several instruction sets, chosen at load
-/// time for the CPU; the same CPU and thread count give bitwise identical results.
+/// `force` and `torque` (indexed by particle; a ghost's go to its owner, rotated by +angle), or
+/// into d.foreign for a particle outside [own_begin, own_end). Returns the number of pairs in
+/// contact. Built for several instruction sets, chosen at load time for the CPU; the same CPU
+/// and thread count give bitwise identical results.
 int pair_block_forces(const PairKernelData& d, std::size_t k0, int n_listed, PairBlock& bl,
                       Vec3* force, Vec3* torque);
 

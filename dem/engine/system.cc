@@ -34,6 +34,8 @@ int System::add_wall(const MeshWall& wall) {
   if (wall.material() < 0 || wall.material() >= materials.n_materials())
     throw std::invalid_argument("wall '" + wall.name() + "' refers to an unknown material");
   walls_.push_back(wall);
+  wall_kind_.push_back(WallKind::mesh);
+  wall_local_.push_back(std::int32_t(walls_.size() - 1));
   return n_walls() - 1;
 }
 
@@ -96,7 +98,6 @@ void System::setup() {
   rebuild();
   reset_forces();
   compute_forces();
-  collect_forces();
 }
 
 void System::set_n_threads(int n) {
@@ -104,20 +105,12 @@ void System::set_n_threads(int n) {
     throw std::invalid_argument("DEM: the thread count must be at least 1");
   n_threads_ = n;
   omp_set_num_threads(n); // every parallel loop of the engine uses the same count
-  wear_acc_.assign(n_threads_, {});
-  for (auto& t : wear_acc_) {
-    t.resize(walls_.size());
-    for (std::size_t w = 0; w < walls_.size(); ++w)
-      if (walls_[w].wearing())
-        t[w].assign(8 * walls_[w].n_faces() + 8, 0.0);
-  }
-  force_buffer_.assign(n_threads_, {});
-  torque_buffer_.assign(n_threads_, {});
-  for (int t = 1; t < n_threads_; ++t) {
-    force_buffer_[t].assign(particles.n_real, {});
-    torque_buffer_[t].assign(particles.n_real, {});
-  }
+  size_wear_accumulators();
+  foreign_.assign(n_threads_, {});
   pair_block_.resize(n_threads_);
+  thread_pair_seconds_.assign(n_threads_, 0.0);
+  thread_wall_seconds_.assign(n_threads_, 0.0);
+  phase_times_ = {};
   error_particle_.assign(n_threads_, -1);
   error_kind_.assign(n_threads_, no_error);
   if (!particle_cost_.empty())
@@ -203,19 +196,23 @@ void System::advance(bool close_previous) {
   const double trigger = 0.25 * skin_ * skin_; // half the skin, squared
   const Vec3 gravity = settings.gravity;
   int need_rebuild = 0;
+  const double t_begin = omp_get_wtime();
 #pragma omp parallel num_threads(n_threads_) reduction(max : need_rebuild)
   {
     const int thread = omp_get_thread_num();
     const auto [i0, i1] = kick_range(thread);
     for (std::size_t i = i0; i < i1; ++i) {
-      Vec3 f, t;
-      sum_forces(i, f, t);
+      const Vec3 f = p.force[i], t = p.torque[i];
       if (close_previous)
         closing_kick(i, f, t);
       const double im = 1.0 / p.mass[i], ii = 1.0 / p.inertia[i];
       p.velocity[i] += f * (h * im);
       p.angular_velocity[i] += t * (h * ii);
       p.position[i] += p.velocity[i] * dt_;
+      PackedPosition& packed = packed_position_[i];
+      packed.x = p.position[i].x;
+      packed.y = p.position[i].y;
+      packed.z = p.position[i].z;
       // The force is used; it restarts from gravity for this step's evaluation.
       p.force[i] = gravity * p.mass[i];
       p.torque[i] = {};
@@ -237,10 +234,15 @@ void System::advance(bool close_previous) {
   for (int t = 0; t < n_threads_; ++t)
     if (error_kind_[t] != no_error)
       check_particles_or_throw("in the drift");
-  if (need_rebuild)
+  const double t_drift = omp_get_wtime();
+  phase_times_.integration += t_drift - t_begin;
+  if (need_rebuild) {
     rebuild(true);
-  else
+    phase_times_.rebuild += omp_get_wtime() - t_drift;
+  } else {
     refresh_ghosts();
+    phase_times_.integration += omp_get_wtime() - t_drift;
+  }
   compute_forces();
   for (int t = 0; t < n_threads_; ++t)
     if (error_kind_[t] != no_error)
@@ -249,14 +251,14 @@ void System::advance(bool close_previous) {
 
 void System::close_step() {
   auto& p = particles;
+  const double t_begin = omp_get_wtime();
 #pragma omp parallel num_threads(n_threads_)
   {
     const auto [i0, i1] = kick_range(omp_get_thread_num());
-    for (std::size_t i = i0; i < i1; ++i) {
-      sum_forces(i, p.force[i], p.torque[i]);
+    for (std::size_t i = i0; i < i1; ++i)
       closing_kick(i, p.force[i], p.torque[i]);
-    }
   }
+  phase_times_.integration += omp_get_wtime() - t_begin;
   time_ += dt_;
   ++n_steps_;
 }
@@ -277,22 +279,40 @@ void System::closing_kick(std::size_t i, const Vec3& f, const Vec3& t) {
 void System::compute_forces() {
   auto& p = particles;
   std::size_t n_contacts = 0;
+  const double t_begin = omp_get_wtime();
   // One region, no barrier inside: every thread adds to its own arrays only.
 #pragma omp parallel num_threads(n_threads_) reduction(+ : n_contacts)
   {
     const int thread = omp_get_thread_num();
-    Vec3* F = thread == 0 ? p.force.data() : force_buffer_[thread].data();
-    Vec3* T = thread == 0 ? p.torque.data() : torque_buffer_[thread].data();
+    Vec3* F = p.force.data();
+    Vec3* T = p.torque.data();
+    const double t0 = omp_get_wtime();
     n_contacts += pair_forces(thread, F, T);
+    const double t1 = omp_get_wtime();
     wall_forces(thread, F, T);
+    thread_pair_seconds_[thread] = t1 - t0;
+    thread_wall_seconds_[thread] = omp_get_wtime() - t1;
   }
+  const double region = omp_get_wtime() - t_begin;
+  apply_foreign_forces();
   n_pair_contacts_ = n_contacts;
+  for (int t = 0; t < n_threads_; ++t) {
+    phase_times_.pair += thread_pair_seconds_[t] / n_threads_;
+    phase_times_.wall += thread_wall_seconds_[t] / n_threads_;
+    phase_times_.wait += (region - thread_pair_seconds_[t] - thread_wall_seconds_[t]) / n_threads_;
+  }
+  ++phase_times_.n_steps;
 }
 
-void System::collect_forces() {
+void System::apply_foreign_forces() {
   auto& p = particles;
-  for (std::size_t i = 0; i < p.n_real; ++i)
-    sum_forces(i, p.force[i], p.torque[i]);
+  for (auto& t : foreign_) {
+    for (std::size_t k = 0; k < t.n; ++k) {
+      p.force[t.target[k]] += t.force[k];
+      p.torque[t.target[k]] += t.torque[k];
+    }
+    t.n = 0;
+  }
 }
 
 void System::reset_forces() {
@@ -322,17 +342,7 @@ Energy System::energy() const {
     e.elastic += 8.0 / 15.0 * c.e_star * std::sqrt(r) * std::pow(d, 2.5) +
                  4 * c.g_star * std::sqrt(r * d) * meshes::norm2(pair_history_[k]);
   }
-  for (std::size_t i = 0; i < p.n_real; ++i)
-    for (auto k = wall_candidate_offset_[i]; k < wall_candidate_offset_[i + 1]; ++k) {
-      const auto& w = walls_[wall_candidate_[k] >> 24];
-      const std::uint32_t f = wall_candidate_[k] & 0xFFFFFFu;
-      const auto cf = w.closest(f, p.position[i]);
-      const double d = p.radius[i] - meshes::norm(p.position[i] - cf.point);
-      if (d <= 0 || !w.owns_contact(f, cf, p.position[i]))
-        continue;
-      const auto& c = contact_[p.material[i] * n_mat_ + w.material()];
-      e.elastic += 8.0 / 15.0 * c.e_star * std::sqrt(p.radius[i]) * std::pow(d, 2.5);
-    }
+  add_wall_elastic_energy(e.elastic);
   return e;
 }
 
@@ -340,37 +350,41 @@ double System::bytes_per_particle() const {
   const auto& p = particles;
   const double n = double(std::max<std::size_t>(1, p.n_real));
   const double per_slot = 5 * sizeof(Vec3) + 3 * sizeof(double) + sizeof(int) + 8;
-  double bytes = per_slot * p.position.size() + sizeof(Vec3) * reference_position_.size() +
-                 sizeof(std::uint32_t) * wall_candidate_offset_.size() +
-                 (n_threads_ - 1) * 2 * sizeof(Vec3) * p.n_real + sizeof(WallSlot) * slots_.size();
+  std::size_t foreign = 0;
+  for (const auto& t : foreign_)
+    foreign += t.target.size() * (sizeof(std::uint32_t) + 2 * sizeof(Vec3));
+  double bytes = (per_slot + sizeof(PackedPosition)) * p.position.size() +
+                 sizeof(Vec3) * reference_position_.size() +
+                 sizeof(std::uint32_t) * wall_candidate_offset_.size() + double(foreign) +
+                 sizeof(WallSlot) * slots_.size();
   return (bytes + sizeof(PairBlock) * pair_block_.size()) / n;
 }
 
 void System::set_wall_vertices(int w, const std::vector<Vec3>& vertices) {
-  walls_.at(w).set_vertices(vertices);
+  walls_[mesh_index(w, "set_wall_vertices")].set_vertices(vertices);
   if (set_up_) {
     rebuild();
   }
 }
 
 void System::replace_wall_mesh(int w, const meshes::SurfaceMesh& mesh) {
-  const MeshWall& old = walls_.at(w);
+  const std::size_t m = mesh_index(w, "replace_wall_mesh");
+  const MeshWall& old = walls_[m];
   MeshWall wall(mesh, old.material(), old.motion(), old.wearing(), old.name());
-  walls_[w] = std::move(wall);
+  walls_[m] = std::move(wall);
   if (!set_up_)
     return;
-  walls_[w].build_grid(r_max_ + skin_);
+  walls_[m].build_grid(r_max_ + skin_);
   for (auto& t : wear_acc_)
-    if (walls_[w].wearing())
-      t[w].assign(8 * walls_[w].n_faces() + 8, 0.0);
+    if (walls_[m].wearing())
+      t[w].assign(8 * walls_[m].n_faces() + 8, 0.0);
   rebuild();
 }
 
 WearIntegrals System::wear_integrals(int w) const {
-  const auto& wall = walls_.at(w);
-  if (!wall.wearing())
-    throw std::invalid_argument("wall '" + wall.name() + "' is not a wearing wall");
-  const std::size_t nf = wall.n_faces();
+  if (!wall_wearing(w))
+    throw std::invalid_argument("wall '" + wall_name(w) + "' is not a wearing wall");
+  const std::size_t nf = wall_faces(w);
   WearIntegrals r;
   r.impulse.assign(nf, {});
   r.normal_impulse.assign(nf, 0);

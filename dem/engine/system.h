@@ -5,6 +5,7 @@
 #include "dem/engine/neighbor_list.h"
 #include "dem/engine/pair_kernel.h"
 #include "dem/engine/particles.h"
+#include "dem/engine/revolution_wall.h"
 
 #include <cstdint>
 #include <string>
@@ -74,6 +75,19 @@ struct SystemState {
   int n_threads = 0;
 };
 
+/// Wall-clock time of the step loop's phases, summed since the last reset_phase_times() [s].
+/// The force evaluation's parts are averaged over the threads; `wait` is the time a thread
+/// spends in the force evaluation's parallel region beyond its own pairs and walls (the fork,
+/// the join and the imbalance of the split).
+struct PhaseTimes {
+  double pair = 0;        ///< [s] pair kernel
+  double wall = 0;        ///< [s] particle-wall contacts
+  double wait = 0;        ///< [s] idle in the force evaluation
+  double integration = 0; ///< [s] kicks, drift, ghost refresh
+  double rebuild = 0;     ///< [s] neighbour-list rebuilds
+  std::uint64_t n_steps = 0;
+};
+
 struct Energy {
   double kinetic = 0, rotational = 0, potential = 0, elastic = 0; ///< [J]
   double total() const { return kinetic + rotational + potential + elastic; }
@@ -85,10 +99,16 @@ public:
   Particles particles;
   DemSettings settings;
 
-  /// Adds a wall; returns its index. Before setup() only.
+  /// Adds a wall; returns its index. Before setup() only. Mesh and revolution walls share one
+  /// numbering (candidates, wall slots, wear integrals); a revolution wall lists face 0.
   int add_wall(const MeshWall& wall);
-  const MeshWall& wall(int w) const { return walls_.at(w); }
-  int n_walls() const { return static_cast<int>(walls_.size()); }
+  int add_wall(const RevolutionWall& wall);
+  /// Mesh wall w; throws std::invalid_argument for a revolution wall.
+  const MeshWall& wall(int w) const;
+  /// Revolution wall w; throws std::invalid_argument for a mesh wall.
+  const RevolutionWall& revolution_wall(int w) const;
+  WallKind wall_kind(int w) const { return wall_kind_.at(w); }
+  int n_walls() const { return static_cast<int>(wall_kind_.size()); }
 
   /// Checks the input, fixes the time step, builds lists and initial forces. Throws with a
   /// message naming what is wrong (time step, material, overlap, particle outside domain).
@@ -116,10 +136,13 @@ public:
             wall_candidate_.data() + wall_candidate_offset_.at(i + 1)};
   }
   Energy energy() const;
+  /// Time spent per phase since the last reset (a reset also happens at set_n_threads()).
+  const PhaseTimes& phase_times() const { return phase_times_; }
+  void reset_phase_times() { phase_times_ = {}; }
   /// Bytes held per particle by the engine's arrays, excluding contact history.
   double bytes_per_particle() const;
 
-  void set_wall_motion(int w, const WallMotion& m) { walls_.at(w).set_motion(m); }
+  void set_wall_motion(int w, const WallMotion& m);
   /// Moves the vertices of wall w (same topology, e.g. a worn surface) and rebuilds the
   /// contact candidates; contact histories are kept.
   void set_wall_vertices(int w, const std::vector<Vec3>& vertices);
@@ -178,20 +201,13 @@ private:
   std::pair<std::size_t, std::size_t> kick_range(int thread) const;
   /// v += dt/2 F/m, w += dt/2 T/I for particle i.
   void closing_kick(std::size_t i, const Vec3& f, const Vec3& t);
-  void reset_forces();   ///< gravity only, no torque: where the pair loop starts from
-  void collect_forces(); ///< sums the threads' forces into the particles' arrays
-  /// The force and torque on particle i: its own arrays plus the other threads' buffers, in
-  /// thread order; the buffers are zeroed for the next evaluation.
-  void sum_forces(std::size_t i, Vec3& f, Vec3& t) {
-    f = particles.force[i];
-    t = particles.torque[i];
-    for (int th = 1; th < n_threads_; ++th) {
-      f += force_buffer_[th][i];
-      t += torque_buffer_[th][i];
-      force_buffer_[th][i] = torque_buffer_[th][i] = {};
-    }
-  }
+  void reset_forces(); ///< gravity only, no torque: where the pair loop starts from
+  /// Adds the forces the threads kept for particles they do not own, in thread order.
+  void apply_foreign_forces();
   void refresh_ghosts();
+  /// The kernel's copies of the particle data (packed positions, which pairs touch) from the
+  /// particles' arrays and the pair histories: after a rebuild or a resumed state.
+  void pack_particles();
   void sort_spatially();
   void compute_forces();
   /// The pairs and near-wall particles owned by `thread`; forces and torques are added to F
@@ -208,7 +224,18 @@ private:
   /// Ghost slots of ghost_owner_ with their owners' properties and current state.
   void fill_ghost_slots();
 
+  // Walls in one numbering w: wall_kind_[w] says which array holds it, at wall_local_[w].
   std::vector<MeshWall> walls_;
+  std::vector<RevolutionWall> revolution_walls_;
+  std::vector<WallKind> wall_kind_;
+  std::vector<std::int32_t> wall_local_;
+  const std::string& wall_name(int w) const;
+  bool wall_wearing(int w) const;
+  std::size_t wall_faces(int w) const; ///< faces of its wear accounting
+  void size_wear_accumulators();       ///< wear_acc_ for n_threads_ threads, zeroed
+  /// The index in walls_ of mesh wall w; `what` names the caller in the error for another kind.
+  std::size_t mesh_index(int w, const char* what) const;
+  void add_wall_elastic_energy(double& e) const; ///< adds the wall contacts' Hertz energy [J]
   std::vector<ContactParameters> contact_;
   int n_mat_ = 0;
   NeighborList neighbors_;
@@ -233,9 +260,12 @@ private:
   std::vector<std::size_t> owner_split_, pair_split_, wall_split_;
   void count_particle_costs();
   void split_ownership();
-  // Forces of thread 0 go to the particles' own arrays, those of thread t > 0 to its buffers;
-  // the kick sums them in thread order and zeroes the buffers.
-  std::vector<std::vector<Vec3>> force_buffer_, torque_buffer_;
+  void size_foreign_forces(); ///< foreign_ for the current split
+  // Every thread adds the forces on the particles it owns into their own arrays; those on
+  // other particles go to its ForeignForces, added after the evaluation in thread order.
+  std::vector<ForeignForces> foreign_;
+  std::vector<PackedPosition> packed_position_; // position and radius per slot, for the kernel
+  std::vector<std::uint8_t> pair_touching_;     // per listed pair: touched at the last evaluation
   std::size_t n_pair_contacts_ = 0;
   std::vector<Vec3> reference_position_;
 
@@ -257,6 +287,9 @@ private:
                                    const Vec3& normal);
   // Per thread, per wearing wall: 8 doubles per face + totals.
   std::vector<std::vector<std::vector<double>>> wear_acc_;
+
+  PhaseTimes phase_times_;
+  std::vector<double> thread_pair_seconds_, thread_wall_seconds_; // of the last evaluation
 
   // First problem seen inside a parallel loop (smallest particle index wins).
   std::vector<long> error_particle_;

@@ -7,11 +7,15 @@
 // the deepest: on a finely tessellated concave surface (a worn fillet) each triangle's
 // interior is its own distance minimum, and counting them all would stiffen the contact
 // several times and overflow the slots; distinct contacts (a particle in a corner between an
-// element flank and the base) differ by more.
+// element flank and the base) differ by more. A revolution wall (revolution_wall.h) gives at
+// most one contact, at its exact closest point, through the same slots, merge rule and law;
+// on a wearing one the contact's integrals go whole to its accounting face under that point.
 //
-// Pair forces are accumulated per thread (thread 0 into the particles' own arrays) and
-// summed in thread order, so a run is bitwise reproducible for a given thread count.
-// Wear integrals are accumulated per thread and summed in thread order.
+// Each thread adds the forces on the particles it owns into their own arrays; a force on a
+// particle another thread owns (across the boundary between the threads' ranges, or a ghost's
+// owner) is kept aside and added after the evaluation in thread order, so a run is bitwise
+// reproducible for a given thread count. Wear integrals are accumulated per thread and summed
+// in thread order.
 #include "dem/engine/contact_law.h"
 #include "dem/engine/pair_kernel.h"
 #include "dem/engine/system.h"
@@ -34,16 +38,37 @@ constexpr int max_wall_candidates = 32;
 /// Contacts of one wall whose normals differ by less than 25 degrees are one contact.
 const double cos_merge_angle = std::cos(25.0 * 3.14159265358979323846 / 180.0);
 
+/// The System's walls of both kinds, by wall number w (System::wall_kind_, wall_local_).
+struct WallTable {
+  const WallKind* kind;
+  const std::int32_t* local;
+  const MeshWall* mesh;
+  const RevolutionWall* revolution;
+};
+
 /// The contacts of a particle (centre x, radius r) on its candidate faces [b, e), each
-/// (wall << 24) | face, into `found`: faces it overlaps whose closest feature it owns. Returns
-/// their count, or -1 when there are more than max_wall_candidates.
-[[gnu::always_inline]] inline int find_wall_contacts(const std::vector<MeshWall>& walls,
-                                                     const std::uint32_t* b, const std::uint32_t* e,
-                                                     const Vec3& x, double r, Candidate* found) {
+/// (wall << 24) | face, into `found`: faces it overlaps whose closest feature it owns, and
+/// revolution walls it overlaps (at their exact closest point, feature "face", face 0).
+/// Returns their count, or -1 when there are more than max_wall_candidates.
+[[gnu::always_inline]] inline int find_wall_contacts(const WallTable& walls, const std::uint32_t* b,
+                                                     const std::uint32_t* e, const Vec3& x,
+                                                     double r, Candidate* found) {
   int n_found = 0;
   for (; b != e; ++b) {
     const std::uint32_t w = *b >> 24, f = *b & 0xFFFFFFu;
-    const MeshWall& wall = walls[w];
+    if (walls.kind[w] == WallKind::revolution) {
+      const Vec3 point = walls.revolution[walls.local[w]].closest(x);
+      const Vec3 d = x - point;
+      const double dist2 = meshes::norm2(d);
+      if (dist2 >= r * r || dist2 == 0)
+        continue;
+      if (n_found == max_wall_candidates)
+        return -1;
+      const double dist = std::sqrt(dist2);
+      found[n_found++] = {{point, Feature::face, 0}, d / dist, dist, w, 0};
+      continue;
+    }
+    const MeshWall& wall = walls.mesh[walls.local[w]];
     if (wall.plane_distance(f, x) >= r || wall.beyond_bound(f, x, r))
       continue;
     const ClosestFeature cf = wall.closest(f, x);
@@ -71,11 +96,10 @@ const double cos_merge_angle = std::cos(25.0 * 3.14159265358979323846 / 180.0);
   return merged;
 }
 
-/// The contact geometry of particle i with a wall at contact `cand`.
-[[gnu::always_inline]] inline ContactGeometry wall_contact_geometry(const Particles& p,
-                                                                    std::size_t i,
-                                                                    const MeshWall& wall,
-                                                                    const Candidate& cand) {
+/// The contact geometry of particle i with a wall (MeshWall or RevolutionWall) at `cand`.
+template <class Wall>
+[[gnu::always_inline]] inline ContactGeometry
+wall_contact_geometry(const Particles& p, std::size_t i, const Wall& wall, const Candidate& cand) {
   const double r = p.radius[i];
   ContactGeometry g;
   g.normal = cand.normal;
@@ -91,16 +115,30 @@ const double cos_merge_angle = std::cos(25.0 * 3.14159265358979323846 / 180.0);
   return g;
 }
 
+/// The faces that take a contact's wear and their shares: on a mesh wall those sharing the
+/// contact's feature; on a revolution wall the accounting face under the contact point.
+inline int wear_faces(const MeshWall& wall, const Candidate& cand, std::uint32_t* faces,
+                      double* shares) {
+  return wall.faces_sharing(cand.face, cand.feature, faces, shares, 32);
+}
+inline int wear_faces(const RevolutionWall& wall, const Candidate& cand, std::uint32_t* faces,
+                      double* shares) {
+  faces[0] = wall.accounting_face(cand.feature.point);
+  shares[0] = 1;
+  return 1;
+}
+
 /// Adds one contact's wear integrals over a step dt to a wearing wall's accumulator `a`: to
-/// the faces sharing the contact's feature, by their shares (8 entries per face: impulse,
+/// the faces that take it (wear_faces), by their shares (8 entries per face: impulse,
 /// normal impulse, Archard integral, sliding work, contact-steps), and undivided to the totals
 /// after the last face.
-[[gnu::always_inline]] inline void add_wear(std::vector<double>& a, const MeshWall& wall,
+template <class Wall>
+[[gnu::always_inline]] inline void add_wear(std::vector<double>& a, const Wall& wall,
                                             const Candidate& cand, const ContactResult& res,
                                             double dt) {
   std::uint32_t faces[32];
   double shares[32];
-  const int n_faces = wall.faces_sharing(cand.face, cand.feature, faces, shares, 32);
+  const int n_faces = wear_faces(wall, cand, faces, shares);
   const Vec3 impulse = res.force * (-dt);
   const double fn_dt = res.normal_force * dt;
   const double archard = fn_dt * meshes::norm(res.v_tangential);
@@ -128,10 +166,9 @@ const double cos_merge_angle = std::cos(25.0 * 3.14159265358979323846 / 180.0);
 
 std::size_t System::pair_forces(int thread, Vec3* F, Vec3* T) {
   auto& p = particles;
-  const PairKernelData kernel{p.position.data(),
+  const PairKernelData kernel{packed_position_.data(),
                               p.velocity.data(),
                               p.angular_velocity.data(),
-                              p.radius.data(),
                               p.mass.data(),
                               p.material.data(),
                               neighbors_.pair_i.data(),
@@ -139,8 +176,12 @@ std::size_t System::pair_forces(int thread, Vec3* F, Vec3* T) {
                               contact_.data(),
                               n_mat_,
                               pair_history_.data(),
+                              pair_touching_.data(),
                               ghost_owner_.data(),
                               p.n_real,
+                              std::uint32_t(owner_split_[thread]),
+                              std::uint32_t(owner_split_[thread + 1]),
+                              &foreign_[thread],
                               cos_t_,
                               sin_t_,
                               dt_};
@@ -180,6 +221,8 @@ void System::wall_forces(int thread, Vec3* F, Vec3* T) {
   // Scratch of one particle, declared once: default-initialising it per particle cost more
   // than the contacts themselves.
   Candidate found[max_wall_candidates];
+  const WallTable walls{wall_kind_.data(), wall_local_.data(), walls_.data(),
+                        revolution_walls_.data()};
   std::int32_t new_wall[wall_slots];
   Vec3 new_normal[wall_slots], new_delta[wall_slots];
   for (std::size_t q = wall_split_[thread]; q < wall_split_[thread + 1]; ++q) {
@@ -187,7 +230,7 @@ void System::wall_forces(int thread, Vec3* F, Vec3* T) {
     const Vec3 x = p.position[i];
     const std::uint32_t* candidates = wall_candidate_.data();
     const int n_found =
-        find_wall_contacts(walls_, candidates + wall_candidate_offset_[i],
+        find_wall_contacts(walls, candidates + wall_candidate_offset_[i],
                            candidates + wall_candidate_offset_[i + 1], x, p.radius[i], found);
     bool overflow = n_found < 0;
     bool taken[wall_slots] = {}; // old slots whose history went to a new contact
@@ -201,19 +244,25 @@ void System::wall_forces(int thread, Vec3* F, Vec3* T) {
         break;
       }
       const Candidate& cand = found[c];
-      const MeshWall& wall = walls_[cand.wall];
-      const ContactGeometry g = wall_contact_geometry(p, i, wall, cand);
+      // One of the two is the contact's wall; a branch per contact, no virtual call.
+      const bool revolution = walls.kind[cand.wall] == WallKind::revolution;
+      const MeshWall* mesh = revolution ? nullptr : &walls.mesh[walls.local[cand.wall]];
+      const RevolutionWall* rev = revolution ? &walls.revolution[walls.local[cand.wall]] : nullptr;
+      const ContactGeometry g = revolution ? wall_contact_geometry(p, i, *rev, cand)
+                                           : wall_contact_geometry(p, i, *mesh, cand);
+      const int material = revolution ? rev->material() : mesh->material();
       Vec3 delta = carried_wall_history(&slots_[wall_slots * q], taken, cand.wall, g.normal);
-      const auto res =
-          hertz_mindlin(contact_[p.material[i] * n_mat_ + wall.material()], g, dt, delta);
+      const auto res = hertz_mindlin(contact_[p.material[i] * n_mat_ + material], g, dt, delta);
       f_sum += res.force;
       t_sum += res.torque_i;
       new_wall[n_new] = std::int32_t(cand.wall);
       new_normal[n_new] = g.normal;
       new_delta[n_new] = delta;
       ++n_new;
-      if (wall.wearing())
-        add_wear(acc[cand.wall], wall, cand, res, dt);
+      if (revolution && rev->wearing())
+        add_wear(acc[cand.wall], *rev, cand, res, dt);
+      else if (!revolution && mesh->wearing())
+        add_wear(acc[cand.wall], *mesh, cand, res, dt);
     }
     if (overflow && (error_particle_[thread] < 0 || long(i) < error_particle_[thread])) {
       error_particle_[thread] = long(i);

@@ -97,6 +97,7 @@ void System::rebuild(bool in_step) {
   carry_wall_slots(slots_of_id);
   count_particle_costs();
   split_ownership();
+  pack_particles();
   reference_position_.assign(particles.position.begin(), particles.position.begin() + n);
   ++n_rebuilds_;
 }
@@ -211,6 +212,7 @@ void System::fill_ghost_slots() {
   auto& p = particles;
   const std::size_t n = p.n_real;
   p.resize_ghosts(ghost_owner_.size());
+  packed_position_.resize(p.position.size());
   for (std::size_t g = 0; g < ghost_owner_.size(); ++g) {
     const auto o = ghost_owner_[g];
     p.radius[n + g] = p.radius[o];
@@ -246,20 +248,27 @@ void System::carry_pair_histories(const HistoryTable& old) {
 }
 
 std::vector<std::uint32_t> System::find_wall_candidates() {
-  // Faces within radius + skin/2 of each particle centre. Until the next rebuild no particle
-  // moves more than skin/2 from here (the rebuild trigger), and wall geometry changes only
-  // through set_wall_vertices, which rebuilds; so no other face can be touched. (A pair needs
-  // the whole skin: both partners move.) Widened by a relative 1e-9 against round-off.
+  // Faces within radius + skin/2 of each particle centre (of a revolution wall, its surface).
+  // Until the next rebuild no particle moves more than skin/2 from here (the rebuild
+  // trigger), and wall geometry changes only through set_wall_vertices, which rebuilds; so no
+  // other face can be touched. (A pair needs the whole skin: both partners move.) Widened by a
+  // relative 1e-9 against round-off.
   const auto& p = particles;
   const std::size_t n = p.n_real;
   std::vector<std::uint32_t> count(n, 0);
   const auto scan = [&](std::size_t i, auto&& emit) {
     const Vec3& x = p.position[i];
     const double reach = (p.radius[i] + 0.5 * skin_) * (1 + 1e-9);
-    for (std::size_t w = 0; w < walls_.size(); ++w) {
-      auto [b, e] = walls_[w].candidates(x);
+    for (std::size_t w = 0; w < wall_kind_.size(); ++w) {
+      const std::size_t local = std::size_t(wall_local_[w]);
+      if (wall_kind_[w] == WallKind::revolution) {
+        if (meshes::norm2(revolution_walls_[local].closest(x) - x) < reach * reach)
+          emit(std::uint32_t(w << 24)); // its one "face", 0: the exact closest point
+        continue;
+      }
+      auto [b, e] = walls_[local].candidates(x);
       for (; b != e; ++b)
-        if (meshes::norm2(walls_[w].closest(*b, x).point - x) < reach * reach)
+        if (meshes::norm2(walls_[local].closest(*b, x).point - x) < reach * reach)
           emit(std::uint32_t(w << 24) | *b);
     }
   };
@@ -320,6 +329,7 @@ void System::sort_spatially() {
   const double cell = 2 * r_max_ + skin_;
   std::vector<std::uint64_t> key(n);
   std::vector<std::uint32_t> perm(n);
+#pragma omp parallel for schedule(static) num_threads(n_threads_)
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 q = (p.position[i] - lo) / cell;
     key[i] = (std::uint64_t(q[axis[0]]) << 42) | (std::uint64_t(q[axis[1]]) << 21) |
@@ -328,22 +338,22 @@ void System::sort_spatially() {
   }
   std::stable_sort(perm.begin(), perm.end(),
                    [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
-  const auto apply = [&](auto& v, std::size_t per) {
-    auto copy = v;
+  const auto apply = [&](auto& v) {
+    const auto copy = v;
+#pragma omp parallel for schedule(static) num_threads(n_threads_)
     for (std::size_t k = 0; k < n; ++k)
-      for (std::size_t q = 0; q < per; ++q)
-        v[per * k + q] = copy[per * perm[k] + q];
+      v[k] = copy[perm[k]];
   };
-  apply(p.position, 1);
-  apply(p.velocity, 1);
-  apply(p.angular_velocity, 1);
-  apply(p.force, 1);
-  apply(p.torque, 1);
-  apply(p.radius, 1);
-  apply(p.mass, 1);
-  apply(p.inertia, 1);
-  apply(p.material, 1);
-  apply(p.id, 1);
+  apply(p.position);
+  apply(p.velocity);
+  apply(p.angular_velocity);
+  apply(p.force);
+  apply(p.torque);
+  apply(p.radius);
+  apply(p.mass);
+  apply(p.inertia);
+  apply(p.material);
+  apply(p.id);
 }
 
 void System::refresh_ghosts() {
@@ -353,6 +363,8 @@ void System::refresh_ghosts() {
   for (std::size_t g = 0; g < ghost_owner_.size(); ++g) {
     const auto o = ghost_owner_[g];
     p.position[n + g] = rotate_z(p.position[o], c, s);
+    packed_position_[n + g] = {p.position[n + g].x, p.position[n + g].y, p.position[n + g].z,
+                               p.radius[n + g]};
     p.velocity[n + g] = rotate_z(p.velocity[o], c, s);
     p.angular_velocity[n + g] = rotate_z(p.angular_velocity[o], c, s);
   }
@@ -378,8 +390,18 @@ void System::count_particle_costs() {
     const auto n_candidates = wall_candidate_offset_[i + 1] - wall_candidate_offset_[i];
     particle_cost_[i] = 4.0 * n_candidates + (n_candidates > 0 ? 8.0 : 0.0);
   }
-  for (std::size_t k = 0; k < np; ++k)
-    particle_cost_[neighbors_.pair_i[k]] += 1.0 + 4.0 * pair_touch_[k];
+  // Pairs are listed by their first particle: each thread adds the pairs of a contiguous
+  // range of particles, in list order.
+  const auto& pi = neighbors_.pair_i;
+#pragma omp parallel num_threads(n_threads_)
+  {
+    const std::size_t t = std::size_t(omp_get_thread_num()), nt = std::size_t(n_threads_);
+    const auto first = std::uint32_t(n * t / nt), last = std::uint32_t(n * (t + 1) / nt);
+    const auto k0 = std::size_t(std::lower_bound(pi.begin(), pi.end(), first) - pi.begin());
+    const auto k1 = std::size_t(std::lower_bound(pi.begin(), pi.end(), last) - pi.begin());
+    for (std::size_t k = k0; k < k1; ++k)
+      particle_cost_[pi[k]] += 1.0 + 4.0 * pair_touch_[k];
+  }
 }
 
 void System::split_ownership() {
@@ -412,6 +434,45 @@ void System::split_ownership() {
     wall_split_[t] =
         std::size_t(std::lower_bound(wall_particles_.begin(), wall_particles_.end(), first) -
                     wall_particles_.begin());
+  }
+  size_foreign_forces();
+}
+
+void System::size_foreign_forces() {
+  // Room for every listed pair of a thread whose partner (a ghost's owner) another thread
+  // owns: the most its evaluation can keep aside.
+  const std::size_t n = particles.n_real;
+  foreign_.resize(n_threads_);
+#pragma omp parallel for schedule(static, 1) num_threads(n_threads_)
+  for (int t = 0; t < n_threads_; ++t) {
+    const std::size_t begin = owner_split_[t], end = owner_split_[t + 1];
+    std::size_t count = 0;
+    for (std::size_t k = pair_split_[t]; k < pair_split_[t + 1]; ++k) {
+      const std::uint32_t j = neighbors_.pair_j[k];
+      const std::size_t o = j < n ? j : ghost_owner_[j - n];
+      count += o < begin || o >= end;
+    }
+    ForeignForces& f = foreign_[t];
+    f.target.resize(count);
+    f.force.resize(count);
+    f.torque.resize(count);
+    f.n = 0;
+  }
+}
+
+void System::pack_particles() {
+  const auto& p = particles;
+  packed_position_.resize(p.position.size());
+  pair_touching_.resize(pair_history_.size());
+#pragma omp parallel num_threads(n_threads_)
+  {
+#pragma omp for schedule(static) nowait
+    for (std::size_t i = 0; i < p.position.size(); ++i)
+      packed_position_[i] = {p.position[i].x, p.position[i].y, p.position[i].z, p.radius[i]};
+      // A pair holds a history only while it touches (the kernel clears it when it stops).
+#pragma omp for schedule(static)
+    for (std::size_t k = 0; k < pair_history_.size(); ++k)
+      pair_touching_[k] = meshes::norm2(pair_history_[k]) != 0;
   }
 }
 

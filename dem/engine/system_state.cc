@@ -120,8 +120,12 @@ void System::check_resumable(const SystemState& s) const {
               std::is_sorted(s.wall_candidate_offset.begin(), s.wall_candidate_offset.end()) &&
               s.wall_candidate_offset[n] == s.wall_candidate.size(),
           "wall-candidate offsets do not fit the candidates");
+  // A revolution wall lists face 0 only.
   for (const auto c : s.wall_candidate)
-    require(int(c >> 24) < n_walls() && (c & 0xffffffu) < walls_[c >> 24].n_faces(),
+    require(int(c >> 24) < n_walls() &&
+                (c & 0xffffffu) < (wall_kind_[c >> 24] == WallKind::revolution
+                                       ? 1
+                                       : walls_[std::size_t(wall_local_[c >> 24])].n_faces()),
             "a wall candidate refers to a missing face");
   std::size_t window = 0;
   for (const auto& thread : wear_acc_)
@@ -177,6 +181,7 @@ void System::resume_state(const SystemState& s) {
   wall_candidate_ = s.wall_candidate;
   particle_cost_ = s.particle_cost;
   split_ownership();
+  pack_particles();
   reference_position_ = s.reference_position;
   std::size_t at = 0;
   for (auto& thread : wear_acc_)

@@ -1,8 +1,11 @@
 // Assembly and time loop of the circular wear tester in DEM (docs/wear-tester.md).
 //
 // Frame: z up, the sector 0 <= theta < Theta about the z axis, the bed (floor and both
-// cylinders) rotating at +omega about z, the sample fixed at its placement. The walls are
-// widened a little past both periodic cuts so particles slightly beyond a cut still see them.
+// cylinders) rotating at +omega about z, the sample fixed at its placement. The floor, the
+// cylinders and the consolidator are exact surfaces of revolution (dem::RevolutionWall): the
+// floor and cylinders are full circles, so particles slightly beyond a periodic cut between
+// list rebuilds still see them; the consolidator is the annular sector of
+// meshes::generate_tester_walls. The sample is a triangle-mesh wall.
 // Filling: random insertion from the PSD into an annular sector `loose_factor` times the
 // fill height, leaving out the sample (with a particle diameter of clearance) and the space
 // above the consolidator, then settling with the walls at rest. A revolution is one pass of
@@ -15,7 +18,6 @@
 #include "meshes/sample_generator.h"
 #include "meshes/stopwatch.h"
 #include "meshes/surface_locator.h"
-#include "meshes/tester_walls.h"
 
 #include <omp.h>
 
@@ -34,6 +36,26 @@ void require(bool ok, const std::string& parameter, const std::string& what) {
 
 Material material(const std::string& name, const DemMaterial& m) {
   return {name, 2 * m.shear_modulus * (1 + m.poisson_ratio), m.poisson_ratio, m.density};
+}
+
+/// Floor, cylinders and the consolidator as revolution walls about z, at rest; returns the
+/// walls that turn with the bed (floor, inner, outer).
+std::vector<int> add_tester_walls(System& s, const meshes::TesterGeometry& t, int material) {
+  const auto wall = [&](const RevolutionSurface& surface, const char* name) {
+    return s.add_wall(RevolutionWall(surface, material, {}, false, name));
+  };
+  const double ri = t.inner_radius, ro = t.outer_radius;
+  std::vector<int> rotating{wall(RevolutionSurface::annulus(0, ri, ro), "floor"),
+                            wall(RevolutionSurface::cylinder(ri, 0, t.wall_height), "inner"),
+                            wall(RevolutionSurface::cylinder(ro, 0, t.wall_height), "outer")};
+  if (t.consolidator) {
+    // The plate of meshes::generate_tester_walls: from th0 over its extent e, centred on its
+    // angle.
+    const double e = t.consolidator_extent_deg * pi / 180;
+    const double th0 = t.consolidator_angle_deg * pi / 180 - e / 2;
+    wall(RevolutionSurface::annulus(t.consolidator_height, ri, ro, th0, th0 + e), "consolidator");
+  }
+  return rotating;
 }
 } // namespace
 
@@ -94,19 +116,7 @@ WearTester::WearTester(const meshes::GeometryParameters& geometry, const TesterD
   m.set_pair(sample_material, wall_material, dem_.particle_wall);
   m.set_pair(wall_material, wall_material, dem_.particle_wall);
 
-  const auto walls = meshes::generate_tester_walls(t);
-  const double margin = 0.02; // [rad]
-  const auto widen = [&](const meshes::SurfaceMesh& w) {
-    return t.sector_angle_deg < 360 ? meshes::widen_sector(w, sector_, margin) : w;
-  };
-  rotating_walls_.push_back(
-      system_.add_wall(MeshWall(widen(walls.floor), wall_material, {}, false, "floor")));
-  rotating_walls_.push_back(
-      system_.add_wall(MeshWall(widen(walls.inner), wall_material, {}, false, "inner")));
-  rotating_walls_.push_back(
-      system_.add_wall(MeshWall(widen(walls.outer), wall_material, {}, false, "outer")));
-  if (walls.consolidator)
-    system_.add_wall(MeshWall(*walls.consolidator, wall_material, {}, false, "consolidator"));
+  rotating_walls_ = add_tester_walls(system_, t, wall_material);
   const auto placed =
       meshes::SampleFrame(geometry_.sample, geometry_.placement).place_in_tester(sample);
   sample_wall_ = system_.add_wall(MeshWall(placed, sample_material, {}, true, "sample"));

@@ -4,6 +4,8 @@
 #include "dem/engine/system.h"
 #include "meshes/tester_walls.h"
 
+#include <catch2/catch.hpp>
+
 #include <cmath>
 
 namespace wear::dem::testing {
@@ -57,6 +59,24 @@ inline void add_periodic_tester_sector(System& s, int material, double angle_deg
   s.add_wall(MeshWall(w.outer, material, cylinders, false, "outer"));
   s.settings.periodic = {true, angle_deg * pi / 180};
   s.settings.domain = {{-0.6, -0.6, -0.01}, {0.6, 0.6, 0.5}};
+}
+
+/// Two systems that must have run identically: the same state bit for bit, and the same wear
+/// window on wall 0, a wearing wall that has seen contacts.
+inline void check_same_state(const System& a, const System& c) {
+  const auto sa = a.export_state(), sc = c.export_state();
+  REQUIRE(sa.position.size() == sc.position.size());
+  CHECK(sa.position == sc.position);
+  CHECK(sa.velocity == sc.velocity);
+  CHECK(sa.angular_velocity == sc.angular_velocity);
+  CHECK(sa.force == sc.force);
+  CHECK(sa.pair_history == sc.pair_history);
+  CHECK(sa.slot_delta == sc.slot_delta);
+  const auto wa = a.wear_integrals(0), wc = c.wear_integrals(0);
+  CHECK(wa.total_archard > 0);
+  CHECK(wa.archard == wc.archard);
+  CHECK(wa.impulse == wc.impulse);
+  CHECK(wa.contact_steps == wc.contact_steps);
 }
 
 } // namespace wear::dem::testing

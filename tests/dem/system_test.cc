@@ -211,16 +211,20 @@ TEST_CASE("same input and thread count give bitwise identical states", "[dem][de
     return p;
   };
   const auto a = run(2), b = run(2), c = run(1);
-  bool same_ab = true, same_ac = true;
+  bool same_ab = true;
+  double max_ac = 0;
   for (std::size_t i = 0; i < a.n_real; ++i) {
     same_ab = same_ab && a.position[i] == b.position[i] && a.velocity[i] == b.velocity[i] &&
               a.angular_velocity[i] == b.angular_velocity[i];
-    same_ac = same_ac && a.position[i] == c.position[i];
+    max_ac = std::max(max_ac, norm(a.position[i] - c.position[i]));
   }
   CHECK(same_ab);
-  // Not promised by the design (per-thread force sums are added in another order for another
-  // thread count), but it holds for this case; a change here deserves a look.
-  CHECK(same_ac);
+  // Another thread count adds the forces on a particle near the threads' boundary in another
+  // order (a thread's own contacts first, then the other's), so the last bits may differ; in
+  // this settling box they stay at round-off (1.5e-17 m measured): 1e-9 m leaves room for
+  // growth but catches a force lost or counted twice at the boundary.
+  INFO("largest position difference, 1 against 2 threads: " << max_ac << " m");
+  CHECK(max_ac < 1e-9);
 }
 
 TEST_CASE("an exported state continues bit for bit in a freshly set-up system",
@@ -270,22 +274,10 @@ TEST_CASE("a state resumed between any two steps continues as if never stopped",
   make_periodic_sector(c, &middle, true);
   c.resume_state(middle);
   c.run(163);
-  const auto sa = a.export_state(), sc = c.export_state();
-  REQUIRE(sa.position.size() == sc.position.size());
-  CHECK(sa.n_rebuilds > rebuilds_before); // lists were rebuilt after the stop
-  CHECK(sa.n_rebuilds == sc.n_rebuilds);
+  CHECK(a.n_rebuilds() > rebuilds_before); // lists were rebuilt after the stop
+  CHECK(a.n_rebuilds() == c.n_rebuilds());
   CHECK(a.n_ghosts() > 0);
-  CHECK(sa.position == sc.position);
-  CHECK(sa.velocity == sc.velocity);
-  CHECK(sa.angular_velocity == sc.angular_velocity);
-  CHECK(sa.force == sc.force);
-  CHECK(sa.pair_history == sc.pair_history);
-  CHECK(sa.slot_delta == sc.slot_delta);
-  const auto wa = a.wear_integrals(0), wc = c.wear_integrals(0);
-  CHECK(wa.total_archard > 0);
-  CHECK(wa.archard == wc.archard);
-  CHECK(wa.impulse == wc.impulse);
-  CHECK(wa.contact_steps == wc.contact_steps);
+  check_same_state(a, c);
   // Another thread count is refused by name.
   System d;
   make_periodic_sector(d, &middle, true);

@@ -1,0 +1,111 @@
+// The System's wall table: mesh walls (MeshWall) and revolution walls (RevolutionWall) in one
+// numbering w, which the wall candidates ((w << 24) | face), the wall-contact slots and the
+// wear accumulators use. wall_kind_[w] says which array holds wall w, wall_local_[w] where.
+// A revolution wall has one candidate "face", 0, for its exact closest point; its wear
+// integrals are kept per face of its accounting triangulation.
+//
+// Elastic energy of a wall contact: the Hertz term 8/15 E* sqrt(R) delta^(5/2) of every
+// contact the force pass would count before merging (the tangential springs of wall contacts
+// are left out, as they always were).
+#include "dem/engine/system.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace wear::dem {
+
+int System::add_wall(const RevolutionWall& wall) {
+  if (set_up_)
+    throw std::logic_error("walls must be added before setup()");
+  if (wall.material() < 0 || wall.material() >= materials.n_materials())
+    throw std::invalid_argument("wall '" + wall.name() + "' refers to an unknown material");
+  if (n_walls() >= (1 << 8))
+    throw std::invalid_argument("wall '" + wall.name() + "': at most 256 walls");
+  revolution_walls_.push_back(wall);
+  wall_kind_.push_back(WallKind::revolution);
+  wall_local_.push_back(std::int32_t(revolution_walls_.size() - 1));
+  return n_walls() - 1;
+}
+
+const MeshWall& System::wall(int w) const {
+  return walls_[mesh_index(w, "wall")];
+}
+
+const RevolutionWall& System::revolution_wall(int w) const {
+  if (wall_kind(w) != WallKind::revolution)
+    throw std::invalid_argument("System::revolution_wall: wall " + std::to_string(w) + " ('" +
+                                wall_name(w) + "') is a mesh wall");
+  return revolution_walls_[std::size_t(wall_local_[w])];
+}
+
+std::size_t System::mesh_index(int w, const char* what) const {
+  if (wall_kind(w) != WallKind::mesh)
+    throw std::invalid_argument(std::string("System::") + what + ": wall " + std::to_string(w) +
+                                " ('" + wall_name(w) +
+                                "') is a revolution wall, which has no triangle mesh");
+  return std::size_t(wall_local_[w]);
+}
+
+void System::set_wall_motion(int w, const WallMotion& m) {
+  if (wall_kind(w) == WallKind::mesh)
+    walls_[std::size_t(wall_local_[w])].set_motion(m);
+  else
+    revolution_walls_[std::size_t(wall_local_[w])].set_motion(m);
+}
+
+const std::string& System::wall_name(int w) const {
+  const std::size_t k = std::size_t(wall_local_.at(w));
+  return wall_kind_[w] == WallKind::mesh ? walls_[k].name() : revolution_walls_[k].name();
+}
+
+bool System::wall_wearing(int w) const {
+  const std::size_t k = std::size_t(wall_local_.at(w));
+  return wall_kind_[w] == WallKind::mesh ? walls_[k].wearing() : revolution_walls_[k].wearing();
+}
+
+std::size_t System::wall_faces(int w) const {
+  const std::size_t k = std::size_t(wall_local_.at(w));
+  return wall_kind_[w] == WallKind::mesh ? walls_[k].n_faces() : revolution_walls_[k].n_faces();
+}
+
+void System::size_wear_accumulators() {
+  wear_acc_.assign(n_threads_, {});
+  for (auto& t : wear_acc_) {
+    t.resize(wall_kind_.size());
+    for (int w = 0; w < n_walls(); ++w)
+      if (wall_wearing(w))
+        t[w].assign(8 * wall_faces(w) + 8, 0.0);
+  }
+}
+
+void System::add_wall_elastic_energy(double& e) const {
+  const auto& p = particles;
+  for (std::size_t i = 0; i < p.n_real; ++i)
+    for (auto k = wall_candidate_offset_[i]; k < wall_candidate_offset_[i + 1]; ++k) {
+      const std::uint32_t w = wall_candidate_[k] >> 24;
+      const std::size_t local = std::size_t(wall_local_[w]);
+      const Vec3& x = p.position[i];
+      double d = 0;
+      int material = 0;
+      if (wall_kind_[w] == WallKind::revolution) {
+        const RevolutionWall& rw = revolution_walls_[local];
+        const double dist = meshes::norm(x - rw.closest(x));
+        d = dist > 0 ? p.radius[i] - dist : 0;
+        material = rw.material();
+      } else {
+        const MeshWall& mw = walls_[local];
+        const std::uint32_t f = wall_candidate_[k] & 0xFFFFFFu;
+        const auto cf = mw.closest(f, x);
+        d = p.radius[i] - meshes::norm(x - cf.point);
+        if (d > 0 && !mw.owns_contact(f, cf, x))
+          d = 0;
+        material = mw.material();
+      }
+      if (d <= 0)
+        continue;
+      const auto& c = contact_[p.material[i] * n_mat_ + material];
+      e += 8.0 / 15.0 * c.e_star * std::sqrt(p.radius[i]) * std::pow(d, 2.5);
+    }
+}
+
+} // namespace wear::dem

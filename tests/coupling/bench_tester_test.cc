@@ -1,0 +1,68 @@
+// The tester workload of `wearsim bench dem` builds its reference case in code; it must be
+// the case of cases/reference (all but the run length and the output folder), so the bench
+// times what `wearsim dem cases/reference/convex.prm` runs. Its options replace the case's
+// values, and bad values stop the command naming the option before anything is built.
+#include "coupling/app/bench_command.h"
+#include "coupling/app/bench_tester.h"
+
+#include <catch2/catch.hpp>
+
+#include <sstream>
+
+using namespace wear::coupling;
+
+namespace {
+const std::string reference_dir = std::string(WEAR_SOURCE_DIR) + "/cases/reference/";
+
+CaseParameters read_quietly(const std::string& path) {
+  std::ostringstream warnings;
+  return read_case(path, warnings);
+}
+} // namespace
+
+TEST_CASE("the bench's built-in reference tester is the case of cases/reference",
+          "[coupling][bench]") {
+  for (const bool convex : {true, false}) {
+    const CaseParameters file =
+        read_quietly(reference_dir + (convex ? "convex" : "plain") + ".prm");
+    CaseParameters code = reference_tester_case(convex, file.dem.psd.scaling_factor);
+    // What the bench does not use.
+    code.dem.revolutions = file.dem.revolutions;
+    code.dem.samples_per_revolution = file.dem.samples_per_revolution;
+    code.dem.snapshot_revolutions = file.dem.snapshot_revolutions;
+    code.output.directory = file.output.directory;
+    INFO((convex ? "convex" : "plain"));
+    CHECK(resolved_parameters(code) == resolved_parameters(file));
+  }
+}
+
+TEST_CASE("the tester workload's options replace the case's values", "[coupling][bench]") {
+  TesterBenchOptions o;
+  CHECK(tester_bench_case(o).dem.psd.scaling_factor == 3);
+  CHECK(tester_bench_case(o).geometry.sample.convex);
+  o.scale = 6;
+  o.convex = false;
+  CHECK(tester_bench_case(o).dem.psd.scaling_factor == 6);
+  CHECK(!tester_bench_case(o).geometry.sample.convex);
+  o = {};
+  o.case_file = reference_dir + "plain.prm";
+  CHECK(tester_bench_case(o).dem.psd.scaling_factor == 4); // the file's
+  CHECK(!tester_bench_case(o).geometry.sample.convex);
+  o.convex = true;
+  CHECK(tester_bench_case(o).geometry.sample.convex);
+}
+
+TEST_CASE("wearsim bench dem: a bad tester option stops naming the option", "[coupling][bench]") {
+  std::ostringstream out;
+  const auto run = [&](std::vector<std::string> args) {
+    args.insert(args.begin(), {"dem", "--workload", "tester"});
+    run_bench_command(args, out);
+  };
+  CHECK_THROWS_WITH(run({"--scale", "-1"}), Catch::Contains("--scale"));
+  CHECK_THROWS_WITH(run({"--scale", "3x"}), Catch::Contains("--scale"));
+  CHECK_THROWS_WITH(run({"--sample", "foo"}), Catch::Contains("--sample"));
+  CHECK_THROWS_WITH(run({"--case", reference_dir + "missing.prm"}), Catch::Contains("missing.prm"));
+  CHECK_THROWS_WITH(run_bench_command({"dem", "--workload", "annulus", "--scale", "2"}, out),
+                    Catch::Contains("--workload tester"));
+  CHECK(out.str().empty()); // stopped before any workload was built
+}
