@@ -29,14 +29,9 @@ enum ErrorKind { no_error = 0, not_finite = 1, too_fast = 2, outside = 3, too_ma
 } // namespace
 
 int System::add_wall(const MeshWall& wall) {
-  if (set_up_)
-    throw std::logic_error("walls must be added before setup()");
-  if (wall.material() < 0 || wall.material() >= materials.n_materials())
-    throw std::invalid_argument("wall '" + wall.name() + "' refers to an unknown material");
+  const int w = register_wall(WallKind::mesh, walls_.size(), wall.name(), wall.material());
   walls_.push_back(wall);
-  wall_kind_.push_back(WallKind::mesh);
-  wall_local_.push_back(std::int32_t(walls_.size() - 1));
-  return n_walls() - 1;
+  return w;
 }
 
 double System::rayleigh_time() const {

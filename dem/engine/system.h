@@ -235,6 +235,9 @@ private:
   void size_wear_accumulators();       ///< wear_acc_ for n_threads_ threads, zeroed
   /// The index in walls_ of mesh wall w; `what` names the caller in the error for another kind.
   std::size_t mesh_index(int w, const char* what) const;
+  /// Checks a wall about to be added (before setup, known material, at most 256 walls) and
+  /// gives it the next number, held by the array of its kind at index `local`.
+  int register_wall(WallKind kind, std::size_t local, const std::string& name, int material);
   void add_wall_elastic_energy(double& e) const; ///< adds the wall contacts' Hertz energy [J]
   std::vector<ContactParameters> contact_;
   int n_mat_ = 0;

@@ -14,17 +14,24 @@
 
 namespace wear::dem {
 
-int System::add_wall(const RevolutionWall& wall) {
+int System::register_wall(WallKind kind, std::size_t local, const std::string& name, int material) {
   if (set_up_)
     throw std::logic_error("walls must be added before setup()");
-  if (wall.material() < 0 || wall.material() >= materials.n_materials())
-    throw std::invalid_argument("wall '" + wall.name() + "' refers to an unknown material");
+  if (material < 0 || material >= materials.n_materials())
+    throw std::invalid_argument("wall '" + name + "' refers to an unknown material");
+  // The wall number takes the top 8 bits of a wall candidate ((w << 24) | face).
   if (n_walls() >= (1 << 8))
-    throw std::invalid_argument("wall '" + wall.name() + "': at most 256 walls");
-  revolution_walls_.push_back(wall);
-  wall_kind_.push_back(WallKind::revolution);
-  wall_local_.push_back(std::int32_t(revolution_walls_.size() - 1));
+    throw std::invalid_argument("wall '" + name + "': at most 256 walls");
+  wall_kind_.push_back(kind);
+  wall_local_.push_back(std::int32_t(local));
   return n_walls() - 1;
+}
+
+int System::add_wall(const RevolutionWall& wall) {
+  const int w =
+      register_wall(WallKind::revolution, revolution_walls_.size(), wall.name(), wall.material());
+  revolution_walls_.push_back(wall);
+  return w;
 }
 
 const MeshWall& System::wall(int w) const {

@@ -61,6 +61,15 @@ inline void add_periodic_tester_sector(System& s, int material, double angle_deg
   s.settings.domain = {{-0.6, -0.6, -0.01}, {0.6, 0.6, 0.5}};
 }
 
+/// Adds the real particles of `from` as they are there, stable ids included (as
+/// WearTester::restore does before importing the state).
+inline void add_particles_of(Particles& p, const SystemState& from) {
+  for (std::size_t i = 0; i < from.position.size(); ++i) {
+    p.add(from.position[i], from.velocity[i], from.radius[i], 2650, from.material[i]);
+    p.id.back() = from.id[i];
+  }
+}
+
 /// Two systems that must have run identically: the same state bit for bit, and the same wear
 /// window on wall 0, a wearing wall that has seen contacts.
 inline void check_same_state(const System& a, const System& c) {

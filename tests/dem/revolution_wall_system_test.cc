@@ -299,11 +299,7 @@ void make_revolution_sector(System& s, const SystemState* from) {
   s.settings.domain = {{-0.6, -0.6, -0.01}, {0.6, 0.6, 0.5}};
   const SizeDistribution psd{{8e-3, 10e-3}, {0.5, 0.5}, 1.0};
   if (from)
-    for (std::size_t i = 0; i < from->position.size(); ++i) {
-      s.particles.add(from->position[i], from->velocity[i], from->radius[i], 2650,
-                      from->material[i]);
-      s.particles.id.back() = from->id[i];
-    }
+    add_particles_of(s.particles, *from);
   else
     insert_random(s.particles, annular_sector_region(0.29, 0.5, pi / 6, 0, 0.04, 5.1e-3), psd, 600,
                   2650, g, 11);

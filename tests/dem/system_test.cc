@@ -39,11 +39,7 @@ void make_periodic_sector(System& s, const SystemState* from, bool wearing_floor
   add_periodic_tester_sector(s, g, 30, false, wearing_floor);
   SizeDistribution psd{{8e-3, 10e-3}, {0.5, 0.5}, 1.0};
   if (from)
-    for (std::size_t i = 0; i < from->position.size(); ++i) {
-      s.particles.add(from->position[i], from->velocity[i], from->radius[i], 2650,
-                      from->material[i]);
-      s.particles.id.back() = from->id[i];
-    }
+    add_particles_of(s.particles, *from);
   else
     insert_random(s.particles, annular_sector_region(0.29, 0.5, 30 * pi / 180, 0, 0.05, 5.1e-3),
                   psd, 1200, 2650, g, 11);
