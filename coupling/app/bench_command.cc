@@ -65,7 +65,7 @@ double to_positive(const std::string& flag, const std::string& v) {
   return x;
 }
 
-// --scale, --sample, --case: the options of the tester workload.
+// --scale, --sample, --case, --state, --flow: the options of the tester workload.
 void parse_tester_option(TesterBenchOptions& t, const std::string& f, const std::string& v) {
   if (f == "--scale")
     t.scale = to_positive(f, v);
@@ -73,8 +73,12 @@ void parse_tester_option(TesterBenchOptions& t, const std::string& f, const std:
     if (v != "convex" && v != "plain")
       throw std::invalid_argument("wearsim bench: --sample takes convex or plain, got '" + v + "'");
     t.convex = v == "convex";
-  } else
+  } else if (f == "--case")
     t.case_file = v;
+  else if (f == "--state")
+    t.state_file = v;
+  else
+    t.flow_steps = to_count(f, v);
 }
 
 struct BenchDemArguments {
@@ -108,14 +112,14 @@ BenchDemArguments bench_dem_arguments(const std::vector<std::string>& args) {
     else if (f == "--walls")
       throw std::invalid_argument("wearsim bench: --walls takes 'analytic' or 'mesh', got '" + v +
                                   "'");
-    else if (f == "--scale" || f == "--sample" || f == "--case")
+    else if (f == "--scale" || f == "--sample" || f == "--case" || f == "--state" || f == "--flow")
       parse_tester_option(a.tester, f, v);
     else
       throw std::invalid_argument("wearsim bench: unknown option '" + f + "'");
   }
   if (a.tester.any_given() && o.workload != "tester")
-    throw std::invalid_argument("wearsim bench: --scale, --sample and --case belong to "
-                                "--workload tester");
+    throw std::invalid_argument("wearsim bench: --scale, --sample, --case, --state and --flow "
+                                "belong to --workload tester");
   const int all = int(std::thread::hardware_concurrency());
   if (a.thread_counts.empty())
     a.thread_counts.push_back(all);

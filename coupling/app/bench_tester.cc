@@ -10,10 +10,12 @@
 // [particle-steps/s] it takes steps x N / R seconds.
 #include "coupling/app/bench_tester.h"
 
+#include "coupling/output/checkpoint.h"
 #include "coupling/output/progress_line.h"
 #include "meshes/sample_generator.h"
 #include "meshes/stopwatch.h"
 
+#include <filesystem>
 #include <ostream>
 
 namespace wear::coupling {
@@ -48,6 +50,20 @@ std::string case_name(const TesterBenchOptions& o, const CaseParameters& p) {
 }
 } // namespace
 
+namespace {
+// The state of `tester` with its open revolution, as an in-stage checkpoint of a run of p.
+Checkpoint bench_state(const dem::WearTester& tester, const CaseParameters& p) {
+  Checkpoint c;
+  c.parameters = resolved_parameters(p);
+  c.dem = tester.system().export_state();
+  const auto n_faces = tester.sample_mesh().n_faces();
+  c.face_von_mises.assign(n_faces, 0.0);
+  c.dem_cumulative.assign(n_faces, 0.0);
+  c.open_stage = open_stage(dem::WallLoads{}, 0, 0, *tester.open_revolution());
+  return c;
+}
+} // namespace
+
 std::unique_ptr<dem::WearTester> tester_workload(const TesterBenchOptions& o, bool settle,
                                                  int threads, double& seconds, std::ostream& out) {
   const meshes::Stopwatch clock;
@@ -64,17 +80,43 @@ std::unique_ptr<dem::WearTester> tester_workload(const TesterBenchOptions& o, bo
       << std::flush;
   auto tester = std::make_unique<dem::WearTester>(p.geometry, p.dem, p.wear_law, p.deformation,
                                                   sample.surface);
-  const auto fill = tester->fill_and_settle();
-  // Opens a revolution and stops it before its first step: rotation on, wear window open.
-  tester->advance_revolution({}, [] { return true; });
+  const bool from_state = !o.state_file.empty() && std::filesystem::exists(o.state_file);
+  if (from_state) {
+    const Checkpoint c = read_checkpoint(o.state_file);
+    if (c.parameters != resolved_parameters(p) || !c.open_stage)
+      throw std::invalid_argument("wearsim bench: --state '" + o.state_file +
+                                  "' was written by another case or thread count; remove it "
+                                  "to write a new one");
+    tester->restore(c.dem, 0, {}, c.open_stage->revolution);
+    out << format("state from %s: t = %.4f s, %llu steps of the revolution done\n",
+                  o.state_file.c_str(), c.dem.time,
+                  (unsigned long long)c.open_stage->revolution.steps_done);
+  } else {
+    const auto fill = tester->fill_and_settle();
+    out << format("bed height %.4f m, packing fraction %.3f, %s %.3f s simulated\n",
+                  fill.bed_height, fill.packing_fraction,
+                  settle ? "settled in" : "settling skipped after", fill.settle_time);
+    // Opens a revolution (rotation on, wear window open) and runs it, evaluation samples
+    // included, for the flow steps (rounded up to the revolution's stop checks).
+    if (o.flow_steps >= tester->steps_per_revolution())
+      throw std::invalid_argument(format("wearsim bench: --flow %llu is not below the %llu "
+                                         "steps of a revolution",
+                                         (unsigned long long)o.flow_steps,
+                                         (unsigned long long)tester->steps_per_revolution()));
+    const std::uint64_t n0 = tester->system().n_steps();
+    tester->advance_revolution({}, [&] { return tester->system().n_steps() - n0 >= o.flow_steps; });
+  }
   const auto& s = tester->system();
-  out << format("%zu particles, %d walls, dt %.4e s (%.0f %% of Rayleigh), %d threads; bed "
-                "height %.4f m, packing fraction %.3f, %s %.3f s simulated\n",
+  out << format("%zu particles, %d walls, dt %.4e s (%.0f %% of Rayleigh), %d threads, %llu "
+                "steps of the revolution done before the timing\n",
                 s.particles.n_real, s.n_walls(), s.time_step(),
-                100 * s.time_step() / s.rayleigh_time(), threads, fill.bed_height,
-                fill.packing_fraction, settle ? "settled in" : "settling skipped after",
-                fill.settle_time)
+                100 * s.time_step() / s.rayleigh_time(), threads,
+                (unsigned long long)tester->open_revolution()->steps_done)
       << std::flush;
+  if (!from_state && !o.state_file.empty()) {
+    write_checkpoint(o.state_file, bench_state(*tester, p));
+    out << "state written to " << o.state_file << "\n";
+  }
   seconds = clock.seconds();
   return tester;
 }

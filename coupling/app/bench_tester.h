@@ -5,6 +5,7 @@
 #include "coupling/parameters/case_parameters.h"
 #include "dem/tester/wear_tester.h"
 
+#include <cstdint>
 #include <iosfwd>
 #include <map>
 #include <memory>
@@ -17,7 +18,13 @@ struct TesterBenchOptions {
   std::optional<double> scale; ///< [-] --scale, the particle scaling factor (reference: 3)
   std::optional<bool> convex;  ///< --sample convex|plain (reference: convex)
   std::string case_file;       ///< --case: this case file instead of the built-in reference
-  bool any_given() const { return scale || convex || !case_file.empty(); }
+  /// --state: a bed state to start from (read when the file exists, written after the flow
+  /// steps otherwise), so that repeated timings skip the settling and start from one flow.
+  std::string state_file;
+  std::uint64_t flow_steps = 0; ///< --flow: steps of the open revolution before the timing
+  bool any_given() const {
+    return scale || convex || !case_file.empty() || !state_file.empty() || flow_steps > 0;
+  }
 };
 
 /// The reference tester of cases/reference/{convex,plain}.prm, built in code: the parameter
@@ -33,7 +40,10 @@ CaseParameters tester_bench_case(const TesterBenchOptions& o);
 /// Generates the case's sample surface, builds the tester, fills it and settles it as
 /// `wearsim dem` does on `threads` threads (`settle` false: the shortest settling the fill
 /// allows, one 0.02 s check), then starts the walls' rotation and the sample's wear window as
-/// a revolution does. Logs the bed; `seconds` receives the wall time of all this [s].
+/// a revolution does and runs o.flow_steps of it. With o.state_file, an existing file is the
+/// state to continue instead (it must come from the same case and thread count; the
+/// continuation is exact, System::resume_state), and a missing one receives the state reached.
+/// Logs the bed; `seconds` receives the wall time of all this [s].
 std::unique_ptr<dem::WearTester> tester_workload(const TesterBenchOptions& o, bool settle,
                                                  int threads, double& seconds, std::ostream& out);
 

@@ -29,6 +29,40 @@ using Feature = meshes::TriangleFeature;
 /// Closest point of a sphere centre on one triangle, with the feature that holds it.
 using ClosestFeature = meshes::TrianglePoint;
 
+/// What the rejection tests of a candidate face read, in one cache line: the face's plane and
+/// its bounding sphere. Most candidates are rejected by these tests, before the closest-point
+/// search.
+struct alignas(64) FaceBound {
+  Vec3 normal;   ///< unit
+  double offset; ///< [m] normal . (a corner): the plane is normal . x = offset
+  Vec3 centre;   ///< [m] centroid
+  double radius; ///< [m] largest centroid-corner distance, slightly widened
+
+  /// Distance of c from the plane [m]: a lower bound of the distance to the triangle.
+  double plane_distance(const Vec3& c) const { return std::abs(meshes::dot(c, normal) - offset); }
+  /// True when no point of the triangle lies closer to c than r: c is at least r beyond the
+  /// bounding sphere. It rejects the faces whose plane passes near c but which lie elsewhere
+  /// on a curved surface.
+  bool beyond_sphere(const Vec3& c, double r) const {
+    const double reach = r + radius;
+    return meshes::norm2(c - centre) >= reach * reach;
+  }
+  /// The same where h < r is c's distance from the plane: the ball of radius r meets the plane
+  /// in the disc of radius sqrt(r^2 - h^2) about c's projection, and that disc misses the
+  /// bounding circle (the bounding sphere's section through the centroid). Tighter than
+  /// beyond_sphere when c lies about r from the plane, as over a flat patch of a fine mesh,
+  /// where most candidate faces pass the other two tests. Widened by a relative 1e-9.
+  bool beyond_disc(const Vec3& c, double r, double h) const {
+    const double reach = std::sqrt(r * r - h * h) + radius;
+    return meshes::norm2(c - centre) - h * h >= reach * reach * (1 + 1e-9);
+  }
+  /// True when the triangle cannot touch a sphere of radius r about c (the three tests).
+  bool rejects(const Vec3& c, double r) const {
+    const double h = plane_distance(c);
+    return h >= r || beyond_sphere(c, r) || beyond_disc(c, r, h);
+  }
+};
+
 class MeshWall {
 public:
   MeshWall(const meshes::SurfaceMesh& mesh, int material_id, const WallMotion& motion, bool wearing,
@@ -51,20 +85,8 @@ public:
   }
   const Vec3& angular_velocity_vector() const { return omega_; }
 
-  /// Distance of c from the plane of triangle f [m]: a lower bound of the distance to the
-  /// triangle, used to reject most candidates before the closest-point search.
-  double plane_distance(std::uint32_t f, const Vec3& c) const {
-    return std::abs(meshes::dot(c, bound_[f].normal) - bound_[f].offset);
-  }
-
-  /// True when no point of triangle f lies closer to c than r: c is at least r beyond the
-  /// triangle's bounding sphere (centred on its centroid). It rejects the candidates whose
-  /// plane passes near c but which lie elsewhere on a curved surface, before the
-  /// closest-point search.
-  bool beyond_bound(std::uint32_t f, const Vec3& c, double r) const {
-    const double reach = r + bound_[f].radius;
-    return meshes::norm2(c - bound_[f].centre) >= reach * reach;
-  }
+  /// Plane and bounding sphere of triangle f (FaceBound's rejection tests).
+  const FaceBound& bound(std::uint32_t f) const { return bound_[f]; }
 
   /// Closest point of triangle f to c (meshes::closest_point_on_triangle).
   ClosestFeature closest(std::uint32_t f, const Vec3& c) const;
@@ -101,15 +123,6 @@ private:
   std::string name_;
   std::vector<std::array<Vec3, 3>> corners_;
   std::vector<Vec3> normal_;
-  /// What the two rejection tests of a candidate face read, in one cache line: most
-  /// candidates are rejected there, and the faces of a fine sample mesh do not fit a core's
-  /// cache.
-  struct alignas(64) FaceBound {
-    Vec3 normal;   ///< unit
-    double offset; ///< [m] normal . (a corner): the plane is normal . x = offset
-    Vec3 centre;   ///< [m] centroid
-    double radius; ///< [m] largest centroid-corner distance, slightly widened
-  };
   std::vector<FaceBound> bound_;
   std::vector<std::array<std::uint32_t, 3>> face_edge_; // edge k of face f: global id
   std::vector<std::array<std::uint32_t, 2>> edge_face_; // adjacent faces (second = ~0u: none)

@@ -65,7 +65,8 @@ namespace {
                                                  int c, std::uint32_t i, std::uint32_t j,
                                                  ContactGeometry& g) {
   const double ri = d.position[i].r, rj = d.position[j].r, rs = ri + rj;
-  const double mi = d.mass[i], mj = d.mass[j];
+  const PackedMotion &a = d.motion[i], &b = d.motion[j];
+  const double mi = a.mass, mj = b.mass;
   const double dist = std::sqrt(bl.dist2[c]);
   const double inv = 1.0 / dist;
   g.normal.x = bl.dx[c] * inv;
@@ -78,23 +79,23 @@ namespace {
   g.arm_j = rj - 0.5 * g.overlap;
   g.lever_i = ri;
   g.lever_j = rj;
-  const Vec3 wi = d.angular_velocity[i], wj = d.angular_velocity[j];
   const Vec3 spin = meshes::cross(
-      Vec3{wi.x * ri + wj.x * rj, wi.y * ri + wj.y * rj, wi.z * ri + wj.z * rj}, g.normal);
-  g.v_contact.x = d.velocity[i].x - d.velocity[j].x - spin.x;
-  g.v_contact.y = d.velocity[i].y - d.velocity[j].y - spin.y;
-  g.v_contact.z = d.velocity[i].z - d.velocity[j].z - spin.z;
-  g.w_relative.x = wi.x - wj.x;
-  g.w_relative.y = wi.y - wj.y;
-  g.w_relative.z = wi.z - wj.z;
+      Vec3{a.wx * ri + b.wx * rj, a.wy * ri + b.wy * rj, a.wz * ri + b.wz * rj}, g.normal);
+  g.v_contact.x = a.vx - b.vx - spin.x;
+  g.v_contact.y = a.vy - b.vy - spin.y;
+  g.v_contact.z = a.vz - b.vz - spin.z;
+  g.w_relative.x = a.wx - b.wx;
+  g.w_relative.y = a.wy - b.wy;
+  g.w_relative.z = a.wz - b.wz;
 }
 
 /// Pass 2: the contact law over the m compacted contacts, several per SIMD instruction;
-/// updated histories, forces and torques go into the block's lanes.
-[[gnu::always_inline]] inline void contact_law_lanes(const PairKernelData& d,
-                                                     const std::uint32_t* pi,
-                                                     const std::uint32_t* pj, const Vec3* history,
-                                                     int m, PairBlock& bl) {
+/// updated histories, forces and torques go into the block's lanes. `uniform`: one pair type
+/// for all (d.uniform), loaded once instead of gathered per lane with both materials.
+template <bool uniform>
+[[gnu::always_inline]] inline void
+contact_law_lanes(const PairKernelData& d, const std::uint32_t* pi, const std::uint32_t* pj,
+                  const Vec3* history, int m, PairBlock& bl) {
   const double dt = d.dt;
 #pragma omp simd
   for (int c = 0; c < m; ++c) {
@@ -102,7 +103,8 @@ namespace {
     ContactGeometry g;
     pair_geometry(d, bl, c, i, j, g);
     ContactParameters cp;
-    const ContactParameters& t = d.contact[d.material[i] * d.n_materials + d.material[j]];
+    const ContactParameters& t =
+        uniform ? *d.uniform : d.contact[d.material[i] * d.n_materials + d.material[j]];
     cp.e_star = t.e_star;
     cp.g_star = t.g_star;
     cp.beta = t.beta;
@@ -171,7 +173,10 @@ int pair_block_forces(const PairKernelData& d, std::size_t k0, int n_listed, Pai
   const std::uint32_t* pj = d.pair_j + k0;
   Vec3* history = d.history + k0;
   const int m = compact_touching(d, pi, pj, history, d.touching + k0, n_listed, bl);
-  contact_law_lanes(d, pi, pj, history, m, bl);
+  if (d.uniform)
+    contact_law_lanes<true>(d, pi, pj, history, m, bl);
+  else
+    contact_law_lanes<false>(d, pi, pj, history, m, bl);
   scatter(d, pi, pj, history, m, bl, force, torque);
   return m;
 }

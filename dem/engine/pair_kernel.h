@@ -32,6 +32,16 @@ struct alignas(32) PackedPosition {
   double r;       ///< [m]
 };
 
+/// Velocity, spin and mass of one particle slot in one 64-byte record, written where the
+/// half-step velocities are: the law's gathers of a partner read one cache line instead of
+/// three arrays.
+struct alignas(64) PackedMotion {
+  double vx, vy, vz; ///< [m/s]
+  double mass;       ///< [kg]
+  double wx, wy, wz; ///< [rad/s]
+  double unused;
+};
+
 /// Forces of one thread's contacts on particles that another thread owns, kept aside and
 /// added after the evaluation in thread order (the threads never write the same particle).
 /// Sized at each rebuild to the thread's listed pairs with such a partner.
@@ -44,13 +54,14 @@ struct ForeignForces {
 /// What the kernel reads and writes, shared by all blocks of one thread's evaluation.
 struct PairKernelData {
   const PackedPosition* position; ///< [m] real and ghost slots
-  const Vec3* velocity;           ///< [m/s]
-  const Vec3* angular_velocity;   ///< [rad/s]
-  const double* mass;             ///< [kg]
+  const PackedMotion* motion;     ///< real and ghost slots
   const int* material;            ///< material id
   const std::uint32_t *pair_i, *pair_j;
   const ContactParameters* contact; ///< table indexed by material_i x n_materials + material_j
   int n_materials;
+  /// The one pair type when every slot has the same material (the common bed of one
+  /// gravel): the law then takes its constants from registers instead of a gather per lane.
+  const ContactParameters* uniform;
   Vec3* history;                    ///< [m] per listed pair, updated
   std::uint8_t* touching;           ///< per listed pair: in contact at the last evaluation
   const std::uint32_t* ghost_owner; ///< real particle behind ghost slot j - n_real

@@ -208,6 +208,7 @@ void System::advance(bool close_previous) {
       packed.x = p.position[i].x;
       packed.y = p.position[i].y;
       packed.z = p.position[i].z;
+      pack_motion(i);
       // The force is used; it restarts from gravity for this step's evaluation.
       p.force[i] = gravity * p.mass[i];
       p.torque[i] = {};
@@ -348,9 +349,10 @@ double System::bytes_per_particle() const {
   std::size_t foreign = 0;
   for (const auto& t : foreign_)
     foreign += t.target.size() * (sizeof(std::uint32_t) + 2 * sizeof(Vec3));
-  double bytes = (per_slot + sizeof(PackedPosition)) * p.position.size() +
+  double bytes = (per_slot + sizeof(PackedPosition) + sizeof(PackedMotion)) * p.position.size() +
                  sizeof(Vec3) * reference_position_.size() +
-                 sizeof(std::uint32_t) * wall_candidate_offset_.size() + double(foreign) +
+                 sizeof(std::uint32_t) * wall_candidate_offset_.size() +
+                 sizeof(FaceBound) * wall_candidate_bound_.size() + double(foreign) +
                  sizeof(WallSlot) * slots_.size();
   return (bytes + sizeof(PairBlock) * pair_block_.size()) / n;
 }

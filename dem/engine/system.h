@@ -205,8 +205,9 @@ private:
   /// Adds the forces the threads kept for particles they do not own, in thread order.
   void apply_foreign_forces();
   void refresh_ghosts();
-  /// The kernel's copies of the particle data (packed positions, which pairs touch) from the
-  /// particles' arrays and the pair histories: after a rebuild or a resumed state.
+  /// The kernels' copies (packed positions and motion, which pairs touch, the wall candidates'
+  /// bounds) from the particles' arrays, the pair histories and the candidate list: after a
+  /// rebuild or a resumed state.
   void pack_particles();
   void sort_spatially();
   void compute_forces();
@@ -268,13 +269,24 @@ private:
   // other particles go to its ForeignForces, added after the evaluation in thread order.
   std::vector<ForeignForces> foreign_;
   std::vector<PackedPosition> packed_position_; // position and radius per slot, for the kernel
-  std::vector<std::uint8_t> pair_touching_;     // per listed pair: touched at the last evaluation
+  std::vector<PackedMotion> packed_motion_;     // velocity, spin and mass per slot, for the kernel
+  /// packed_motion_[k] from the particles' arrays.
+  void pack_motion(std::size_t k) {
+    const Vec3 &v = particles.velocity[k], &w = particles.angular_velocity[k];
+    packed_motion_[k] = {v.x, v.y, v.z, particles.mass[k], w.x, w.y, w.z, 0.0};
+  }
+  std::vector<std::uint8_t> pair_touching_; // per listed pair: touched at the last evaluation
+  int uniform_material_ = -1;               // the material of every particle, -1 when they differ
   std::size_t n_pair_contacts_ = 0;
   std::vector<Vec3> reference_position_;
 
   // Wall contacts: candidates per particle (wall << 24 | face) and history slots.
   static constexpr int wall_slots = 6;
   std::vector<std::uint32_t> wall_candidate_offset_, wall_candidate_;
+  // A copy of each mesh candidate's FaceBound, in candidate order: the step's rejection tests
+  // read them in sequence instead of scattered over a fine wall's faces (unused for a
+  // revolution wall's entry).
+  std::vector<FaceBound> wall_candidate_bound_;
   std::vector<std::uint32_t> wall_particles_; // particles with at least one candidate
   std::vector<std::vector<std::uint32_t>> wall_chunk_found_; // rebuild scratch, per chunk
   // History slots of the wall contacts of near-wall particle q (in wall_particles_ order):

@@ -49,12 +49,13 @@ struct WallTable {
 /// The contacts of a particle (centre x, radius r) on its candidate faces [b, e), each
 /// (wall << 24) | face, into `found`: faces it overlaps whose closest feature it owns, and
 /// revolution walls it overlaps (at their exact closest point, feature "face", face 0).
-/// Returns their count, or -1 when there are more than max_wall_candidates.
+/// `bound` holds the candidates' copied FaceBounds, read in order. Returns their count, or -1
+/// when there are more than max_wall_candidates.
 [[gnu::always_inline]] inline int find_wall_contacts(const WallTable& walls, const std::uint32_t* b,
-                                                     const std::uint32_t* e, const Vec3& x,
-                                                     double r, Candidate* found) {
+                                                     const std::uint32_t* e, const FaceBound* bound,
+                                                     const Vec3& x, double r, Candidate* found) {
   int n_found = 0;
-  for (; b != e; ++b) {
+  for (; b != e; ++b, ++bound) {
     const std::uint32_t w = *b >> 24, f = *b & 0xFFFFFFu;
     if (walls.kind[w] == WallKind::revolution) {
       const Vec3 point = walls.revolution[walls.local[w]].closest(x);
@@ -68,9 +69,9 @@ struct WallTable {
       found[n_found++] = {{point, Feature::face, 0}, d / dist, dist, w, 0};
       continue;
     }
-    const MeshWall& wall = walls.mesh[walls.local[w]];
-    if (wall.plane_distance(f, x) >= r || wall.beyond_bound(f, x, r))
+    if (bound->rejects(x, r))
       continue;
+    const MeshWall& wall = walls.mesh[walls.local[w]];
     const ClosestFeature cf = wall.closest(f, x);
     const Vec3 d = x - cf.point;
     const double dist2 = meshes::norm2(d);
@@ -166,25 +167,25 @@ template <class Wall>
 
 std::size_t System::pair_forces(int thread, Vec3* F, Vec3* T) {
   auto& p = particles;
-  const PairKernelData kernel{packed_position_.data(),
-                              p.velocity.data(),
-                              p.angular_velocity.data(),
-                              p.mass.data(),
-                              p.material.data(),
-                              neighbors_.pair_i.data(),
-                              neighbors_.pair_j.data(),
-                              contact_.data(),
-                              n_mat_,
-                              pair_history_.data(),
-                              pair_touching_.data(),
-                              ghost_owner_.data(),
-                              p.n_real,
-                              std::uint32_t(owner_split_[thread]),
-                              std::uint32_t(owner_split_[thread + 1]),
-                              &foreign_[thread],
-                              cos_t_,
-                              sin_t_,
-                              dt_};
+  const PairKernelData kernel{
+      packed_position_.data(),
+      packed_motion_.data(),
+      p.material.data(),
+      neighbors_.pair_i.data(),
+      neighbors_.pair_j.data(),
+      contact_.data(),
+      n_mat_,
+      uniform_material_ >= 0 ? &contact_[std::size_t(uniform_material_) * (n_mat_ + 1)] : nullptr,
+      pair_history_.data(),
+      pair_touching_.data(),
+      ghost_owner_.data(),
+      p.n_real,
+      std::uint32_t(owner_split_[thread]),
+      std::uint32_t(owner_split_[thread + 1]),
+      &foreign_[thread],
+      cos_t_,
+      sin_t_,
+      dt_};
   std::size_t n_contacts = 0;
   PairBlock& bl = pair_block_[thread];
   for (std::size_t k0 = pair_split_[thread]; k0 < pair_split_[thread + 1]; k0 += pair_block_size) {
@@ -229,9 +230,9 @@ void System::wall_forces(int thread, Vec3* F, Vec3* T) {
     const std::size_t i = wall_particles_[q];
     const Vec3 x = p.position[i];
     const std::uint32_t* candidates = wall_candidate_.data();
-    const int n_found =
-        find_wall_contacts(walls, candidates + wall_candidate_offset_[i],
-                           candidates + wall_candidate_offset_[i + 1], x, p.radius[i], found);
+    const int n_found = find_wall_contacts(
+        walls, candidates + wall_candidate_offset_[i], candidates + wall_candidate_offset_[i + 1],
+        wall_candidate_bound_.data() + wall_candidate_offset_[i], x, p.radius[i], found);
     bool overflow = n_found < 0;
     bool taken[wall_slots] = {}; // old slots whose history went to a new contact
     int n_new = 0;

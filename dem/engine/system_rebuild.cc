@@ -213,6 +213,7 @@ void System::fill_ghost_slots() {
   const std::size_t n = p.n_real;
   p.resize_ghosts(ghost_owner_.size());
   packed_position_.resize(p.position.size());
+  packed_motion_.resize(p.position.size());
   for (std::size_t g = 0; g < ghost_owner_.size(); ++g) {
     const auto o = ghost_owner_[g];
     p.radius[n + g] = p.radius[o];
@@ -367,6 +368,7 @@ void System::refresh_ghosts() {
                                p.radius[n + g]};
     p.velocity[n + g] = rotate_z(p.velocity[o], c, s);
     p.angular_velocity[n + g] = rotate_z(p.angular_velocity[o], c, s);
+    pack_motion(n + g);
   }
 }
 
@@ -462,17 +464,32 @@ void System::size_foreign_forces() {
 
 void System::pack_particles() {
   const auto& p = particles;
+  const auto m0 = p.n_real > 0 ? p.material[0] : -1;
+  const bool uniform =
+      std::all_of(p.material.begin(), p.material.begin() + std::ptrdiff_t(p.n_real),
+                  [m0](int m) { return m == m0; });
+  uniform_material_ = uniform ? m0 : -1;
   packed_position_.resize(p.position.size());
+  packed_motion_.resize(p.position.size());
   pair_touching_.resize(pair_history_.size());
+  wall_candidate_bound_.resize(wall_candidate_.size());
 #pragma omp parallel num_threads(n_threads_)
   {
 #pragma omp for schedule(static) nowait
-    for (std::size_t i = 0; i < p.position.size(); ++i)
+    for (std::size_t i = 0; i < p.position.size(); ++i) {
       packed_position_[i] = {p.position[i].x, p.position[i].y, p.position[i].z, p.radius[i]};
-      // A pair holds a history only while it touches (the kernel clears it when it stops).
-#pragma omp for schedule(static)
+      pack_motion(i);
+    }
+    // A pair holds a history only while it touches (the kernel clears it when it stops).
+#pragma omp for schedule(static) nowait
     for (std::size_t k = 0; k < pair_history_.size(); ++k)
       pair_touching_[k] = meshes::norm2(pair_history_[k]) != 0;
+#pragma omp for schedule(static)
+    for (std::size_t k = 0; k < wall_candidate_.size(); ++k) {
+      const std::uint32_t w = wall_candidate_[k] >> 24, f = wall_candidate_[k] & 0xFFFFFFu;
+      if (wall_kind_[w] == WallKind::mesh)
+        wall_candidate_bound_[k] = walls_[std::size_t(wall_local_[w])].bound(f);
+    }
   }
 }
 

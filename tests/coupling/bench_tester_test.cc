@@ -1,12 +1,15 @@
 // The tester workload of `wearsim bench dem` builds its reference case in code; it must be
 // the case of cases/reference (all but the run length and the output folder), so the bench
 // times what `wearsim dem cases/reference/convex.prm` runs. Its options replace the case's
-// values, and bad values stop the command naming the option before anything is built.
+// values, and bad values stop the command naming the option before anything is built. A bed
+// state written with --state is continued from the file instead of being filled again.
 #include "coupling/app/bench_command.h"
 #include "coupling/app/bench_tester.h"
+#include "small_tester.h"
 
 #include <catch2/catch.hpp>
 
+#include <filesystem>
 #include <sstream>
 
 using namespace wear::coupling;
@@ -65,4 +68,41 @@ TEST_CASE("wearsim bench dem: a bad tester option stops naming the option", "[co
   CHECK_THROWS_WITH(run_bench_command({"dem", "--workload", "annulus", "--scale", "2"}, out),
                     Catch::Contains("--workload tester"));
   CHECK(out.str().empty()); // stopped before any workload was built
+}
+
+TEST_CASE("wearsim bench dem --state: a flowing bed written once and continued from the file",
+          "[coupling][bench]") {
+  // The small tester (2,300 particles) as a case file; the state goes beside it.
+  namespace fs = std::filesystem;
+  const std::string dir = "bench_state";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  write_resolved_parameters(small_tester_case(dir, true), dir + "/case.prm");
+  const std::string state = dir + "/state.h5";
+  const auto bench = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args{"dem",     "--workload", "tester", "--case", dir + "/case.prm",
+                                  "--state", state,        "--warm", "0",      "--steps",
+                                  "20",      "--threads",  "2"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    std::ostringstream out;
+    run_bench_command(args, out);
+    return out.str();
+  };
+  const std::string first = bench({"--flow", "200"});
+  CHECK_THAT(first, Catch::Contains("state written to " + state));
+  CHECK_THAT(first, Catch::Contains("200 steps of the revolution done"));
+  REQUIRE(fs::exists(state));
+  const std::string second = bench({});
+  CHECK_THAT(second, Catch::Contains("state from " + state));
+  CHECK_THAT(second, Catch::Contains("200 steps of the revolution done"));
+  CHECK_THAT(second, !Catch::Contains("state written"));
+  // Another case (here another particle size) does not continue that bed.
+  CHECK_THROWS_WITH(bench({"--scale", "5"}),
+                    Catch::Contains("--state") && Catch::Contains("another case"));
+  std::ostringstream out;
+  CHECK_THROWS_WITH(
+      run_bench_command(
+          {"dem", "--workload", "tester", "--case", dir + "/case.prm", "--flow", "100000000"}, out),
+      Catch::Contains("--flow"));
+  fs::remove_all(dir);
 }

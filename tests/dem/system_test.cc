@@ -429,9 +429,10 @@ TEST_CASE("a finely tessellated concave wall gives one Hertz contact", "[dem][wa
 }
 
 TEST_CASE("the wall's cheap rejections never drop a face within reach", "[dem][walls]") {
-  // The step rejects a candidate face by the distance to its plane and then by the distance to
-  // its bounding sphere before the closest-point search. Both are lower bounds of the true
-  // distance, so a rejected face must lie at least r from the centre. Points around a finely
+  // The step rejects a candidate face by the distance to its plane, then by the distance to
+  // its bounding sphere and by the disc the ball cuts from its plane, before the closest-point
+  // search. All three are lower bounds of the true distance, so a rejected face must lie at
+  // least r from the centre. Points around a finely
   // tessellated cylinder (convex, 1-degree chords, 1 mm along the axis), where many faces'
   // planes pass near a sphere that touches the cylinder elsewhere.
   const double R = 0.02;
@@ -445,23 +446,30 @@ TEST_CASE("the wall's cheap rejections never drop a face within reach", "[dem][w
   const MeshWall wall(mesh, 0, {}, false, "cylinder");
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> unit(0, 1);
-  int n_wrong = 0, n_sphere_only = 0, n_touching = 0;
+  int n_wrong = 0, n_sphere_only = 0, n_disc_only = 0, n_touching = 0, n_combined_differs = 0;
   for (int k = 0; k < 200; ++k) {
     const double th = 2 * pi * unit(rng), rho = R + 0.01 * unit(rng);
     const Vec3 x{0.02 * unit(rng), rho * std::cos(th), rho * std::sin(th)};
     const double r = 1e-3 + 6e-3 * unit(rng);
     for (std::uint32_t f = 0; f < mesh.n_faces(); ++f) {
-      const bool by_plane = wall.plane_distance(f, x) >= r;
-      const bool by_sphere = wall.beyond_bound(f, x, r);
+      const auto& b = wall.bound(f);
+      const double h = b.plane_distance(x);
+      const bool by_plane = h >= r;
+      const bool by_sphere = b.beyond_sphere(x, r);
+      const bool by_disc = !by_plane && b.beyond_disc(x, r, h);
       const bool touching = norm(wall.closest(f, x).point - x) < r;
-      n_wrong += (by_plane || by_sphere) && touching;
+      n_wrong += (by_plane || by_sphere || by_disc) && touching;
+      n_combined_differs += b.rejects(x, r) != (by_plane || by_sphere || by_disc);
       n_sphere_only += by_sphere && !by_plane;
+      n_disc_only += by_disc && !by_sphere;
       n_touching += touching;
     }
   }
   CHECK(n_wrong == 0);
+  CHECK(n_combined_differs == 0);
   CHECK(n_touching > 0);
   CHECK(n_sphere_only > n_touching); // the sphere test does reject what the plane test passes
+  CHECK(n_disc_only > n_touching);   // and the disc test what the sphere test passes
 }
 
 TEST_CASE("every wall face a particle touches is among its listed candidates", "[dem][walls]") {
