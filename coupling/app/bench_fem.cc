@@ -32,11 +32,16 @@ namespace wear::coupling {
 
 namespace {
 
+double default_stress_radius() {
+  const CaseParameters defaults;
+  return stress_averaging_radius(defaults);
+}
+
 struct BenchFemArguments {
   meshes::SampleGeometry sample; ///< the reference convex sample, at the requested mesh size
   std::vector<unsigned int> degrees{1, 2};
   /// [m] of the ball-averaged stress: the default case's (mean particle radius at s = 4)
-  double stress_radius = stress_averaging_radius(CaseParameters{});
+  double stress_radius = default_stress_radius();
   std::string directory = "output/bench-fem";
 };
 
