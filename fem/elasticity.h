@@ -2,6 +2,7 @@
 // Linear elasticity of the sample (model.md section 6): simplex P1 or P2 elements, clamped
 // bottom face, tractions from an extensive per-face force field on the labelled boundary.
 #include "fem/boundary_face_map.h"
+#include "fem/stress_measures.h"
 #include "meshes/face_field.h"
 
 #include <deal.II/dofs/dof_handler.h>
@@ -16,6 +17,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace wear::fem {
 
@@ -25,6 +27,9 @@ struct ElasticityParameters {
   double yield_stress = 20e6;        ///< [Pa] for the safety factor
   unsigned int degree = 1;           ///< 1 (P1) or 2 (P2)
   double relative_tolerance = 1e-10; ///< of the CG residual
+  /// [m] radius of the ball the stress is averaged over (stress_measures.h); 0: no ball
+  /// average (a coupled run sets the mean particle radius when the case file gives 0)
+  double averaging_radius = 0;
 };
 
 struct ElasticityResult {
@@ -32,8 +37,20 @@ struct ElasticityResult {
   double setup_seconds = 0, assemble_seconds = 0, solve_seconds = 0;
   meshes::Vec3 applied_force;  ///< [N] sum of the applied face forces
   meshes::Vec3 reaction_force; ///< [N] force the clamped face exerts on the sample
-  double max_von_mises = 0;    ///< [Pa] over all quadrature points
-  double safety_factor = 0;    ///< yield stress / max von Mises
+  /// [Pa] largest von Mises over all quadrature points: mesh-dependent, it grows without
+  /// bound under refinement near a contact load (docs/theory.md)
+  double max_von_mises_qp = 0;
+  double von_mises_p99 = 0;  ///< [Pa] volume-weighted 99th percentile over quadrature points
+  double von_mises_p999 = 0; ///< [Pa] volume-weighted 99.9th percentile
+  /// [Pa] largest von Mises of the stress averaged over a ball of radius averaging_radius,
+  /// over the centres: the mesh vertices and the surface faces' centroids (0: no radius)
+  double max_von_mises_ball = 0;
+  meshes::Vec3 max_ball_centre; ///< [m] where that maximum is
+  /// [Pa] per face of the map's surface: von Mises of the ball-averaged stress centred at the
+  /// face's centroid (empty without a radius)
+  std::vector<double> face_von_mises_ball;
+  double measures_seconds = 0; ///< [s] percentiles and ball averages
+  double safety_factor = 0;    ///< yield stress / max_von_mises_qp
   double max_displacement = 0; ///< [m] largest displacement component
   /// Max von Mises [Pa] over the cells touching each boundary label's faces.
   std::map<int, double> max_von_mises_per_label;
@@ -62,7 +79,10 @@ private:
   void setup_system();
   void assemble_system(const meshes::FaceField<meshes::Vec3>& forces, ElasticityResult& r);
   void solve(ElasticityResult& r);
-  void compute_stresses(ElasticityResult& r);
+  /// The stress at every quadrature point; fills the cell fields and r's qp maxima.
+  StressSamples compute_stresses(ElasticityResult& r);
+  /// Percentiles and ball averages of `samples` into r.
+  void compute_measures(const StressSamples& samples, ElasticityResult& r) const;
 
   const dealii::Triangulation<3>& tria_;
   const BoundaryFaceMap& faces_;

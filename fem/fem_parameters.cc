@@ -31,6 +31,8 @@ void validate(const FemParameters& p) {
   require(e.degree == 1 || e.degree == 2, "FEM/Degree", "must be 1 or 2");
   require(e.relative_tolerance > 0 && e.relative_tolerance < 1e-2, "FEM/Solver tolerance",
           "must lie in (0, 1e-2)");
+  require(e.averaging_radius >= 0 && std::isfinite(e.averaging_radius),
+          "FEM/Stress averaging radius", "must be 0 (the mean particle radius) or positive [m]");
   const auto& w = p.worn_sample;
   require(w.remesh_min_scaled_jacobian > 0 && w.remesh_min_scaled_jacobian < 1,
           "FEM/Remesh scaled Jacobian", "must lie in (0, 1)");

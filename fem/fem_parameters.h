@@ -42,6 +42,11 @@ void visit_parameters(FemParameters& f, Visitor& v) {
   v.real("Yield stress", e.yield_stress, "[Pa] For the safety factor (PE1000: about 20 MPa).");
   v.unsigned_integer("Degree", e.degree, 1, 2, "Polynomial degree of the simplex elements.");
   v.real("Solver tolerance", e.relative_tolerance, "[-] Relative residual of the AMG-CG solve.");
+  v.real("Stress averaging radius", e.averaging_radius,
+         "[m] Radius of the ball the stress tensor is averaged over for the stress measures "
+         "that converge under refinement (stages.csv: max_von_mises_ball_Pa) and for the "
+         "stress-informed wear law; 0: the mean particle radius at the run's scaling factor "
+         "(the coarse-graining width of the wall loads).");
   v.real("Remesh scaled Jacobian", w.remesh_min_scaled_jacobian,
          "[-] Remesh when mesh motion leaves a cell below this scaled Jacobian (or inverted).");
   v.real("Feature angle", w.remesh.feature_angle_deg,

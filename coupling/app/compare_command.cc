@@ -1,6 +1,7 @@
 // `wearsim compare <runA> <runB>`: wear volumes and the reduction of B against A (DEM wear
 // over all revolutions, and the volume removed from the geometry with its amplification),
-// wear per column, and per stage the peak von Mises stress and safety factor of both runs.
+// wear per column, and per stage the peak ball-averaged von Mises stress (the measure that
+// converges under refinement, fem/stress_measures.h) and the safety factor of both runs.
 // Reduction = 1 - B / A, in percent (positive: B wears less).
 #include "coupling/app/compare_command.h"
 
@@ -28,7 +29,7 @@ RunHistory load(const std::string& dir) {
   const auto dims = h5.dims("/revolutions/column_wear_m3");
   r.n_columns = dims.size() == 2 ? dims[1] : 0;
   r.stage = h5.doubles("/stages/stage");
-  r.von_mises = h5.doubles("/stages/max_von_mises_Pa");
+  r.von_mises = h5.doubles("/stages/max_von_mises_ball_Pa");
   r.safety = h5.doubles("/stages/safety_factor");
   r.applied = h5.doubles("/stages/cumulative_applied_m3");
   r.amplification = h5.doubles("/stages/amplification");
@@ -79,7 +80,7 @@ int run_compare_command(const std::vector<std::string>& args, std::ostream& out)
   for (std::size_t c = 0; c < std::min(a.n_columns, b.n_columns); ++c)
     row("column " + std::to_string(c + 1) + " wear [mm^3]", column_total(a, c), column_total(b, c),
         1e9);
-  out << "\nstage  amplification A/B   peak von Mises A/B [MPa]   safety factor A/B\n";
+  out << "\nstage  amplification A/B   ball-averaged von Mises A/B [MPa]  safety factor A/B\n";
   for (std::size_t k = 0; k < std::max(a.stage.size(), b.stage.size()); ++k) {
     const auto at = [&](const std::vector<double>& v) { return k < v.size() ? v[k] : 0.0; };
     std::snprintf(line, sizeof line, "%5zu  %8g / %-8g  %11.4f / %-11.4f  %8.1f / %-8.1f\n", k + 1,

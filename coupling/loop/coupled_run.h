@@ -53,7 +53,8 @@ struct RunTotals {
 
 /// The FEM's answer to a stage's loads, on the surface before the geometry update.
 struct StageStress {
-  meshes::FaceField<double> von_mises; ///< [Pa] of each surface face's cell (intensive)
+  /// [Pa] ball-averaged at each surface face's centroid (intensive; fem/stress_measures.h)
+  meshes::FaceField<double> von_mises;
 };
 
 /// A staged stage's fields carried onto the surface after the geometry update.

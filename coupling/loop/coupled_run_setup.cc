@@ -264,14 +264,14 @@ int CoupledRun::stopped_by(int signal, const StageRecord& r, bool inside) const 
 
 void CoupledRun::print_header() const {
   log_ << "stage scheme     revs   wear[mm^3]  applied[mm^3]  change[mm^3]  remesh  min-SJ   "
-          "max-vM[MPa]  pushed  by[mm]  time[s]\n";
+          "ball-vM[MPa]  pushed  by[mm]  time[s]\n";
 }
 
 void CoupledRun::print_stage(const StageRecord& r) const {
   log_ << format("%5d %-9s %3d-%-3d %11.4f %14.4f %13.4f %7d %7.3f %12.3f %7d %8.3f %8.1f%s\n",
                  r.stage, scheme_name(r.scheme).c_str(), r.first_revolution, r.last_revolution,
                  r.dem_wear_volume * 1e9, r.applied_volume * 1e9, r.geometry_volume_change * 1e9,
-                 r.n_remeshes, r.min_scaled_jacobian, r.max_von_mises * 1e-6, r.n_pushed,
+                 r.n_remeshes, r.min_scaled_jacobian, r.max_von_mises_ball * 1e-6, r.n_pushed,
                  r.max_push * 1e3,
                  r.dem_seconds + r.wear_seconds + r.fem_solve_seconds + r.motion_seconds +
                      r.remesh_seconds + r.output_seconds,

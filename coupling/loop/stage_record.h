@@ -32,11 +32,16 @@ struct StageRecord {
   int n_tetrahedra = 0, n_surface_faces = 0, n_pushed = 0;
   double max_push = 0;            ///< [m] largest displacement of a pushed particle
   double min_scaled_jacobian = 0; ///< [-] of the mesh handed on
-  double max_von_mises = 0;       ///< [Pa] under the stage-averaged loads (0: not solved)
-  double safety_factor = 0;       ///< [-] yield / max von Mises
-  double max_displacement = 0;    ///< [m]
-  double mean_force_z = 0;        ///< [N] stage-averaged vertical load on the sample (sample frame)
-  double wear_face_force_z = 0;   ///< [N] the same on the wear faces only
+  /// Von Mises under the stage-averaged loads (0: not solved), three measures [Pa]:
+  double max_von_mises_ball = 0;      ///< [Pa] largest of the ball-averaged stress (converges)
+  double von_mises_p99 = 0;           ///< [Pa] volume-weighted 99th percentile
+  double von_mises_p999 = 0;          ///< [Pa] volume-weighted 99.9th percentile
+  double max_von_mises_qp = 0;        ///< [Pa] largest at a quadrature point (mesh-dependent)
+  double stress_averaging_radius = 0; ///< [m] radius of the ball average
+  double safety_factor = 0;           ///< [-] yield / max_von_mises_qp
+  double max_displacement = 0;        ///< [m]
+  double mean_force_z = 0;      ///< [N] stage-averaged vertical load on the sample (sample frame)
+  double wear_face_force_z = 0; ///< [N] the same on the wear faces only
   double wear_face_normal_force = 0;       ///< [N] stage-averaged normal force on the wear faces
   int volume_points = 0, volume_cells = 0; ///< of the stage's volume output (0: none)
   double dem_seconds = 0, wear_seconds = 0, fem_solve_seconds = 0, motion_seconds = 0,

@@ -5,10 +5,11 @@
 //
 // V_f [m^3] the wear law's volume over the stage's DEM window (Archard: alpha times the
 // load-distance), A [-] the declared amplification, s the stress-informed factor
-// 1 + c (sigma_vM,f / sigma_ref)^m from the previous stage's von Mises stress (1 when the law
-// is off). The depth it recedes a vertex, sum(dV_f) / sum(A_f) over the wear faces around it,
-// is checked against Coupling/Maximum depth fraction of the longest edge there; adaptive
-// amplification lowers A until the deepest vertex meets the cap.
+// 1 + c (sigma_vM,f / sigma_ref)^m from the previous stage's von Mises stress, ball-averaged
+// at the face (fem/stress_measures.h; 1 when the law is off). The depth it recedes a vertex,
+// sum(dV_f) / sum(A_f) over the wear faces around it, is checked against Coupling/Maximum depth
+// fraction of the longest edge there; adaptive amplification lowers A until the deepest vertex
+// meets the cap.
 #include "coupling/parameters/coupling_parameters.h"
 #include "meshes/face_field.h"
 

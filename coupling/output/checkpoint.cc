@@ -72,7 +72,11 @@ void visit(StageRecord& r, V& v) {
   v("pushed_particles", r.n_pushed);
   v("max_push_m", r.max_push);
   v("min_scaled_jacobian", r.min_scaled_jacobian);
-  v("max_von_mises_Pa", r.max_von_mises);
+  v("max_von_mises_ball_Pa", r.max_von_mises_ball);
+  v("von_mises_p99_Pa", r.von_mises_p99);
+  v("von_mises_p999_Pa", r.von_mises_p999);
+  v("max_von_mises_qp_Pa", r.max_von_mises_qp);
+  v("stress_averaging_radius_m", r.stress_averaging_radius);
   v("safety_factor", r.safety_factor);
   v("max_displacement_m", r.max_displacement);
   v("mean_force_z_N", r.mean_force_z);

@@ -7,7 +7,10 @@
 One run: wear vs revolutions with the fits y = a x and y = b x^2 + c x (R^2), wear per column
 and per convex element, normal force, bottom-layer speeds, coefficients of variation, stress
 per stage, and worn profiles (side and front views) of chosen convex elements per stage.
-Two runs: cumulative wear of both, per-column wear side by side, peak von Mises per stage.
+Two runs: cumulative wear of both, per-column wear side by side, peak ball-averaged von Mises
+per stage. Stress per stage: the largest ball-averaged von Mises (converges under refinement),
+the volume-weighted 99.9th and 99th percentiles, and the largest quadrature-point value
+(mesh-dependent); runs written before these columns show only the last (max_von_mises_Pa).
 Needs python3-matplotlib, python3-numpy and python3-h5py (Debian packages).
 """
 import argparse
@@ -39,6 +42,17 @@ def column(rows, name, default=np.nan):
         except (TypeError, ValueError):
             out.append(default)
     return np.array(out)
+
+
+def qp_von_mises(rows):
+    """[Pa] largest quadrature-point von Mises per stage (max_von_mises_Pa in older runs)."""
+    qp = column(rows, "max_von_mises_qp_Pa")
+    return np.where(np.isnan(qp), column(rows, "max_von_mises_Pa"), qp)
+
+
+def positive(v):
+    """v with the stages without a solve (0) as gaps, for a log axis."""
+    return np.where(v > 0, v, np.nan)
 
 
 def fits(x, y):
@@ -137,9 +151,19 @@ def plot_stages(stages, out):
         axes[0].plot(st, worn_through, "s:", label="asked of worn-through faces (not removed)")
     axes[0].set_ylabel("volume per stage [mm$^3$]")
     axes[0].legend(fontsize=8)
-    vm = column(stages, "max_von_mises_Pa") * 1e-6
-    axes[1].plot(st, vm, "o-", color="tab:red")
-    axes[1].set_ylabel("peak von Mises [MPa]")
+    radius = column(stages, "stress_averaging_radius_m")
+    ball = "ball average" + (f" (R = {radius[0] * 1e3:.2g} mm)" if len(radius) and radius[0] > 0 else "")
+    for name, label, style in [("max_von_mises_ball_Pa", "max of the " + ball, "o-"),
+                               ("von_mises_p999_Pa", "99.9th percentile (by volume)", "s--"),
+                               ("von_mises_p99_Pa", "99th percentile (by volume)", "^--")]:
+        v = positive(column(stages, name) * 1e-6)
+        if not np.all(np.isnan(v)):
+            axes[1].plot(st, v, style, label=label)
+    axes[1].plot(st, positive(qp_von_mises(stages) * 1e-6), "x:", color="gray",
+                 label="max at a quadrature point (mesh-dependent)")
+    axes[1].set_yscale("log")
+    axes[1].set_ylabel("von Mises [MPa]")
+    axes[1].legend(fontsize=7)
     for k, r in enumerate(stages):
         if float(r.get("remeshes", 0)) > 0:
             axes[1].axvline(st[k], color="gray", alpha=0.3)
@@ -303,10 +327,13 @@ def plot_compare(a, b, out):
     axes[1].set_ylabel("wear over all revolutions [mm$^3$]")
     axes[1].legend(fontsize=8)
     for rows, name in [(sa, a), (sb, b)]:
-        axes[2].plot(column(rows, "stage"), column(rows, "max_von_mises_Pa") * 1e-6, "o-",
-                     label=os.path.basename(name.rstrip("/")))
+        ball = column(rows, "max_von_mises_ball_Pa")
+        label = os.path.basename(name.rstrip("/"))
+        if np.all(np.isnan(ball)):  # a run from before the ball average
+            ball, label = qp_von_mises(rows), label + " (quadrature-point max)"
+        axes[2].plot(column(rows, "stage"), ball * 1e-6, "o-", label=label)
     axes[2].set_xlabel("stage")
-    axes[2].set_ylabel("peak von Mises [MPa]")
+    axes[2].set_ylabel("peak ball-averaged von Mises [MPa]")
     axes[2].legend(fontsize=8)
     for ax in axes:
         ax.grid(alpha=0.3)

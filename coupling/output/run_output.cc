@@ -3,7 +3,8 @@
 // summary.csv: the wear tester's per-revolution columns (tester_output.h), then the columns
 // of the stage the revolution belongs to: stage, scheme, amplification, the volume the stage
 // asked of the geometry and the change the geometry made, remeshes so far, the smallest
-// scaled Jacobian handed on, the peak von Mises stress and safety factor, pushed particles.
+// scaled Jacobian handed on, the peak von Mises stress (ball-averaged, then at a quadrature
+// point: mesh-dependent) and safety factor, pushed particles.
 // stages.csv: every StageRecord field (stage_columns()) plus the scheme name and distortion.
 // history.h5: /revolutions/<column> and /stages/<column>, one value per row, for scripts.
 #include "coupling/output/run_output.h"
@@ -71,16 +72,17 @@ void RunOutput::write_tables(const std::vector<dem::RevolutionRecord>& revolutio
   meshes::write_atomically(summary_path(), [&](std::ostream& c) {
     write_summary_header(c, n_columns, element_labels);
     c << ",stage,scheme,amplification,stage_applied_volume_m3,stage_geometry_volume_change_m3,"
-         "total_remeshes,min_scaled_jacobian,max_von_mises_Pa,safety_factor,pushed_particles\n";
+         "total_remeshes,min_scaled_jacobian,max_von_mises_ball_Pa,max_von_mises_qp_Pa,"
+         "safety_factor,pushed_particles\n";
     for (const auto& r : revolutions) {
       write_summary_row(c, r, element_labels);
       if (const StageRecord* s = stage_of(r.revolution))
         c << "," << s->stage << "," << scheme_name(s->scheme) << "," << s->amplification << ","
           << s->applied_volume << "," << s->geometry_volume_change << "," << s->total_remeshes
-          << "," << s->min_scaled_jacobian << "," << s->max_von_mises << "," << s->safety_factor
-          << "," << s->n_pushed << "\n";
+          << "," << s->min_scaled_jacobian << "," << s->max_von_mises_ball << ","
+          << s->max_von_mises_qp << "," << s->safety_factor << "," << s->n_pushed << "\n";
       else
-        c << ",0,settling,1,0,0,0,0,0,0,0\n";
+        c << ",0,settling,1,0,0,0,0,0,0,0,0\n";
     }
   });
   const auto columns = stage_columns();

@@ -46,6 +46,11 @@ struct CaseParameters {
   std::string case_file; ///< path the parameters were read from ("" for defaults)
 };
 
+/// [m] The radius of the ball the stress is averaged over: FEM/Stress averaging radius, or
+/// when that is 0 the number-weighted mean particle radius at the run's scaling factor
+/// (the coarse-graining width of the wall loads).
+double stress_averaging_radius(const CaseParameters& p);
+
 /// Declares every subsection and parameter with its default and documentation.
 void declare_parameters(dealii::ParameterHandler& prm);
 

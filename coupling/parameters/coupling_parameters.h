@@ -30,7 +30,8 @@ struct ScheduleItem {
 
 /// Stress-informed Archard law, a hypothesis to test: the wear coefficient on a face is
 /// scaled by 1 + sensitivity (sigma_vM / reference stress)^exponent, sigma_vM being the von
-/// Mises stress of the face's cell in the previous stage (none in the first). The factor is
+/// Mises stress of the previous stage (none in the first) averaged over a ball of
+/// FEM/Stress averaging radius at the face (fem/stress_measures.h). The factor is
 /// part of the wear increment (coupling/loop/wear_increment.h, stress_factor).
 struct StressInformedWear {
   bool enabled = false;
@@ -63,7 +64,8 @@ void visit_parameters(StressInformedWear& s, Visitor& v) {
   v.boolean("Enabled", s.enabled,
             "Hypothesis to test, off by default: scale the wear coefficient per face by "
             "1 + Sensitivity (sigma_vM / Reference stress)^Exponent, sigma_vM the von Mises "
-            "stress of the face's cell in the previous stage.");
+            "stress of the previous stage averaged over a ball of FEM/Stress averaging radius "
+            "centred at the face.");
   v.real("Sensitivity", s.sensitivity, "[-] Scale of the stress term.");
   v.real("Reference stress", s.reference_stress,
          "[Pa] Stress that doubles the coefficient at Sensitivity 1.");

@@ -101,6 +101,21 @@ TEST_CASE("bad case files fail naming the parameter", "[coupling][parameters]") 
   const auto fractions =
       write("fractions.prm", "subsection DEM\n set PSD mass fractions = 0.25, 0.5\nend\n");
   CHECK_THROWS(read_case(fractions));
+  const auto radius =
+      write("radius.prm", "subsection FEM\n set Stress averaging radius = -1e-3\nend\n");
+  CHECK_THROWS_WITH(read_case(radius), Catch::Contains("FEM/Stress averaging radius"));
+}
+
+TEST_CASE("the stress averaging radius is the mean particle radius unless set",
+          "[coupling][parameters]") {
+  // Number fractions n_k ~ f_k / d_k^3 of the default PSD (2.0, 2.65, 3.35 mm; 0.25, 0.5,
+  // 0.25 by mass) give a mean diameter of 2.408 mm at s = 1; the radius at s = 4: 4.8165 mm.
+  CaseParameters p;
+  CHECK(stress_averaging_radius(p) == Approx(4.8165e-3).epsilon(1e-4));
+  p.dem.psd.scaling_factor = 1;
+  CHECK(stress_averaging_radius(p) == Approx(4.8165e-3 / 4).epsilon(1e-4));
+  p.fem.elasticity.averaging_radius = 2e-3;
+  CHECK(stress_averaging_radius(p) == 2e-3);
 }
 
 TEST_CASE("every parameter is documented", "[coupling][parameters]") {
