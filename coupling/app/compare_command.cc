@@ -66,8 +66,6 @@ int steady_revolution(const std::string& path) {
 }
 
 Run load(const std::string& dir, const std::string& side, int from) {
-  if (!std::filesystem::is_directory(dir))
-    throw std::runtime_error("side " + side + ": run folder '" + dir + "' does not exist");
   Run r;
   r.dir = dir;
   std::ostringstream warnings;
@@ -204,10 +202,13 @@ void describe(const Side& s, const Estimate& wear, std::ostream& out) {
   out << s.label << " (" << (first.convex ? "convex" : "plain") << "): ";
   char buf[256];
   if (s.runs.size() == 1) {
+    char tau[64];
+    std::snprintf(tau, sizeof tau, "autocorrelation time %.2g revolutions", wear.tau);
+    const std::string correlation = wear.tau >= 1 ? tau : "no positive autocorrelation";
     std::snprintf(buf, sizeof buf,
                   "interval from one run's %d revolutions, batch means (wear per revolution: "
-                  "%d batches of %d, autocorrelation time %.2g revolutions)\n",
-                  wear.n_values, wear.n_batches, wear.batch_size, wear.tau);
+                  "%d batches of %d, %s)\n",
+                  wear.n_values, wear.n_batches, wear.batch_size, correlation.c_str());
     out << buf;
   } else {
     out << "interval across " << s.runs.size()
@@ -218,7 +219,7 @@ void describe(const Side& s, const Estimate& wear, std::ostream& out) {
     std::string steady = r.steady_revolution > 0
                              ? "steady from revolution " + std::to_string(r.steady_revolution)
                              : "never steady";
-    if (r.first != r.steady_revolution + 1)
+    if (r.steady_revolution == 0 || r.first != r.steady_revolution + 1)
       steady += "; averaged from --from";
     std::snprintf(buf, sizeof buf, "  %s: revolutions %d-%d of %d (%s)\n", r.dir.c_str(), r.first,
                   r.n_revolutions, r.n_revolutions, steady.c_str());
@@ -286,6 +287,11 @@ std::string joined(const std::vector<std::string>& v) {
 
 int run_compare_command(const std::vector<std::string>& args, std::ostream& out) {
   const CompareArguments c = compare_arguments(args);
+  for (const auto* side : {&c.a, &c.b})
+    for (const auto& dir : *side)
+      if (!std::filesystem::is_directory(dir))
+        throw std::runtime_error("side " + std::string(side == &c.a ? "A" : "B") +
+                                 ": run folder '" + dir + "' does not exist");
   const Side a = load_side(c.a, "A", c.from), b = load_side(c.b, "B", c.from);
   const auto wear = [](const Run& r) { return r.wear; };
   const Estimate wear_a = per_revolution(a, wear), wear_b = per_revolution(b, wear);
