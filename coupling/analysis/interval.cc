@@ -12,7 +12,8 @@
 // series the batch-means variance falls short of the true one by about tau / (2 b) (the
 // correlation inside a batch and between neighbouring batches), and tau itself is
 // underestimated on short series; b = 2 tau covered the mean in 92 % of draws (n = 200,
-// phi = 0.5), b = 5 tau in 94.6 %, b = 10 tau no better while costing degrees of freedom.
+// phi = 0.5, 2000 draws), b = 5 tau in 94.6 %, b = 10 tau in 95.3 % (within the draws'
+// scatter of 0.5 %) with half as many batches, so a wider interval on short series.
 // The floor of 5 batches keeps t_{0.975,k-1} <= 2.78 on short series, where a large b would
 // leave too few batches for a usable interval; there the interval is too narrow when the
 // series is strongly correlated (n = 40, phi = 0.8: 88 % coverage), so several runs per side
