@@ -11,10 +11,13 @@ bash scripts/build.sh
 # refuses a folder that holds a run without it)
 ./build/wearsim run --overwrite cases/quick/plain.prm
 ./build/wearsim run --overwrite cases/quick/convex.prm
-./build/wearsim compare output/quick-plain output/quick-convex
+# --from 3: six revolutions need not reach steady state (two consecutive revolutions under
+# DEM/Steady threshold), and compare refuses a run without revolutions after it; the four
+# staged revolutions after the two settling ones are averaged instead
+./build/wearsim compare --from 3 output/quick-plain output/quick-convex
 /usr/bin/python3 coupling/output/plot_run.py output/quick-plain output/quick-convex
-/usr/bin/python3 coupling/output/plot_run.py --compare output/quick-plain output/quick-convex \
-  --output output/quick-compare
+/usr/bin/python3 coupling/output/plot_run.py --compare --from 3 output/quick-plain \
+  output/quick-convex --output output/quick-compare
 echo
 echo "plots: output/quick-plain/plots/, output/quick-convex/plots/, output/quick-compare/compare.png"
 echo "ParaView: output/quick-convex/history.xdmf (sample surface and volume per stage)"

@@ -4,8 +4,8 @@
 #   tester built on it (dem/tester/);
 #   fem/ never includes dem/ or coupling/;
 #   inside coupling/, only the command line (app/) sees everything: the loop and the run
-#   output never include app/, and the parameters include neither the loop, the output nor
-#   the command line.
+#   output never include app/, the parameters include neither the loop, the output nor
+#   the command line, and the statistics (analysis/) include no other part and no deal.II.
 set(rules
   "meshes|deal\\.II/|fem/|dem/|coupling/"
   "dem|deal\\.II/|fem/|coupling/"
@@ -13,7 +13,8 @@ set(rules
   "fem|dem/|coupling/"
   "coupling/loop|coupling/app/"
   "coupling/output|coupling/app/"
-  "coupling/parameters|coupling/app/|coupling/loop/|coupling/output/")
+  "coupling/parameters|coupling/app/|coupling/loop/|coupling/output/"
+  "coupling/analysis|coupling/app/|coupling/loop/|coupling/output/|coupling/parameters/|deal\\.II/|dem/|fem/|meshes/")
 set(violations "")
 foreach(rule IN LISTS rules)
   string(REPLACE "|" ";" parts "${rule}")

@@ -3,19 +3,25 @@
 
     /usr/bin/python3 coupling/output/plot_run.py <run> [--elements C13,C33]
     /usr/bin/python3 coupling/output/plot_run.py --compare <runA> <runB> [--output DIR]
+    /usr/bin/python3 coupling/output/plot_run.py --compare [--from K] <A1> [<A2> ...] -- <B1> [...]
 
 One run: wear vs revolutions with the fits y = a x and y = b x^2 + c x (R^2), wear per column
 and per convex element, normal force, bottom-layer speeds, coefficients of variation, stress
 per stage, and worn profiles (side and front views) of chosen convex elements per stage.
-Two runs: cumulative wear of both, per-column wear side by side, peak ball-averaged von Mises
-per stage. Stress per stage: the largest ball-averaged von Mises (converges under refinement),
-the volume-weighted 99.9th and 99th percentiles, and the largest quadrature-point value
-(mesh-dependent); runs written before these columns show only the last (max_von_mises_Pa).
+Compare: cumulative wear and wear per revolution of every run of both sides, the mean wear
+per revolution after steady state with its 95 % interval (band; bars with error bars for the
+wear face and each column), peak ball-averaged von Mises per stage (error bars across runs).
+The intervals are those of `wearsim compare`: batch means over one run's revolutions, or
+across runs. Stress per stage: the largest ball-averaged von Mises (converges under
+refinement), the volume-weighted 99.9th and 99th percentiles, and the largest
+quadrature-point value (mesh-dependent); runs written before these columns show only the
+last (max_von_mises_Pa).
 Needs python3-matplotlib, python3-numpy and python3-h5py (Debian packages).
 """
 import argparse
 import csv
 import glob
+import math
 import os
 import sys
 
@@ -48,6 +54,13 @@ def qp_von_mises(rows):
     """[Pa] largest quadrature-point von Mises per stage (max_von_mises_Pa in older runs)."""
     qp = column(rows, "max_von_mises_qp_Pa")
     return np.where(np.isnan(qp), column(rows, "max_von_mises_Pa"), qp)
+
+
+def ball_von_mises(rows):
+    """[Pa] largest ball-averaged von Mises per stage; the quadrature-point value for runs
+    written before the ball average (the caller labels it)."""
+    ball = column(rows, "max_von_mises_ball_Pa")
+    return (ball, True) if not np.all(np.isnan(ball)) else (qp_von_mises(rows), False)
 
 
 def positive(v):
@@ -308,54 +321,167 @@ def plot_run(run, elements, hours_per_revolution=28.0):
     plot_wear_out(run, stages, out, hours_per_revolution)
 
 
-def plot_compare(a, b, out):
+def t_quantile(p, dof):
+    """Student-t quantile by bisection on the distribution function (Simpson integration of the
+    density); the plots need two or three digits. coupling/analysis/interval.cc is the reference."""
+    if dof > 1e6:
+        dof = 1e6
+    c = math.exp(math.lgamma((dof + 1) / 2) - math.lgamma(dof / 2)) / math.sqrt(dof * math.pi)
+    def cdf(t, n=2000):
+        h = t / n
+        f = [c * (1 + (i * h) ** 2 / dof) ** (-(dof + 1) / 2) for i in range(n + 1)]
+        return 0.5 + h / 3 * (f[0] + f[-1] + 4 * sum(f[1:-1:2]) + 2 * sum(f[2:-1:2]))
+    lo, hi = 0.0, 1.0
+    while cdf(hi) < p:
+        hi *= 2
+    for _ in range(50):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if cdf(mid) < p else (lo, mid)
+    return 0.5 * (lo + hi)
+
+
+def batch_means(x):
+    """Mean and 95 % half-width of one run's series: batches of ceil(5 tau) values (at least 5
+    batches), tau by Sokal's window; the rule of coupling/analysis/interval.cc."""
+    x = np.asarray(x, dtype=float)
+    n = len(x)
+    d = x - x.mean()
+    c0 = float(np.dot(d, d)) / n
+    tau = 1.0
+    if c0 > 0:
+        for lag in range(1, n):
+            tau += 2 * float(np.dot(d[:-lag], d[lag:])) / n / c0
+            if lag >= 5 * tau:
+                break
+    b = max(1, min(math.ceil(5 * tau), n // 5))
+    k = n // b
+    y = x[n - k * b:].reshape(k, b).mean(axis=1)
+    se = y.std(ddof=1) / math.sqrt(k)
+    return y.mean(), (t_quantile(0.975, k - 1) * se if se > 0 else 0.0)
+
+
+def across_runs(values):
+    """Mean and 95 % half-width across independent runs (t with n - 1 dof)."""
+    v = np.asarray(values, dtype=float)
+    se = v.std(ddof=1) / math.sqrt(len(v))
+    return v.mean(), (t_quantile(0.975, len(v) - 1) * se if se > 0 else 0.0)
+
+
+def after_steady(rows, first):
+    """Rows from revolution `first` on (0: after the run's steady revolution)."""
+    if first <= 0:
+        steady = int(column(rows[-1:], "steady_revolution")[0])
+        if steady == 0:
+            return []
+        first = steady + 1
+    return [r for r in rows if float(r["revolution"]) >= first]
+
+
+def side_estimate(runs, name, first):
+    """Per-revolution figure `name` of one side: batch means of one run, or across runs."""
+    series = [column(after_steady(rows, first), name) for rows in runs]
+    if len(series) == 1:
+        return batch_means(series[0]) if len(series[0]) >= 2 else (series[0].mean(), np.nan)
+    return across_runs([x.mean() for x in series])
+
+
+def plot_compare(side_a, side_b, out, first=0):
+    """Both sides' runs on one figure, with 95 % intervals (the statistics of wearsim compare)."""
     os.makedirs(out, exist_ok=True)
-    ra, rb = read_csv(os.path.join(a, "summary.csv")), read_csv(os.path.join(b, "summary.csv"))
-    sa, sb = read_csv(os.path.join(a, "stages.csv")), read_csv(os.path.join(b, "stages.csv"))
-    fig, axes = plt.subplots(1, 3, figsize=(14, 4))
-    for rows, name in [(ra, a), (rb, b)]:
-        axes[0].plot(column(rows, "revolution"), column(rows, "wear_volume_cumulative_m3") * 1e9, "o-",
-                     label=os.path.basename(name.rstrip("/")))
+    sides = []
+    for dirs, label, color in [(side_a, "A", "tab:blue"), (side_b, "B", "tab:orange")]:
+        runs = [read_csv(os.path.join(d, "summary.csv")) for d in dirs]
+        for d, rows in zip(dirs, runs):
+            if not after_steady(rows, first):
+                sys.exit(f"plot_run: side {label}: run '{d}' has no revolutions after steady state "
+                         "(or after --from); give --from <revolution>")
+        stages = [read_csv(os.path.join(d, "stages.csv")) for d in dirs]
+        names = ", ".join(os.path.basename(d.rstrip("/")) for d in dirs)
+        sides.append((runs, stages, f"{label}: {names}", color))
+    fig, axes = plt.subplots(1, 4, figsize=(19, 4.2))
+    for runs, _, label, color in sides:
+        for k, rows in enumerate(runs):
+            axes[0].plot(column(rows, "revolution"), column(rows, "wear_volume_cumulative_m3") * 1e9,
+                         "o-", color=color, alpha=0.8, label=label if k == 0 else None)
+            axes[1].plot(column(rows, "revolution"), column(rows, "wear_volume_m3") * 1e9, ".-",
+                         color=color, alpha=0.5, label=label if k == 0 else None)
+        mean, half = side_estimate(runs, "wear_volume_m3", first)
+        start = min(float(after_steady(rows, first)[0]["revolution"]) for rows in runs)
+        end = max(column(rows, "revolution").max() for rows in runs)
+        x = [start, end]
+        axes[1].plot(x, [mean * 1e9] * 2, "-", color=color, lw=2)
+        if not np.isnan(half):
+            axes[1].fill_between(x, (mean - half) * 1e9, (mean + half) * 1e9, color=color, alpha=0.25)
     axes[0].set_xlabel("revolution")
     axes[0].set_ylabel("cumulative wear [mm$^3$]")
-    axes[0].legend(fontsize=8)
-    cols = sorted(k for k in ra[0] if k.startswith("column") and k.endswith("_wear_m3"))
-    x = np.arange(len(cols))
-    axes[1].bar(x - 0.2, [column(ra, k).sum() * 1e9 for k in cols], 0.4, label=os.path.basename(a.rstrip("/")))
-    axes[1].bar(x + 0.2, [column(rb, k).sum() * 1e9 for k in cols], 0.4, label=os.path.basename(b.rstrip("/")))
-    axes[1].set_xticks(x, [k.replace("_wear_m3", "") for k in cols])
-    axes[1].set_ylabel("wear over all revolutions [mm$^3$]")
-    axes[1].legend(fontsize=8)
-    for rows, name in [(sa, a), (sb, b)]:
-        ball = column(rows, "max_von_mises_ball_Pa")
-        label = os.path.basename(name.rstrip("/"))
-        if np.all(np.isnan(ball)):  # a run from before the ball average
-            ball, label = qp_von_mises(rows), label + " (quadrature-point max)"
-        axes[2].plot(column(rows, "stage"), ball * 1e-6, "o-", label=label)
-    axes[2].set_xlabel("stage")
-    axes[2].set_ylabel("peak ball-averaged von Mises [MPa]")
-    axes[2].legend(fontsize=8)
+    axes[1].set_xlabel("revolution")
+    axes[1].set_ylabel("wear per revolution [mm$^3$]\n(band: mean after steady state, 95 %)")
+    cols = sorted(k for k in sides[0][0][0][0] if k.startswith("column") and k.endswith("_wear_m3"))
+    names = ["wear_volume_m3"] + cols
+    x = np.arange(len(names))
+    for offset, (runs, _, label, color) in zip((-0.2, 0.2), sides):
+        est = [side_estimate(runs, k, first) for k in names]
+        axes[2].bar(x + offset, [m * 1e9 for m, _ in est], 0.4, yerr=[h * 1e9 for _, h in est],
+                    capsize=3, color=color, label=label)
+    axes[2].set_xticks(x, ["wear face"] + [k.replace("_wear_m3", "") for k in cols], rotation=30)
+    axes[2].set_ylabel("wear per revolution after steady state [mm$^3$]\n(95 % interval)")
+    for runs, stages, label, color in sides:
+        n = min(len(s) for s in stages)
+        if n == 0:
+            continue
+        stage = column(stages[0][:n], "stage")
+        measured = [ball_von_mises(s[:n]) for s in stages]
+        vm = np.array([v for v, _ in measured]) * 1e-6
+        if not all(is_ball for _, is_ball in measured):  # a run from before the ball average
+            label += " (quadrature-point max)"
+        if len(stages) == 1:
+            axes[3].plot(stage, vm[0], "o-", color=color, label=label + " (one run: no interval)")
+        else:
+            est = [across_runs(vm[:, j]) for j in range(n)]
+            axes[3].errorbar(stage, [m for m, _ in est], [h for _, h in est], fmt="o-", capsize=3,
+                             color=color, label=label)
+    axes[3].set_xlabel("stage")
+    axes[3].set_ylabel("peak ball-averaged von Mises [MPa]\n(95 % interval)")
     for ax in axes:
+        ax.legend(fontsize=7)
         ax.grid(alpha=0.3)
     save(fig, os.path.join(out, "compare.png"))
 
 
 def main():
+    # "--" separates the sides of --compare; argparse would swallow it, so it becomes "::".
+    argv = ["::" if a == "--" else a for a in sys.argv[1:]]
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("runs", nargs="+")
-    ap.add_argument("--compare", action="store_true", help="compare two runs")
+    ap.add_argument("--compare", action="store_true",
+                    help="compare runs: <runA> <runB>, or <A1> [<A2> ...] -- <B1> [<B2> ...]")
+    ap.add_argument("--from", dest="first", type=int, default=0,
+                    help="first revolution averaged (default: after each run's steady revolution)")
     ap.add_argument("--elements", default="C13,C33,C53", help="convex elements to draw profiles of")
     ap.add_argument("--output", default=None, help="folder of the comparison plot")
     ap.add_argument("--hours-per-revolution", type=float, default=28.0,
                     help="test hours one simulated revolution stands for (wear_out.png); "
                          "the reference study's alpha: 2 revolutions = 56 h")
-    args = ap.parse_args()
+    args = ap.parse_intermixed_args(argv)
+    side_b = []
+    if "::" in args.runs:
+        k = args.runs.index("::")
+        args.runs, side_b = args.runs[:k], args.runs[k + 1:]
+        if not args.runs or not side_b or "::" in side_b:
+            sys.exit("plot_run: --compare <A1> [<A2> ...] -- <B1> [<B2> ...]: one '--' between "
+                     "two non-empty sides")
     if not args.hours_per_revolution > 0:
         sys.exit("plot_run: --hours-per-revolution must be positive")
     if args.compare:
-        if len(args.runs) != 2:
-            sys.exit("plot_run: --compare takes two run folders")
-        plot_compare(args.runs[0], args.runs[1], args.output or args.runs[1] + "/plots")
+        side_a = args.runs
+        if not side_b:
+            if len(args.runs) != 2:
+                sys.exit("plot_run: --compare takes two run folders, or several per side with '--' "
+                         "between the sides")
+            side_a, side_b = args.runs[:1], args.runs[1:]
+        plot_compare(side_a, side_b, args.output or side_b[0] + "/plots", args.first)
+    elif side_b:
+        sys.exit("plot_run: '--' separates the two sides of --compare")
     else:
         for run in args.runs:
             plot_run(run, [e.strip() for e in args.elements.split(",") if e.strip()],
