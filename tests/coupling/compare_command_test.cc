@@ -71,7 +71,8 @@ void write_run(const std::string& dir, const FakeRun& f) {
     stages[std::size_t(s)].stage = s + 1;
     stages[std::size_t(s)].first_revolution = s * f.n_revolutions / 2 + 1;
     stages[std::size_t(s)].last_revolution = (s + 1) * f.n_revolutions / 2;
-    stages[std::size_t(s)].max_von_mises = (s + 1) * 1e6;
+    stages[std::size_t(s)].max_von_mises_ball = (s + 1) * 1e6;
+    stages[std::size_t(s)].max_von_mises_qp = (s + 1) * 3e6;
     stages[std::size_t(s)].safety_factor = 250.0 / (s + 1);
     stages[std::size_t(s)].cumulative_applied = (s + 1) * 1e-9;
   }
@@ -130,7 +131,7 @@ TEST_CASE("wearsim compare: one run per side gives batch-means intervals and say
   CHECK(std::abs(r.mean - 0.4) < 0.1);
   CHECK(table.find("not significant") == std::string::npos);
   CHECK(table.find("column 2 wear [mm^3]") != std::string::npos);
-  CHECK(table.find("stage 2 peak von Mises [MPa]") != std::string::npos);
+  CHECK(table.find("stage 2 peak ball-averaged von Mises [MPa]") != std::string::npos);
   CHECK(table.find("plot: /usr/bin/python3 coupling/output/plot_run.py --compare compare_plain "
                    "-- compare_convex") != std::string::npos);
 }
@@ -159,7 +160,7 @@ TEST_CASE("wearsim compare: several runs per side give intervals across runs",
   CHECK(table.find(mm3(a)) != std::string::npos);
   CHECK(table.find("not significant at 95 %") != std::string::npos);
   // Totals and per-stage figures get an interval across runs too (equal here: +- 0).
-  const auto at = table.find("stage 1 peak von Mises [MPa]");
+  const auto at = table.find("stage 1 peak ball-averaged von Mises [MPa]");
   REQUIRE(at != std::string::npos);
   const std::string stage_line = table.substr(at, table.find('\n', at) - at);
   CHECK(stage_line.find(" 1 +- 0 ") != std::string::npos);
