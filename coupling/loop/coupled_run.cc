@@ -8,7 +8,8 @@
 //      amplification, stress-informed factor from the previous stage's stress, vertex depth
 //      cap, adaptive amplification).
 //   3. FEM: elastic stress of the current (pre-update) sample under the stage-averaged face
-//      forces F_f = I_f / T_stage (sample frame, clamped bottom).
+//      forces F_f = I_f / T_stage (sample frame, clamped bottom), I_f the integral over face
+//      f of the coarse-grained traction (DEM/Wall traction; else f's own impulse).
 //   4. Geometry: volume-exact recession of the worn faces, mesh motion, remeshing when the
 //      mesh degrades (fem::WornSample); the new surface goes to the DEM with the bed kept,
 //      particles the new surface encloses pushed out; the stage's stress and removed volume
@@ -208,9 +209,10 @@ StageStress CoupledRun::solve_stress(const dem::WallLoads& loads, StageRecord& r
   const auto& surface = sample_->surface();
   meshes::FaceField<meshes::Vec3> forces("force", "N", meshes::Extensivity::extensive, surface);
   for (std::size_t f = 0; f < surface.n_faces(); ++f) {
-    forces[f] = loads.impulse[f] / loads.duration;
+    forces[f] = loads.traction_impulse[f] / loads.duration;
+    // The contacts' own loads on the wear faces, whichever way the FEM's traction is laid.
     if (meshes::label::wears(surface.face_labels[f])) {
-      r.wear_face_force_z += forces[f].z;
+      r.wear_face_force_z += loads.impulse[f].z / loads.duration;
       r.wear_face_normal_force += loads.normal_impulse[f] / loads.duration;
     }
   }

@@ -314,6 +314,7 @@ dem::RevolutionSamples read_samples(const Hdf5Reader& h5, const std::string& g) 
 
 void write_open_stage(Hdf5File& h5, const OpenStage& o) {
   write_vec3(h5, "/open_stage/impulse", o.impulse);
+  write_vec3(h5, "/open_stage/traction_impulse", o.traction_impulse);
   write_doubles(h5, "/open_stage/normal_impulse", o.normal_impulse);
   write_doubles(h5, "/open_stage/archard", o.archard);
   write_doubles(h5, "/open_stage/sliding_work", o.sliding_work);
@@ -328,12 +329,16 @@ void write_open_stage(Hdf5File& h5, const OpenStage& o) {
 OpenStage read_open_stage(const Hdf5Reader& h5) {
   OpenStage o;
   o.impulse = vec3s(h5.doubles("/open_stage/impulse"), "open_stage/impulse");
+  o.traction_impulse =
+      vec3s(h5.doubles("/open_stage/traction_impulse"), "open_stage/traction_impulse");
   o.normal_impulse = h5.doubles("/open_stage/normal_impulse");
   o.archard = h5.doubles("/open_stage/archard");
   o.sliding_work = h5.doubles("/open_stage/sliding_work");
   o.contact_steps = h5.doubles("/open_stage/contact_steps");
   o.wear_volume = h5.doubles("/open_stage/wear_volume");
   const std::size_t nf = o.impulse.size();
+  if (o.traction_impulse.size() != nf)
+    throw std::runtime_error("the open stage's loads are of different lengths");
   for (const auto* v :
        {&o.normal_impulse, &o.archard, &o.sliding_work, &o.contact_steps, &o.wear_volume})
     if (v->size() != nf)
@@ -439,6 +444,7 @@ OpenStage open_stage(const dem::WallLoads& loads, int revolutions_done, double d
   o.revolutions_done = revolutions_done;
   o.dem_seconds = dem_seconds;
   o.impulse = loads.impulse.values();
+  o.traction_impulse = loads.traction_impulse.values();
   o.normal_impulse = loads.normal_impulse.values();
   o.archard = loads.archard.values();
   o.sliding_work = loads.sliding_work.values();
@@ -456,6 +462,7 @@ dem::WallLoads loads_of(const OpenStage& o, const meshes::SurfaceMesh& surface) 
                              std::to_string(surface.n_faces()));
   dem::WallLoads l = dem::WallLoads::zero(surface);
   l.impulse.values() = o.impulse;
+  l.traction_impulse.values() = o.traction_impulse;
   l.normal_impulse.values() = o.normal_impulse;
   l.archard.values() = o.archard;
   l.sliding_work.values() = o.sliding_work;

@@ -22,9 +22,10 @@ namespace wear::coupling {
 /// A stage stopped inside its DEM part: what it had summed and where its revolution stands.
 /// The loads are dem::WallLoads's fields on the current sample surface, sample frame.
 struct OpenStage {
-  int revolutions_done = 0;          ///< completed revolutions of the stage
-  double dem_seconds = 0;            ///< [s] wall time of its DEM so far (reporting only)
-  std::vector<meshes::Vec3> impulse; ///< [N s] per face
+  int revolutions_done = 0;                   ///< completed revolutions of the stage
+  double dem_seconds = 0;                     ///< [s] wall time of its DEM so far (reporting only)
+  std::vector<meshes::Vec3> impulse;          ///< [N s] per face
+  std::vector<meshes::Vec3> traction_impulse; ///< [N s] per face, as the FEM receives it
   std::vector<double> normal_impulse, archard, sliding_work; ///< [N s], [N m], [J] per face
   std::vector<double> contact_steps, wear_volume;            ///< [-], [m^3] per face
   double duration = 0;                                       ///< [s] of the summed windows

@@ -4,10 +4,12 @@
 //   /mesh/vertices (nv x 3) [m], /mesh/triangles (nf x 3), /mesh/labels (nf)
 //   /revolution_NNNN/ with attributes time [s] and revolution, datasets
 //     vertices (nv x 3, only when the surface moved), impulse (nf x 3) [N s],
-//     normal_impulse [N s], archard [N m], sliding_work [J], contact_steps [-],
-//     removed_volume [m^3] (this revolution), cumulative_removed_volume [m^3],
-//     and, for viewing only, wear_depth = cumulative_removed_volume / area [m] and
-//     mean_pressure = normal_impulse / (revolution time x area) [Pa]
+//     traction_impulse (nf x 3) [N s] (the impulse as the FEM receives it, coarse-grained
+//     unless DEM/Wall traction = per face), normal_impulse [N s], archard [N m],
+//     sliding_work [J], contact_steps [-], removed_volume [m^3] (this revolution),
+//     cumulative_removed_volume [m^3], and, for viewing only, wear_depth =
+//     cumulative_removed_volume / area [m], mean_pressure = normal_impulse / (revolution
+//     time x area) [Pa] and traction = traction_impulse / (revolution time x area) (nf x 3) [Pa]
 //   /particles/revolution_NNNN/ position, velocity, angular_velocity (n x 3), radius, id
 // history.xdmf: a temporal collection of the sample surface (cell data per revolution) and
 // one of the particle snapshots (point data), both reading the datasets above.
@@ -56,6 +58,7 @@ void TesterOutput::add_revolution(const dem::WearTester& tester, bool snapshot) 
     r.vertices = flatten(mesh.vertices);
   loads.impulse.check_matches(mesh);
   r.impulse = flatten(loads.impulse.values());
+  r.traction_impulse = flatten(loads.traction_impulse.values());
   r.normal_impulse = loads.normal_impulse.values();
   r.archard = loads.archard.values();
   r.sliding_work = loads.sliding_work.values();
@@ -66,9 +69,12 @@ void TesterOutput::add_revolution(const dem::WearTester& tester, bool snapshot) 
   const std::size_t nf = area.size();
   r.wear_depth.resize(nf);
   r.mean_pressure.resize(nf);
+  r.traction.resize(3 * nf);
   for (std::size_t f = 0; f < nf; ++f) {
     r.wear_depth[f] = r.cumulative_removed_volume[f] / area[f];
     r.mean_pressure[f] = loads.normal_impulse[f] / (tester.revolution_time() * area[f]);
+    for (int k = 0; k < 3; ++k)
+      r.traction[3 * f + k] = r.traction_impulse[3 * f + k] / (tester.revolution_time() * area[f]);
   }
   revolutions_.push_back(std::move(r));
   records_ = tester.evaluation().history();
@@ -114,6 +120,8 @@ void TesterOutput::write_h5() const {
     if (!r.vertices.empty())
       h5.write(g + "/vertices", r.vertices, {nv, 3});
     h5.write(g + "/impulse", r.impulse, {nf, 3});
+    h5.write(g + "/traction_impulse", r.traction_impulse, {nf, 3});
+    h5.write(g + "/traction", r.traction, {nf, 3});
     h5.write(g + "/normal_impulse", r.normal_impulse, {nf});
     h5.write(g + "/archard", r.archard, {nf});
     h5.write(g + "/sliding_work", r.sliding_work, {nf});
@@ -165,9 +173,11 @@ void TesterOutput::write_xdmf() const {
       x << "        <DataItem Dimensions=\"" << nf
         << "\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">" << file
         << ":/mesh/labels</DataItem>\n      </Attribute>\n";
-      x << "      <Attribute Name=\"impulse\" AttributeType=\"Vector\" Center=\"Cell\">\n";
-      item(std::to_string(nf) + " 3", "Float", g + "/impulse");
-      x << "      </Attribute>\n";
+      for (const char* name : {"impulse", "traction_impulse", "traction"}) {
+        x << "      <Attribute Name=\"" << name << "\" AttributeType=\"Vector\" Center=\"Cell\">\n";
+        item(std::to_string(nf) + " 3", "Float", g + "/" + name);
+        x << "      </Attribute>\n";
+      }
       for (const char* name :
            {"normal_impulse", "archard", "sliding_work", "contact_steps", "removed_volume",
             "cumulative_removed_volume", "wear_depth", "mean_pressure"}) {

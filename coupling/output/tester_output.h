@@ -38,8 +38,10 @@ private:
   struct Revolution {
     int revolution = 0;
     double time = 0;
-    std::vector<double> vertices; // nv x 3, empty when unchanged from the initial surface
-    std::vector<double> impulse;  // nf x 3
+    std::vector<double> vertices;         // nv x 3, empty when unchanged from the initial surface
+    std::vector<double> impulse;          // nf x 3
+    std::vector<double> traction_impulse; // nf x 3
+    std::vector<double> traction;         // nf x 3, viewing only
     std::vector<double> normal_impulse, archard, sliding_work, contact_steps, removed_volume,
         cumulative_removed_volume, wear_depth, mean_pressure;
   };

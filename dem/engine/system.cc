@@ -374,7 +374,7 @@ void System::replace_wall_mesh(int w, const meshes::SurfaceMesh& mesh) {
   walls_[m].build_grid(r_max_ + skin_);
   for (auto& t : wear_acc_)
     if (walls_[m].wearing())
-      t[w].assign(8 * walls_[m].n_faces() + 8, 0.0);
+      t[w].assign(n_wear_values * (walls_[m].n_faces() + 1), 0.0);
   rebuild();
 }
 
@@ -388,21 +388,27 @@ WearIntegrals System::wear_integrals(int w) const {
   r.archard.assign(nf, 0);
   r.sliding_work.assign(nf, 0);
   r.contact_steps.assign(nf, 0);
+  r.normal_moment.assign(nf, {});
+  r.impulse_moment.assign(nf, {});
   for (int t = 0; t < n_threads_; ++t) {
     const auto& a = wear_acc_[t][w];
     for (std::size_t f = 0; f < nf; ++f) {
-      const double* v = &a[8 * f];
+      const double* v = &a[n_wear_values * f];
       r.impulse[f] += Vec3{v[0], v[1], v[2]};
       r.normal_impulse[f] += v[3];
       r.archard[f] += v[4];
       r.sliding_work[f] += v[5];
       r.contact_steps[f] += v[6];
+      r.normal_moment[f] += Vec3{v[7], v[8], v[9]};
+      r.impulse_moment[f] += Vec3{v[10], v[11], v[12]};
     }
-    const double* tot = &a[8 * nf];
+    const double* tot = &a[n_wear_values * nf];
     r.total_impulse += Vec3{tot[0], tot[1], tot[2]};
     r.total_normal_impulse += tot[3];
     r.total_archard += tot[4];
     r.total_sliding_work += tot[5];
+    r.total_normal_moment += Vec3{tot[7], tot[8], tot[9]};
+    r.total_impulse_moment += Vec3{tot[10], tot[11], tot[12]};
   }
   return r;
 }

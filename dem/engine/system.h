@@ -33,16 +33,29 @@ struct DemSettings {
   PeriodicSector periodic;
 };
 
+/// Values a wearing wall's window accumulator holds per face (and for the totals after the
+/// last face): impulse [N s] x 3, normal impulse [N s], Archard [N m], sliding work [J],
+/// contact-steps [-] (0 in the totals), first moment of the normal impulse [N s m] x 3,
+/// moment of the impulse about the origin [N s m] x 3.
+constexpr std::size_t n_wear_values = 13;
+
 /// Extensive per-face integrals on a wearing wall over the current window (model.md s. 4).
+/// Points are the contact points on the wall (the closest point to the particle centre), in
+/// the wall's frame; the moments are about its origin.
 struct WearIntegrals {
   std::vector<Vec3> impulse;          ///< [N s] integral of the force on the face
   std::vector<double> normal_impulse; ///< [N s] integral of F_n
   std::vector<double> archard;        ///< [N m] integral of F_n |v_t|
   std::vector<double> sliding_work;   ///< [J] integral of |F_t . v_t|
   std::vector<double> contact_steps;  ///< [-] contact-steps (split contacts count fractionally)
+  /// [N s m] integral of x_c F_n: over normal_impulse, the face's load centroid
+  std::vector<Vec3> normal_moment;
+  std::vector<Vec3> impulse_moment; ///< [N s m] integral of x_c x F
   /// Per-contact totals of the same window, summed before any splitting over faces.
   double total_archard = 0, total_normal_impulse = 0, total_sliding_work = 0;
-  Vec3 total_impulse;
+  Vec3 total_impulse;        ///< [N s]
+  Vec3 total_normal_moment;  ///< [N s m]
+  Vec3 total_impulse_moment; ///< [N s m]
 };
 
 /// Everything that decides how a set-up System continues: the real particles in the engine's
@@ -70,7 +83,7 @@ struct SystemState {
   std::vector<std::uint32_t> wall_candidate_offset, wall_candidate; ///< per particle
   std::vector<double> particle_cost; ///< [-] the threads' split of the force evaluation
   /// The wear window's accumulators as the threads hold them: per thread, per wearing wall
-  /// in wall order, 8 values per face and 8 totals ([N s] x 3, [N s], [N m], [J], [-], 0).
+  /// in wall order, n_wear_values per face and as many totals (WearIntegrals' order).
   std::vector<double> wear_window;
   int n_threads = 0;
 };
@@ -300,7 +313,7 @@ private:
   /// is closest to `normal` (within about 25 degrees), which it marks taken; zero if none.
   static Vec3 carried_wall_history(const WallSlot* old, bool* taken, std::uint32_t wall,
                                    const Vec3& normal);
-  // Per thread, per wearing wall: 8 doubles per face + totals.
+  // Per thread, per wearing wall: n_wear_values doubles per face + totals.
   std::vector<std::vector<std::vector<double>>> wear_acc_;
 
   PhaseTimes phase_times_;

@@ -130,9 +130,10 @@ inline int wear_faces(const RevolutionWall& wall, const Candidate& cand, std::ui
 }
 
 /// Adds one contact's wear integrals over a step dt to a wearing wall's accumulator `a`: to
-/// the faces that take it (wear_faces), by their shares (8 entries per face: impulse,
-/// normal impulse, Archard integral, sliding work, contact-steps), and undivided to the totals
-/// after the last face.
+/// the faces that take it (wear_faces), by their shares (n_wear_values entries per face:
+/// impulse, normal impulse, Archard integral, sliding work, contact-steps, and the first
+/// moments at the contact point x_c that place the load on the face: x_c F_n dt and
+/// x_c x F dt), and undivided to the totals after the last face.
 template <class Wall>
 [[gnu::always_inline]] inline void add_wear(std::vector<double>& a, const Wall& wall,
                                             const Candidate& cand, const ContactResult& res,
@@ -144,8 +145,11 @@ template <class Wall>
   const double fn_dt = res.normal_force * dt;
   const double archard = fn_dt * meshes::norm(res.v_tangential);
   const double work = std::abs(meshes::dot(res.tangential_force, res.v_tangential)) * dt;
+  const Vec3& x = cand.feature.point;
+  const Vec3 normal_moment = x * fn_dt;
+  const Vec3 moment = meshes::cross(x, impulse);
   for (int k = 0; k < n_faces; ++k) {
-    double* v = &a[8 * faces[k]];
+    double* v = &a[n_wear_values * faces[k]];
     const double share = shares[k];
     v[0] += impulse.x * share;
     v[1] += impulse.y * share;
@@ -154,14 +158,26 @@ template <class Wall>
     v[4] += archard * share;
     v[5] += work * share;
     v[6] += share;
+    v[7] += normal_moment.x * share;
+    v[8] += normal_moment.y * share;
+    v[9] += normal_moment.z * share;
+    v[10] += moment.x * share;
+    v[11] += moment.y * share;
+    v[12] += moment.z * share;
   }
-  double* tot = &a[8 * wall.n_faces()];
+  double* tot = &a[n_wear_values * wall.n_faces()];
   tot[0] += impulse.x;
   tot[1] += impulse.y;
   tot[2] += impulse.z;
   tot[3] += fn_dt;
   tot[4] += archard;
   tot[5] += work;
+  tot[7] += normal_moment.x;
+  tot[8] += normal_moment.y;
+  tot[9] += normal_moment.z;
+  tot[10] += moment.x;
+  tot[11] += moment.y;
+  tot[12] += moment.z;
 }
 } // namespace
 

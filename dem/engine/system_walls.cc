@@ -81,7 +81,7 @@ void System::size_wear_accumulators() {
     t.resize(wall_kind_.size());
     for (int w = 0; w < n_walls(); ++w)
       if (wall_wearing(w))
-        t[w].assign(8 * wall_faces(w) + 8, 0.0);
+        t[w].assign(n_wear_values * (wall_faces(w) + 1), 0.0);
   }
 }
 

@@ -45,6 +45,11 @@ struct TesterDemParameters {
   double steady_threshold = 0.1;            ///< [-] coefficient of variation for steady state
   int steady_revolutions = 2;               ///< consecutive revolutions below the threshold
   std::vector<int> snapshot_revolutions{1}; ///< particle snapshots after these (plus the last)
+  /// [m] width w of the kernel that coarse-grains the wall loads; 0: the number-mean particle
+  /// radius at the scaling factor
+  double coarse_graining_width = 0;
+  bool coarse_grained_traction = true; ///< the FEM receives the coarse-grained traction
+  bool coarse_grained_wear = false;    ///< the wear-law volume is coarse-grained too
 };
 
 /// "Particle shear modulus", "Particle Poisson ratio", "Particle density" for which =
@@ -107,6 +112,22 @@ void visit_run_parameters(TesterDemParameters& d, Visitor& v) {
              "Revolutions after which particle snapshots are written (the last always is).");
 }
 
+/// How the contact loads on the sample become fields on its faces (wall_loads.h).
+template <typename Visitor>
+void visit_wall_load_parameters(TesterDemParameters& d, Visitor& v) {
+  v.real("Coarse-graining width", d.coarse_graining_width,
+         "[m] Width w of the Gaussian kernel, cut at 3w, that coarse-grains the contact loads "
+         "on the sample into continuum fields (force and moment kept exactly); 0 uses the "
+         "number-mean particle radius at the Scaling factor.");
+  v.choice("Wall traction", d.coarse_grained_traction, "coarse-grained", "per face",
+           "The traction the FEM receives: the coarse-grained field of the contact forces, "
+           "independent of the triangulation, or each face's own window impulse over its area "
+           "(noisier on finer meshes).");
+  v.choice("Wear field", d.coarse_grained_wear, "coarse-grained", "per face",
+           "The wear-law volume: per face as the contacts fell, or coarse-grained with the "
+           "same kernel over the faces of each contact's label (label totals kept).");
+}
+
 /// The DEM subsection.
 template <typename Visitor>
 void visit_parameters(TesterDemParameters& d, Visitor& v) {
@@ -118,6 +139,7 @@ void visit_parameters(TesterDemParameters& d, Visitor& v) {
   visit_parameters("particle-wall", d.particle_wall, v);
   visit_bed_parameters(d, v);
   visit_run_parameters(d, v);
+  visit_wall_load_parameters(d, v);
   v.leave();
 }
 

@@ -1,7 +1,17 @@
 // Per-face window loads of a wearing wall as revision-checked FaceFields (wall_loads.h).
 // Every field is extensive: sums over windows and over faces are physical totals, and they
 // transfer conservatively between triangulations (meshes::FaceTransfer).
+//
+// The coarse-grained fields spread each face's window load from its normal-load centroid
+// p_f = (integral of x_c F_n dt) / (integral of F_n dt), the point where its contacts
+// pressed, with the moment of its contacts (integral of x_c x F dt) about the wall's origin
+// (meshes/coarse_graining.cc). p_f and the moment come from the engine's per-contact sums,
+// so the coarse-grained traction has the window's force and moment, not those of loads
+// moved to face centroids. A face loaded only tangentially (no normal impulse, which a
+// contact never gives) would spread from its centroid.
 #include "dem/tester/wall_loads.h"
+
+#include "meshes/coarse_graining.h"
 
 #include <stdexcept>
 
@@ -40,6 +50,8 @@ FaceField<T> followed(FaceField<T> f, const meshes::SurfaceMesh& mesh) {
 WallLoads WallLoads::zero(const meshes::SurfaceMesh& mesh) {
   WallLoads w;
   w.impulse = FaceField<meshes::Vec3>("impulse", "N s", Extensivity::extensive, mesh);
+  w.traction_impulse =
+      FaceField<meshes::Vec3>("traction impulse", "N s", Extensivity::extensive, mesh);
   w.normal_impulse = FaceField<double>("normal impulse", "N s", Extensivity::extensive, mesh);
   w.archard = FaceField<double>("Archard load-distance", "N m", Extensivity::extensive, mesh);
   w.sliding_work = FaceField<double>("sliding work", "J", Extensivity::extensive, mesh);
@@ -50,6 +62,7 @@ WallLoads WallLoads::zero(const meshes::SurfaceMesh& mesh) {
 
 WallLoads& WallLoads::operator+=(const WallLoads& o) {
   add(impulse, o.impulse);
+  add(traction_impulse, o.traction_impulse);
   add(normal_impulse, o.normal_impulse);
   add(archard, o.archard);
   add(sliding_work, o.sliding_work);
@@ -65,6 +78,9 @@ WallLoads WallLoads::follow(const meshes::SurfaceMesh& mesh,
   w.impulse = followed(impulse, mesh);
   for (auto& v : w.impulse.values())
     v = rotate(v);
+  w.traction_impulse = followed(traction_impulse, mesh);
+  for (auto& v : w.traction_impulse.values())
+    v = rotate(v);
   w.normal_impulse = followed(normal_impulse, mesh);
   w.archard = followed(archard, mesh);
   w.sliding_work = followed(sliding_work, mesh);
@@ -75,7 +91,8 @@ WallLoads WallLoads::follow(const meshes::SurfaceMesh& mesh,
 }
 
 WallLoads wall_loads(const WearIntegrals& integrals, const std::vector<double>& wear_volume,
-                     const meshes::SurfaceMesh& mesh, double duration) {
+                     const meshes::SurfaceMesh& mesh, double duration,
+                     const LoadSpreading& spreading) {
   WallLoads w = WallLoads::zero(mesh);
   fill(w.impulse, integrals.impulse);
   fill(w.normal_impulse, integrals.normal_impulse);
@@ -84,6 +101,23 @@ WallLoads wall_loads(const WearIntegrals& integrals, const std::vector<double>& 
   fill(w.contact_steps, integrals.contact_steps);
   fill(w.wear_volume, wear_volume);
   w.duration = duration;
+  if (!spreading.traction && !spreading.wear) {
+    w.traction_impulse.values() = w.impulse.values();
+    return w;
+  }
+  const meshes::CoarseGraining kernel(mesh, spreading.width, "DEM/Coarse-graining width");
+  meshes::FaceSources sources{integrals.impulse, meshes::face_centroids(mesh),
+                              integrals.impulse_moment};
+  for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+    if (integrals.normal_impulse[f] > 0)
+      sources.point[f] = integrals.normal_moment[f] / integrals.normal_impulse[f];
+  if (spreading.traction)
+    w.traction_impulse =
+        kernel.spread_force(sources, w.traction_impulse.name(), w.traction_impulse.unit());
+  else
+    w.traction_impulse.values() = w.impulse.values();
+  if (spreading.wear)
+    w.wear_volume = kernel.spread_scalar(w.wear_volume, sources.point);
   return w;
 }
 

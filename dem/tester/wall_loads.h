@@ -1,8 +1,9 @@
 #pragma once
 // What the DEM hands to the rest of the toolchain about a wearing wall: one window's
 // extensive loads per face, as FaceFields tied to the revision of the mesh they were summed
-// on. Only extensive, window-integrated quantities cross the module boundary; intensive
-// ones (pressure, traction, wear depth) are derived where they are used.
+// on, among them the coarse-grained impulse (meshes/coarse_graining.h) that the FEM
+// receives. Only extensive, window-integrated quantities cross the module boundary;
+// intensive ones (pressure, traction, wear depth) are derived where they are used.
 #include "dem/engine/system.h"
 #include "meshes/face_field.h"
 
@@ -10,8 +11,19 @@
 
 namespace wear::dem {
 
+/// How a window's loads are laid on the wall's faces (DEM/Coarse-graining width, Wall
+/// traction, Wear field). The default keeps every field per face.
+struct LoadSpreading {
+  double width = 0;      ///< [m] kernel width w
+  bool traction = false; ///< traction_impulse coarse-grained (else the per-face impulse)
+  bool wear = false;     ///< wear_volume coarse-grained (else per face)
+};
+
 struct WallLoads {
-  meshes::FaceField<meshes::Vec3> impulse;  ///< [N s] integral of the contact force
+  meshes::FaceField<meshes::Vec3> impulse; ///< [N s] integral of the contact force
+  /// [N s] the impulse the FEM receives: per face the integral of the coarse-grained
+  /// traction over the face and the window, or the per-face impulse (LoadSpreading)
+  meshes::FaceField<meshes::Vec3> traction_impulse;
   meshes::FaceField<double> normal_impulse; ///< [N s] integral of F_n
   meshes::FaceField<double> archard;        ///< [N m] Archard load-distance, integral of F_n |v_t|
   meshes::FaceField<double> sliding_work;   ///< [J] integral of |F_t . v_t|
@@ -34,8 +46,11 @@ struct WallLoads {
 };
 
 /// The loads of one window from the engine's per-face integrals of a wall with mesh `mesh`
-/// and the wear law's removed volume per face [m^3] over the same window.
+/// and the wear law's removed volume per face [m^3] over the same window, the traction and
+/// the wear volume laid on the faces as `spreading` says. A coarse-grained field keeps the
+/// window's force and moment (the volume per label) to round-off.
 WallLoads wall_loads(const WearIntegrals& integrals, const std::vector<double>& wear_volume,
-                     const meshes::SurfaceMesh& mesh, double duration);
+                     const meshes::SurfaceMesh& mesh, double duration,
+                     const LoadSpreading& spreading = {});
 
 } // namespace wear::dem

@@ -87,6 +87,8 @@ void validate(const TesterDemParameters& p) {
   require(p.samples_per_revolution >= 2, "Samples per revolution", "must be at least 2");
   require(p.steady_threshold > 0, "Steady threshold", "must be positive");
   require(p.steady_revolutions >= 1, "Steady revolutions", "must be at least 1");
+  require(p.coarse_graining_width >= 0 && std::isfinite(p.coarse_graining_width),
+          "Coarse-graining width", "must be 0 (the mean particle radius) or positive [m]");
 }
 
 WearTester::WearTester(const meshes::GeometryParameters& geometry, const TesterDemParameters& dem,
@@ -134,6 +136,8 @@ WearTester::WearTester(const meshes::GeometryParameters& geometry, const TesterD
   const auto frac = psd.number_fractions();
   for (std::size_t k = 0; k < frac.size(); ++k)
     mean_d += frac[k] * psd.diameters[k] * psd.scaling_factor;
+  spreading_ = {dem_.coarse_graining_width > 0 ? dem_.coarse_graining_width : mean_d / 2,
+                dem_.coarse_grained_traction, dem_.coarse_grained_wear};
   evaluation_ =
       std::make_unique<TesterEvaluation>(sample, geometry_.sample, geometry_.placement, mean_d,
                                          dem_.steady_threshold, dem_.steady_revolutions);
@@ -276,8 +280,8 @@ const RevolutionRecord& WearTester::close_revolution(double wall) {
   const std::uint64_t n = steps_per_revolution_;
   const WearIntegrals integrals = system_.wear_integrals(sample_wall_);
   // The window's duration is the nominal revolution (the step count rounds it to a step).
-  last_loads_ =
-      wall_loads(integrals, law_->removed_volume(integrals), sample_mesh(), revolution_time_);
+  last_loads_ = wall_loads(integrals, law_->removed_volume(integrals), sample_mesh(),
+                           revolution_time_, spreading_);
   const auto& removed = last_loads_.wear_volume.values();
   for (std::size_t f = 0; f < removed.size(); ++f)
     cumulative_removed_[f] += removed[f];

@@ -95,6 +95,9 @@ public:
   const WallLoads& last_loads() const { return last_loads_; }
   /// Removed volume per face summed over all revolutions [m^3].
   const std::vector<double>& cumulative_removed_volume() const { return cumulative_removed_; }
+  /// How the loads are laid on the sample: the kernel width w [m] resolved from
+  /// DEM/Coarse-graining width, and which fields are coarse-grained.
+  const LoadSpreading& load_spreading() const { return spreading_; }
   std::uint64_t steps_per_revolution() const { return steps_per_revolution_; }
   double revolution_time() const { return revolution_time_; } ///< [s]
   int n_revolutions_done() const { return revolution_; }
@@ -110,6 +113,7 @@ private:
   std::unique_ptr<ReferenceDeformation> deformation_;
   std::unique_ptr<TesterEvaluation> evaluation_;
   WallLoads last_loads_;
+  LoadSpreading spreading_;
   std::vector<double> cumulative_removed_; ///< [m^3] per face, all revolutions
   double revolution_time_ = 0, sector_ = 0;
   std::uint64_t steps_per_revolution_ = 0;

@@ -95,6 +95,12 @@ TEST_CASE("bad case files fail naming the parameter", "[coupling][parameters]") 
   CHECK_THROWS_WITH(read_case(alpha), Catch::Contains("Archard coefficient"));
   const auto dt = write("dt.prm", "subsection DEM\n set Time step fraction = 0.6\nend\n");
   CHECK_THROWS_WITH(read_case(dt), Catch::Contains("DEM/Time step fraction"));
+  const auto width =
+      write("width.prm", "subsection DEM\n set Coarse-graining width = -1e-3\nend\n");
+  CHECK_THROWS_WITH(read_case(width), Catch::Contains("DEM/Coarse-graining width"));
+  const auto traction =
+      write("traction.prm", "subsection DEM\n set Wall traction = smoothed\nend\n");
+  CHECK_THROWS_WITH(read_case(traction), Catch::Contains("Wall traction"));
   const auto psd = write("psd.prm", "subsection DEM\n set PSD diameters = 2e-3, -2.65e-3, "
                                     "3.35e-3\nend\n");
   CHECK_THROWS_WITH(read_case(psd), Catch::Contains("diameter"));
@@ -122,9 +128,10 @@ TEST_CASE("every parameter is documented", "[coupling][parameters]") {
   std::ostringstream out;
   print_parameters(out);
   const auto text = out.str();
-  for (const char* name : {"Mesh size", "First column offset", "Consolidator angle", "Directory",
-                           "Scaling factor", "Archard coefficient", "frictional-work",
-                           "Reference method", "Update interval", "PSD mass fractions"})
+  for (const char* name :
+       {"Mesh size", "First column offset", "Consolidator angle", "Directory", "Scaling factor",
+        "Archard coefficient", "frictional-work", "Reference method", "Update interval",
+        "PSD mass fractions", "Coarse-graining width", "Wall traction", "Wear field"})
     CHECK(text.find(name) != std::string::npos);
 }
 

@@ -21,7 +21,8 @@ wear::meshes::SurfaceMesh flat(double L, int n) {
 }
 } // namespace
 
-TEST_CASE("wear integrals: per-face sums equal per-contact totals", "[dem][wear]") {
+TEST_CASE("wear integrals: per-face sums (moments included) equal per-contact totals",
+          "[dem][wear]") {
   System s;
   const int g = add_gravel(s, 0.5, 0.5, 0.1);
   const int w = s.add_wall(MeshWall(flat(0.05, 8), g, {}, true, "sample"));
@@ -32,13 +33,15 @@ TEST_CASE("wear integrals: per-face sums equal per-contact totals", "[dem][wear]
   s.run(4000);
   const auto wi = s.wear_integrals(w);
   double archard = 0, fn = 0, work = 0, steps = 0;
-  Vec3 impulse{};
+  Vec3 impulse{}, normal_moment{}, moment{};
   std::size_t n_faces_hit = 0;
   for (std::size_t f = 0; f < wi.archard.size(); ++f) {
     archard += wi.archard[f];
     fn += wi.normal_impulse[f];
     work += wi.sliding_work[f];
     impulse += wi.impulse[f];
+    normal_moment += wi.normal_moment[f];
+    moment += wi.impulse_moment[f];
     steps += wi.contact_steps[f];
     n_faces_hit += wi.contact_steps[f] > 0;
   }
@@ -48,6 +51,10 @@ TEST_CASE("wear integrals: per-face sums equal per-contact totals", "[dem][wear]
   CHECK(fn == Approx(wi.total_normal_impulse).epsilon(1e-12));
   CHECK(work == Approx(wi.total_sliding_work).epsilon(1e-12));
   CHECK(norm(impulse - wi.total_impulse) < 1e-12 * norm(wi.total_impulse));
+  CHECK(norm(normal_moment - wi.total_normal_moment) < 1e-12 * norm(wi.total_normal_moment));
+  CHECK(norm(moment - wi.total_impulse_moment) < 1e-12 * norm(wi.total_impulse_moment));
+  // The contacts lie on the plate z = 0, so the normal-load centroid does too.
+  CHECK(std::abs(wi.total_normal_moment.z) <= 1e-15 * norm(wi.total_normal_moment));
   // One contact per step, however it is shared: the fractional counts add up to whole steps.
   CHECK(std::abs(steps - std::round(steps)) < 1e-9);
   CHECK(steps > 3000);
