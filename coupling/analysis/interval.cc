@@ -119,13 +119,6 @@ double autocorrelation_time(const std::vector<double>& x, double mean) {
   return tau;
 }
 
-double mean_of(const std::vector<double>& v) {
-  double s = 0;
-  for (double x : v)
-    s += x;
-  return s / double(v.size());
-}
-
 double sample_variance(const std::vector<double>& v, double mean) {
   double s = 0;
   for (double x : v)
@@ -138,6 +131,13 @@ Estimate finish(Estimate e) {
   return e;
 }
 } // namespace
+
+double mean_of(const std::vector<double>& v) {
+  double s = 0;
+  for (double x : v)
+    s += x;
+  return s / double(v.size());
+}
 
 double student_t_quantile(double p, double dof) {
   if (!(p > 0 && p < 1))

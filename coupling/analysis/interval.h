@@ -12,6 +12,9 @@ namespace wear::coupling {
 /// Throws for p or dof outside that range.
 double student_t_quantile(double p, double dof);
 
+/// Arithmetic mean of a non-empty series.
+double mean_of(const std::vector<double>& v);
+
 /// A mean with its uncertainty. Units are those of the values it was made from.
 struct Estimate {
   double mean = 0;           ///< of the values

@@ -143,13 +143,6 @@ Side load_side(const std::vector<std::string>& dirs, const std::string& label, i
   return s;
 }
 
-double mean_of(const std::vector<double>& v) {
-  double s = 0;
-  for (double x : v)
-    s += x;
-  return s / double(v.size());
-}
-
 // A per-revolution figure: batch means of one run, or the mean across runs of each run's mean.
 Estimate per_revolution(const Side& s, const std::function<std::vector<double>(const Run&)>& get) {
   if (s.runs.size() == 1)
