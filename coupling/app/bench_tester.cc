@@ -48,9 +48,7 @@ std::string case_name(const TesterBenchOptions& o, const CaseParameters& p) {
                               : "case " + o.case_file + ", " + sample + " sample") +
          format(", s = %g", p.dem.psd.scaling_factor);
 }
-} // namespace
 
-namespace {
 // The state of `tester` with its open revolution, as an in-stage checkpoint of a run of p.
 Checkpoint bench_state(const dem::WearTester& tester, const CaseParameters& p) {
   Checkpoint c;
