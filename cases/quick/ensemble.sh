@@ -1,39 +1,79 @@
 #!/bin/bash
-# The quick case over several insertion seeds: how far one run's figures can be trusted.
+# The quick case over several insertion seeds, plain and convex: the default case's answer.
 # One run of the 30-degree sector lands in a slow or a fast bed (the bed's slip over the
-# sample is intermittent), so its wear per revolution moves by a factor of about two with
-# the seed, or with the last bit of a force sum. This runs plain and convex for each seed
-# and prints the ensemble table (cases/quick/ensemble_report.py).
+# sample is intermittent), so one run's wear per revolution moves by a factor of about two
+# with the seed; the ensemble's mean does not. Each run uses one thread (DEM/Threads = 1 in
+# the case files) and as many runs go at once as the machine has cores, so the results do
+# not depend on the machine. Then `wearsim compare` prints every figure of the two sides as
+# mean +- 95 % interval across the seeds, the comparison plot is drawn and
+# cases/quick/report.py writes output/quick/report.md (with --update-readme also the
+# README's figures and picture).
 #
-# usage: bash cases/quick/ensemble.sh [seed ...]     (default: 20111 1 2 3 4 5; on 2 cores
-#        about 35 s per plain and 1 to 2 min per convex run, 13 min for the default twelve)
+# usage: bash cases/quick/ensemble.sh [--update-readme] [seed ...]
+#        (default seeds 1 2 3: about 4 min on 2 cores; JOBS=<n> sets the runs at once)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-seeds=("$@")
-[ ${#seeds[@]} -gt 0 ] || seeds=(20111 1 2 3 4 5)
+update_readme=()
+seeds=()
+for a in "$@"; do
+  case "$a" in
+    --update-readme) update_readme=(--update-readme) ;;
+    *) [[ "$a" =~ ^[0-9]+$ ]] || { echo "ensemble.sh: seed '$a' is not a non-negative integer" >&2; exit 2; }
+       seeds+=("$a") ;;
+  esac
+done
+[ ${#seeds[@]} -gt 0 ] || seeds=(1 2 3)
 [ -x build/wearsim ] || { echo "ensemble.sh: build/wearsim not found; run bash scripts/build.sh" >&2; exit 1; }
-root=output/quick-ensemble
+jobs=${JOBS:-$(nproc)}
+[[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "ensemble.sh: JOBS='$jobs' is not a positive integer" >&2; exit 2; }
+root=output/quick
 mkdir -p "$root"
-dirs=()
+start=$(date +%s)
+
+run_one() { # <kind> <seed>: one run, its case file and log beside its folder
+  local out="$root/$1-$2"
+  sed -e "s|^subsection DEM|subsection DEM\n  set Seed = $2|" \
+      -e "s|set Directory = .*|set Directory = $out|" "cases/quick/$1.prm" > "$out.prm"
+  build/wearsim run --overwrite "$out.prm" > "$out.log" 2>&1
+}
+
+# a pool of $jobs runs; each finished run is reported as it ends
+declare -A pid_of=()
 failed=()
+reap() {
+  local pid=$1 name=${pid_of[$1]}
+  if wait "$pid"; then
+    echo "quick: $name done ($(( $(date +%s) - start )) s)"
+  else
+    failed+=("$name: $(grep -m1 -i 'error' "$root/$name.log" || tail -n1 "$root/$name.log") ($root/$name.log)")
+  fi
+  unset "pid_of[$pid]"
+}
 for seed in "${seeds[@]}"; do
-  [[ "$seed" =~ ^[0-9]+$ ]] || { echo "ensemble.sh: seed '$seed' is not a non-negative integer" >&2; exit 1; }
   for kind in plain convex; do
-    out="$root/$kind-$seed"
-    # the case file with its seed and output directory replaced; kept beside the output
-    sed -e "s|^subsection DEM|subsection DEM\n  set Seed = $seed|" \
-        -e "s|set Directory = .*|set Directory = $out|" cases/quick/$kind.prm > "$out.prm"
-    echo "ensemble: $kind, seed $seed ($(date +%T))"
-    if build/wearsim run --overwrite "$out.prm" > "$out.log" 2>&1; then
-      dirs+=("$out")
-    else
-      # a failed run (e.g. a wear stage that would fold the surface) is reported and left out
-      failed+=("$kind seed $seed: $(grep -m1 'error' "$out.log" || tail -n1 "$out.log") ($out.log)")
-    fi
+    while [ ${#pid_of[@]} -ge "$jobs" ]; do
+      wait -n -p done_pid "${!pid_of[@]}" || true
+      reap "$done_pid"
+    done
+    echo "quick: $kind, seed $seed started"
+    run_one "$kind" "$seed" &
+    pid_of[$!]="$kind-$seed"
   done
 done
-{
-  [ ${#dirs[@]} -eq 0 ] || /usr/bin/python3 cases/quick/ensemble_report.py "${dirs[@]}"
-  for f in "${failed[@]}"; do echo "failed, left out: $f"; done
-} | tee "$root/ensemble.txt"
-[ ${#failed[@]} -eq 0 ]
+for pid in "${!pid_of[@]}"; do reap "$pid"; done
+if [ ${#failed[@]} -gt 0 ]; then
+  printf 'quick: failed: %s\n' "${failed[@]}" >&2
+  exit 1
+fi
+
+plain=() convex=()
+for seed in "${seeds[@]}"; do plain+=("$root/plain-$seed"); convex+=("$root/convex-$seed"); done
+# --from 3: six revolutions need not reach steady state (two consecutive revolutions under
+# DEM/Steady threshold), and compare refuses a run without revolutions after it; the four
+# staged revolutions after the two settling ones are averaged instead
+build/wearsim compare --from 3 "${plain[@]}" -- "${convex[@]}" | tee "$root/compare.txt"
+/usr/bin/python3 coupling/output/plot_run.py --compare --from 3 "${plain[@]}" -- "${convex[@]}" \
+  --output "$root"
+/usr/bin/python3 coupling/output/plot_run.py "$root/plain-${seeds[0]}" "$root/convex-${seeds[0]}"
+/usr/bin/python3 cases/quick/report.py "${update_readme[@]}" --seconds $(( $(date +%s) - start )) \
+  "$root" "${seeds[@]}"

@@ -6,6 +6,7 @@
 #include "coupling/app/dem_command.h"
 #include "coupling/app/mesh_command.h"
 #include "coupling/app/run_command.h"
+#include "coupling/output/engine_version.h"
 #include "coupling/parameters/case_parameters.h"
 
 #include <deal.II/base/mpi.h>
@@ -53,6 +54,7 @@ void usage(std::ostream& out) {
          "                           FEM benchmark on the reference convex sample: stress\n"
          "                           solves, mesh motion, remeshing\n"
          "  --print-parameters       list every case-file parameter with default and meaning\n"
+         "  --version                the engine version (git describe at build time)\n"
          "  --help                   this text\n";
 }
 
@@ -70,6 +72,10 @@ int main(int argc, char** argv) {
   try {
     if (cmd == "--help" || cmd == "-h") {
       usage(std::cout);
+      return 0;
+    }
+    if (cmd == "--version") {
+      std::cout << "wearsim " << engine_version() << "\n";
       return 0;
     }
     if (cmd == "--print-parameters") {

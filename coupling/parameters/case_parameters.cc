@@ -8,6 +8,7 @@
 // it always round-trips.
 #include "coupling/parameters/case_parameters.h"
 
+#include "coupling/output/engine_version.h"
 #include "coupling/parameters/case_consistency.h"
 #include "dem/tester/wear_tester.h"
 #include "meshes/atomic_file.h"
@@ -245,7 +246,8 @@ void write_resolved_parameters(const CaseParameters& p, const std::string& path)
     out << "# Fully resolved parameters";
     if (!p.case_file.empty())
       out << " of " << p.case_file;
-    out << "\n" << text;
+    // the report scripts read this line to tell which engine made a run
+    out << "\n# Engine version: " << engine_version() << "\n" << text;
   });
 }
 

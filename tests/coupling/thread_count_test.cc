@@ -5,7 +5,8 @@
 // in another order (dem/engine/pair_kernel.h, ForeignForces); the last bits differ and the
 // flowing bed amplifies them into another draw of the flow. So 1 and 2 threads must agree
 // within the spread of the flow's draws, here the range of the six insertion seeds recorded
-// in cases/quick/README.md (plain 1.88 to 3.34, convex 1.24 to 1.70 mm^3 per revolution);
+// in CHANGELOG.md (issue 36 part 4: the 2026-11-24 ensemble; plain 1.88 to 3.34, convex 1.24
+// to 1.70 mm^3 per revolution);
 // the same thread count must agree bit for bit.
 #include "coupling/loop/coupled_run.h"
 
