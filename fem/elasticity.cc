@@ -2,12 +2,17 @@
 //
 //   -div sigma(u) = 0,  sigma = lambda tr(eps) I + 2 mu eps,  eps = sym grad u
 //   u = 0 on the bottom face (label 1); sigma n = t_f = F_f / A_f on surface face f
+//   with the holder: u . n = 0 on the sides (label 2), tangential traction zero there
 // with F_f the extensive force field (window-averaged face loads), so the applied total
 // force equals sum_f F_f exactly (the traction is constant on each face and integrated
 // exactly). FE_SimplexP of degree 1 or 2 per component, Gauss simplex quadrature of
 // degree + 1, affine mapping. Solver: CG with Trilinos ML AMG, the six rigid-body
 // modes as near null space. Reaction: the nodal residual K u - f of the unconstrained
-// system summed over the clamped DoFs per component.
+// system summed over the constrained DoFs per component (bottom and, held, sides).
+// The holder's sides: the holder's walls are normal to x or y in the sample frame, so
+// u . n = 0 constrains one displacement component of each side DoF to zero (both at the
+// vertical edges, all three where a side meets the clamped bottom), the axis nearest the
+// side face's normal; a side face more than 30 degrees off both axes stops the solve.
 // Stresses: von Mises sqrt(3/2 s:s) (s deviatoric) and principal stresses (eigenvalues of
 // the symmetric tensor), averaged over each cell's quadrature points for output; the
 // maxima use every quadrature point. The measures that converge under refinement
@@ -149,6 +154,8 @@ void ElasticitySolver::setup_system() {
   VectorTools::interpolate_boundary_values(mapping_, dof_handler_,
                                            types::boundary_id(meshes::label::bottom),
                                            Functions::ZeroFunction<3>(3), constraints_);
+  if (p_.holder_support)
+    constrain_held_sides();
   constraints_.close();
   if (constraints_.n_constraints() == 0)
     throw std::runtime_error("FEM: no degree of freedom lies on the clamped bottom face (id 1)");
@@ -158,6 +165,32 @@ void ElasticitySolver::setup_system() {
   rhs_.reinit(dof_handler_.n_dofs());
   unconstrained_rhs_.reinit(dof_handler_.n_dofs());
   solution_.reinit(dof_handler_.n_dofs());
+}
+
+void ElasticitySolver::constrain_held_sides() {
+  std::vector<types::global_dof_index> face_dofs;
+  for (const auto& cell : dof_handler_.active_cell_iterators())
+    for (const auto f : cell->face_indices()) {
+      const auto face = cell->face(f);
+      if (!face->at_boundary() || face->boundary_id() != types::boundary_id(meshes::label::side))
+        continue;
+      const Tensor<1, 3> n =
+          cross_product_3d(face->vertex(1) - face->vertex(0), face->vertex(2) - face->vertex(0));
+      const double norm = n.norm();
+      // The holder wall it rests on: normal to x or y. A worn side may tilt slightly (its top
+      // vertices recede with the wear face), the wall does not; a side more than 30 degrees
+      // off both axes is no side of the box sample.
+      const unsigned int axis = std::abs(n[0]) > std::abs(n[1]) ? 0 : 1;
+      if (!(std::abs(n[axis]) > std::cos(30 * numbers::PI / 180) * norm))
+        throw std::runtime_error("FEM: a side face (label 2) is not normal to x or y; the "
+                                 "holder's support (u . n = 0) needs the box sample's sides");
+      face_dofs.resize(fe_.n_dofs_per_face(f));
+      face->get_dof_indices(face_dofs);
+      for (unsigned int i = 0; i < face_dofs.size(); ++i)
+        if (fe_.face_system_to_component_index(i, f).first == axis &&
+            !constraints_.is_constrained(face_dofs[i]))
+          constraints_.add_line(face_dofs[i]);
+    }
 }
 
 void ElasticitySolver::assemble_system(const meshes::FaceField<meshes::Vec3>& forces,

@@ -1,6 +1,7 @@
 #pragma once
 // Linear elasticity of the sample (model.md section 6): simplex P1 or P2 elements, clamped
-// bottom face, tractions from an extensive per-face force field on the labelled boundary.
+// bottom face (and, in the holder, sides held at zero normal displacement), tractions from an
+// extensive per-face force field on the labelled boundary.
 #include "fem/boundary_face_map.h"
 #include "fem/stress_measures.h"
 #include "meshes/face_field.h"
@@ -30,13 +31,19 @@ struct ElasticityParameters {
   /// [m] radius of the ball the stress is averaged over (stress_measures.h); 0: no ball
   /// average (a coupled run sets the mean particle radius when the case file gives 0)
   double averaging_radius = 0;
+  /// The sample sits in its holder (Geometry/Tester/Holder = frame; a coupled run sets this
+  /// from the geometry): the sides (label 2) keep zero normal displacement and slide freely
+  /// along the frame's walls (docs/theory.md section 6); false: traction-free sides.
+  bool holder_support = false;
 };
 
 struct ElasticityResult {
   unsigned int n_dofs = 0, iterations = 0;
   double setup_seconds = 0, assemble_seconds = 0, solve_seconds = 0;
-  meshes::Vec3 applied_force;  ///< [N] sum of the applied face forces
-  meshes::Vec3 reaction_force; ///< [N] force the clamped face exerts on the sample
+  meshes::Vec3 applied_force; ///< [N] sum of the applied face forces
+  /// [N] force the supports exert on the sample: the clamped bottom, and the holder's walls
+  /// on the sides with holder_support
+  meshes::Vec3 reaction_force;
   /// [Pa] largest von Mises over all quadrature points: mesh-dependent, it grows without
   /// bound under refinement near a contact load (docs/theory.md)
   double max_von_mises_qp = 0;
@@ -77,6 +84,8 @@ public:
 
 private:
   void setup_system();
+  /// With holder_support: u . n = 0 on the sides (label 2), into constraints_.
+  void constrain_held_sides();
   void assemble_system(const meshes::FaceField<meshes::Vec3>& forces, ElasticityResult& r);
   void solve(ElasticityResult& r);
   /// The stress at every quadrature point; fills the cell fields and r's qp maxima.

@@ -92,14 +92,24 @@ void validate(const GeometryParameters& g) {
     require(t.consolidator_extent_deg > 0 && t.consolidator_extent_deg < t.sector_angle_deg,
             T + "Consolidator extent", "must be positive and smaller than the sector");
   }
+  // The holder's frame adds its rim width around and under the sample.
+  if (t.holder)
+    require(std::isfinite(t.holder_rim_width) && t.holder_rim_width > 0, T + "Holder rim width",
+            "must be a positive length in metres, got " + std::to_string(t.holder_rim_width) +
+                " (or set Geometry/Tester/Holder = none)");
+  const double rim = t.holder ? t.holder_rim_width : 0;
+  const std::string what = t.holder ? "the sample in its holder" : "the sample";
   const std::string L = "Geometry/Placement/";
   const auto& p = g.placement;
-  require(p.radius - g.sample.width / 2 > t.inner_radius &&
-              p.radius + g.sample.width / 2 < t.outer_radius,
-          L + "Radius", "the sample must lie between the inner and outer walls");
+  require(p.radius - g.sample.width / 2 - rim > t.inner_radius &&
+              p.radius + g.sample.width / 2 + rim < t.outer_radius,
+          L + "Radius", what + " must lie between the inner and outer walls");
   require(std::abs(p.incline_deg) < 30, L + "Incline", "must be below 30 degrees");
-  require(p.wear_face_height - g.sample.thickness > 0, L + "Wear face height",
-          "the sample would cut through the floor");
+  // The lowest point: the bottom (of the holder) at the lower end of the inclined sample.
+  const double half = g.sample.length / 2 + rim, depth = g.sample.thickness + rim;
+  const double incline = std::abs(p.incline_deg) * 3.14159265358979323846 / 180;
+  require(p.wear_face_height - depth * std::cos(incline) - half * std::sin(incline) > 0,
+          L + "Wear face height", what + " would cut through the floor");
 }
 
 } // namespace wear::meshes

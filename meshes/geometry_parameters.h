@@ -55,6 +55,11 @@ struct TesterGeometry {
   double consolidator_height = 0.130;  ///< [m] of the plate above the floor
   double consolidator_angle_deg = 135; ///< [deg] polar angle of the plate centre
   double consolidator_extent_deg = 10; ///< [deg] angular extent of the plate
+  /// The sample holder (docs/wear-tester.md): a steel frame around the sample's sides and
+  /// underside, its rim flush with the wear-face edge and inclined with the sample
+  /// (generate_holder); false: the sample stands bare in the bed.
+  bool holder = true;
+  double holder_rim_width = 10e-3; ///< [m] of the frame's walls beside and under the sample
 };
 
 struct GeometryParameters {
@@ -134,6 +139,14 @@ void visit_parameters(TesterGeometry& t, Visitor& v) {
   v.real("Consolidator height", t.consolidator_height, "[m] Plate height above the floor.");
   v.real("Consolidator angle", t.consolidator_angle_deg, "[deg] Polar angle of the plate centre.");
   v.real("Consolidator extent", t.consolidator_extent_deg, "[deg] Angular extent of the plate.");
+  v.choice("Holder", t.holder, "frame", "none",
+           "The sample holder: 'frame' (a non-wearing steel frame enclosing the sample's sides "
+           "and underside, its rim top flush with the wear-face edge and inclined with it, so "
+           "only the wear face meets the bed; the FEM holds the sides as the frame does) or "
+           "'none' (the sample stands bare in the bed, sides and underside exposed).");
+  v.real("Holder rim width", t.holder_rim_width,
+         "[m] Wall thickness of the holder frame: the rim beside the sample and the plate "
+         "under it (the laboratory's: 10 mm).");
   v.leave();
 }
 

@@ -31,6 +31,8 @@ std::string name(int id) {
     return "base";
   case wall:
     return "wall";
+  case pocket:
+    return "pocket";
   default:
     if (is_convex_element(id))
       return "C" + std::to_string(column_of(id)) + std::to_string(element_of(id));
@@ -39,7 +41,7 @@ std::string name(int id) {
 }
 
 int from_name(const std::string& n) {
-  for (int id : {unlabelled, bottom, side, base, wall})
+  for (int id : {unlabelled, bottom, side, base, wall, pocket})
     if (n == name(id))
       return id;
   if (n.size() == 3 && n[0] == 'C' && n[1] >= '1' && n[1] <= '9' && n[2] >= '1' && n[2] <= '9')

@@ -22,6 +22,9 @@ constexpr int bottom = 1; ///< clamped face of the sample
 constexpr int side = 2;   ///< non-wearing sides
 constexpr int base = 3;   ///< top face of the base plate (wearing)
 constexpr int wall = 4;   ///< a DEM wall without further structure
+/// A holder's faces held flush against the sample's sides and underside (the pocket the
+/// sample sits in): covered by the sample, never reached by a particle.
+constexpr int pocket = 5;
 inline int convex_element(int column, int element) {
   return 10 * column + element;
 }
@@ -38,7 +41,7 @@ inline int element_of(int id) {
 inline bool wears(int id) {
   return id == base || is_convex_element(id);
 }
-/// "bottom", "side", "base", "wall", "C<j><k>" or "L<id>".
+/// "bottom", "side", "base", "wall", "pocket", "C<j><k>" or "L<id>".
 std::string name(int id);
 /// Inverse of name(); throws std::invalid_argument for an unknown name.
 int from_name(const std::string& name);

@@ -17,7 +17,7 @@ if(NOT n EQUAL 23)
   message(FATAL_ERROR "expected 23 element lines, got ${n}")
 endif()
 foreach(f sample.msh sample.stl sample.vtu sample_in_tester.stl floor.stl inner_wall.stl
-          outer_wall.stl consolidator.stl parameters.prm)
+          outer_wall.stl consolidator.stl holder.stl parameters.prm)
   if(NOT EXISTS "${OUT}/${f}")
     message(FATAL_ERROR "missing output ${OUT}/${f}")
   endif()

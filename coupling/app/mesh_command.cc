@@ -34,6 +34,12 @@ void run_mesh_command(const CaseParameters& p, std::ostream& log) {
   meshes::write_stl(walls.outer, dir + "/outer_wall.stl", meshes::StlFormat::binary);
   if (walls.consolidator)
     meshes::write_stl(*walls.consolidator, dir + "/consolidator.stl", meshes::StlFormat::binary);
+  const auto& t = p.geometry.tester;
+  const auto holder = t.holder ? meshes::SampleFrame(s, p.geometry.placement)
+                                     .place_in_tester(meshes::generate_holder(s, t))
+                               : meshes::SurfaceMesh{};
+  if (t.holder)
+    meshes::write_stl(holder, dir + "/holder.stl", meshes::StlFormat::binary);
 
   char line[256];
   std::snprintf(line, sizeof line, "sample: %s, %zu tetrahedra, %zu surface triangles, %.2f s\n",
@@ -60,9 +66,10 @@ void run_mesh_command(const CaseParameters& p, std::ostream& log) {
                 meshes::enclosed_volume(g.surface), g.tetrahedral_volume, g.exact_volume);
   log << line;
   std::snprintf(line, sizeof line,
-                "walls: floor %zu, inner %zu, outer %zu, consolidator %zu triangles\n",
+                "walls: floor %zu, inner %zu, outer %zu, consolidator %zu, holder %zu triangles\n",
                 walls.floor.n_faces(), walls.inner.n_faces(), walls.outer.n_faces(),
-                walls.consolidator ? walls.consolidator->n_faces() : std::size_t(0));
+                walls.consolidator ? walls.consolidator->n_faces() : std::size_t(0),
+                holder.n_faces());
   log << line << "written to " << dir << "/\n";
 }
 

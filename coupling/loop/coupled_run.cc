@@ -219,6 +219,7 @@ StageStress CoupledRun::solve_stress(const dem::WallLoads& loads, StageRecord& r
   r.mean_force_z = forces.sum().z;
   fem::ElasticityParameters ep = p_.fem.elasticity;
   ep.averaging_radius = stress_averaging_radius(p_);
+  ep.holder_support = p_.geometry.tester.holder;
   fem::ElasticitySolver solver(sample_->triangulation(), sample_->face_map(), ep);
   const auto result = solver.run(forces);
   r.max_von_mises_ball = result.max_von_mises_ball;

@@ -2,8 +2,9 @@
 // is written or filled. Each check below refuses only a combination that cannot work:
 //
 // - The sample inside the periodic sector: its footprint spans the polar angles
-//   Angle +- atan((L/2) / (R - W/2)) (the inner corners reach furthest), plus half a largest
-//   particle of clearance as an arc at that radius; past a cut the sample wall would be cut off
+//   Angle +- atan((L/2) / (R - W/2)) (the inner corners reach furthest; L and W grown by the
+//   holder's rim on each side when it has one), plus half a largest particle of clearance as
+//   an arc at that radius; past a cut the sample wall would be cut off
 //   (the cut faces are periodic, the sample is not). The consolidator likewise, and its plate
 //   must pass above the sample where both share polar angles.
 // - The bed: the settled height below the walls; the insertion region (Loose factor x Fill
@@ -69,12 +70,14 @@ bool has_scheme(const CouplingParameters& c, Scheme s) {
   return false;
 }
 
-/// [rad] Half the polar angle the sample's footprint spans, with half a largest particle of
-/// clearance at the inner corners.
+/// [rad] Half the polar angle the sample's footprint (in its holder, when it has one) spans,
+/// with half a largest particle of clearance at the inner corners.
 double sample_half_angle(const CaseParameters& p) {
   const auto& s = p.geometry.sample;
-  const double inner = p.geometry.placement.radius - s.width / 2;
-  return std::atan2(s.length / 2, inner) + 0.5 * p.dem.psd.max_diameter() / inner;
+  const auto& t = p.geometry.tester;
+  const double rim = t.holder ? t.holder_rim_width : 0;
+  const double inner = p.geometry.placement.radius - s.width / 2 - rim;
+  return std::atan2(s.length / 2 + rim, inner) + 0.5 * p.dem.psd.max_diameter() / inner;
 }
 
 void check_sample_in_sector(const CaseParameters& p) {

@@ -24,9 +24,9 @@ using meshes::norm;
 using meshes::normalized;
 
 MeshWall::MeshWall(const meshes::SurfaceMesh& mesh, int material_id, const WallMotion& motion,
-                   bool wearing, std::string name)
+                   bool wearing, std::string name, std::vector<int> covered_labels)
     : mesh_(mesh), material_(material_id), motion_(motion), wearing_(wearing),
-      name_(std::move(name)) {
+      name_(std::move(name)), covered_labels_(std::move(covered_labels)) {
   mesh_.validate("wall '" + name_ + "'");
   if (mesh_.n_faces() == 0)
     throw std::invalid_argument("wall '" + name_ + "' has no triangles");
@@ -68,6 +68,22 @@ MeshWall::MeshWall(const meshes::SurfaceMesh& mesh, int material_id, const WallM
     vertex_face_offset_[v + 1] = vertex_face_offset_[v] + vf[v].size();
     vertex_edge_.insert(vertex_edge_.end(), ve[v].begin(), ve[v].end());
     vertex_face_.insert(vertex_face_.end(), vf[v].begin(), vf[v].end());
+  }
+  // Junctions of covered and uncovered faces.
+  std::vector<char> covered(nf, 0);
+  for (std::size_t f = 0; f < nf; ++f)
+    covered[f] = std::find(covered_labels_.begin(), covered_labels_.end(), mesh_.face_labels[f]) !=
+                 covered_labels_.end();
+  edge_junction_.assign(edge_face_.size(), 0);
+  for (std::size_t e = 0; e < edge_face_.size(); ++e)
+    edge_junction_[e] =
+        edge_face_[e][1] != ~0u && covered[edge_face_[e][0]] != covered[edge_face_[e][1]];
+  vertex_junction_.assign(nv, 0);
+  for (std::size_t v = 0; v < nv; ++v) {
+    bool any_covered = false, any_open = false;
+    for (auto i = vertex_face_offset_[v]; i < vertex_face_offset_[v + 1]; ++i)
+      (covered[vertex_face_[i]] ? any_covered : any_open) = true;
+    vertex_junction_[v] = any_covered && any_open;
   }
   compute_geometry();
 }
@@ -143,6 +159,8 @@ bool MeshWall::owns_contact(std::uint32_t f, const ClosestFeature& cf, const Vec
   const double tol = 1e-9 * norm(d);
   if (cf.feature == Feature::edge) {
     const auto e = face_edge_[f][cf.local];
+    if (edge_junction_[e])
+      return false;
     for (auto g : edge_face_[e]) {
       if (g == ~0u)
         continue;
@@ -153,6 +171,8 @@ bool MeshWall::owns_contact(std::uint32_t f, const ClosestFeature& cf, const Vec
     return f == edge_face_[e][0];
   }
   const auto v = mesh_.triangles[f][cf.local];
+  if (vertex_junction_[v])
+    return false;
   for (auto i = vertex_edge_offset_[v]; i < vertex_edge_offset_[v + 1]; ++i)
     if (dot(d, vertex_edge_dir_[i]) > tol)
       return false;

@@ -65,12 +65,15 @@ struct alignas(64) FaceBound {
 
 class MeshWall {
 public:
+  /// `covered_labels`: labels of faces held flush against another wall (the sample's sides
+  /// and bottom in its holder, the holder's pocket), see owns_contact.
   MeshWall(const meshes::SurfaceMesh& mesh, int material_id, const WallMotion& motion, bool wearing,
-           std::string name);
+           std::string name, std::vector<int> covered_labels = {});
 
   const std::string& name() const { return name_; }
   int material() const { return material_; }
   bool wearing() const { return wearing_; }
+  const std::vector<int>& covered_labels() const { return covered_labels_; }
   const WallMotion& motion() const { return motion_; }
   /// Changes the rigid motion (e.g. start the floor's rotation after settling).
   void set_motion(const WallMotion& m) {
@@ -94,7 +97,11 @@ public:
   /// True when the closest feature found on triangle f is the mesh's own closest feature near
   /// that point (a local distance minimum over all faces sharing it) and f is the one
   /// triangle that reports it. Face contacts always qualify; an edge or vertex contact is
-  /// dropped when moving into a neighbouring face brings the point closer to c.
+  /// dropped when moving into a neighbouring face brings the point closer to c. An edge or
+  /// vertex where a covered face meets an uncovered one is never a contact: the covering wall
+  /// continues the surface flush there, and its own face holds the contact (a flat junction
+  /// of two walls, counted once). Face contacts on covered faces stay, so a particle that
+  /// reaches one is seen.
   bool owns_contact(std::uint32_t f, const ClosestFeature& cf, const Vec3& c) const;
 
   /// Faces that share the contact's feature and each one's share of it (for splitting
@@ -121,6 +128,7 @@ private:
   Vec3 omega_;
   bool wearing_;
   std::string name_;
+  std::vector<int> covered_labels_;
   std::vector<std::array<Vec3, 3>> corners_;
   std::vector<Vec3> normal_;
   std::vector<FaceBound> bound_;
@@ -133,6 +141,7 @@ private:
   std::vector<Vec3> vertex_edge_dir_;                           // unit, away from v
   std::vector<std::uint32_t> vertex_face_offset_, vertex_face_; // CSR: faces at v
   std::vector<double> vertex_face_weight_;                      // interior-angle share
+  std::vector<char> edge_junction_, vertex_junction_; // joins a covered and an uncovered face
   void compute_geometry();
   // candidate grid
   Vec3 grid_min_;

@@ -367,7 +367,8 @@ void System::set_wall_vertices(int w, const std::vector<Vec3>& vertices) {
 void System::replace_wall_mesh(int w, const meshes::SurfaceMesh& mesh) {
   const std::size_t m = mesh_index(w, "replace_wall_mesh");
   const MeshWall& old = walls_[m];
-  MeshWall wall(mesh, old.material(), old.motion(), old.wearing(), old.name());
+  MeshWall wall(mesh, old.material(), old.motion(), old.wearing(), old.name(),
+                old.covered_labels());
   walls_[m] = std::move(wall);
   if (!set_up_)
     return;

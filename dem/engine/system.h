@@ -161,7 +161,8 @@ public:
   void set_wall_vertices(int w, const std::vector<Vec3>& vertices);
 
   /// Replaces the mesh of wall w (new topology allowed, e.g. a remeshed worn surface); its
-  /// material, motion, wear flag and name stay. The wall's wear integrals restart at zero.
+  /// material, motion, wear flag, name and covered labels stay. The wall's wear integrals restart
+  /// at zero.
   void replace_wall_mesh(int w, const meshes::SurfaceMesh& mesh);
 
   /// The state that decides the continuation (see SystemState).

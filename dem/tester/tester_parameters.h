@@ -24,9 +24,10 @@ struct DemMaterial {
 struct TesterDemParameters {
   DemMaterial particle{1e8, 0.25, 2650};
   DemMaterial sample{2.5e8, 0.40, 930};
-  DemMaterial walls{7.9e10, 0.30, 7850}; ///< floor, cylinders, consolidator (assumed steel)
+  DemMaterial walls{7.9e10, 0.30, 7850};  ///< floor, cylinders, consolidator (assumed steel)
+  DemMaterial holder{7.9e10, 0.30, 7850}; ///< the sample holder (steel, as the walls)
   PairProperties particle_particle{0.5, 0.55, 0.20};
-  PairProperties particle_wall{0.5, 0.30, 0.10}; ///< also particle-sample
+  PairProperties particle_wall{0.5, 0.30, 0.10}; ///< also particle-sample and particle-holder
   SizeDistribution psd{{2.0e-3, 2.65e-3, 3.35e-3}, {0.25, 0.5, 0.25}, 4};
   double fill_height = 0.130;      ///< [m] settled bed height above the floor
   double loose_factor = 2.5;       ///< [-] insertion region height / fill height
@@ -53,7 +54,7 @@ struct TesterDemParameters {
 };
 
 /// "Particle shear modulus", "Particle Poisson ratio", "Particle density" for which =
-/// "Particle" (likewise "Sample", "Wall").
+/// "Particle" (likewise "Sample", "Wall", "Holder").
 template <typename Visitor>
 void visit_parameters(const std::string& which, DemMaterial& m, Visitor& v) {
   v.real(which + " shear modulus", m.shear_modulus,
@@ -135,6 +136,7 @@ void visit_parameters(TesterDemParameters& d, Visitor& v) {
   visit_parameters("Particle", d.particle, v);
   visit_parameters("Sample", d.sample, v);
   visit_parameters("Wall", d.walls, v);
+  visit_parameters("Holder", d.holder, v);
   visit_parameters("particle-particle", d.particle_particle, v);
   visit_parameters("particle-wall", d.particle_wall, v);
   visit_bed_parameters(d, v);

@@ -6,10 +6,19 @@
 // floor and cylinders are full circles, so particles slightly beyond a periodic cut between
 // list rebuilds still see them; the consolidator is the annular sector of
 // meshes::generate_tester_walls. The sample is a triangle-mesh wall.
+// The holder (Geometry/Tester/Holder = frame) is a fixed, non-wearing triangle-mesh wall
+// (meshes::generate_holder) placed by the sample's own map, so its rim top lies in the wear
+// face's plane and its pocket on the sample's sides and bottom. Both walls name those
+// coinciding faces covered (MeshWall): where wear face and rim meet, a particle then has one
+// contact, with the face under it, as on one flat wall.
 // Filling: random insertion from the PSD into an annular sector `loose_factor` times the
-// fill height, leaving out the sample (with a particle diameter of clearance) and the space
-// above the consolidator, then settling with the walls at rest. A revolution is one pass of
-// the bed through the sector, T = Theta / omega, and n = round(T / dt) steps.
+// fill height, leaving out the sample and its holder (with a particle diameter of
+// clearance) and the space above the consolidator, then settling with the walls at rest.
+// The particle count fills the annulus to the fill height at the assumed packing, less the
+// holder frame's volume (the frame is submerged; the bare sample's volume stays counted,
+// as it always was).
+// A revolution is one pass of the bed through the sector, T = Theta / omega, and
+// n = round(T / dt) steps.
 // The reference deformation moves the sample's nodes every N_update steps by the removed
 // volume accumulated since the previous move (times the declared amplification).
 #include "dem/tester/wear_tester.h"
@@ -18,6 +27,7 @@
 #include "meshes/sample_generator.h"
 #include "meshes/stopwatch.h"
 #include "meshes/surface_locator.h"
+#include "meshes/tester_walls.h"
 
 #include <omp.h>
 
@@ -71,6 +81,7 @@ void validate(const TesterDemParameters& p) {
   check_material(p.particle, "Particle");
   check_material(p.sample, "Sample");
   check_material(p.walls, "Wall");
+  check_material(p.holder, "Holder");
   p.psd.validate();
   require(p.fill_height > 0, "Fill height", "must be positive [m]");
   require(p.loose_factor >= 1.2, "Loose factor", "must be at least 1.2");
@@ -119,9 +130,23 @@ WearTester::WearTester(const meshes::GeometryParameters& geometry, const TesterD
   m.set_pair(wall_material, wall_material, dem_.particle_wall);
 
   rotating_walls_ = add_tester_walls(system_, t, wall_material);
-  const auto placed =
-      meshes::SampleFrame(geometry_.sample, geometry_.placement).place_in_tester(sample);
-  sample_wall_ = system_.add_wall(MeshWall(placed, sample_material, {}, true, "sample"));
+  const meshes::SampleFrame frame(geometry_.sample, geometry_.placement);
+  const auto placed = frame.place_in_tester(sample);
+  // The sample wall keeps its number with and without a holder.
+  std::vector<int> covered;
+  if (t.holder)
+    covered = {meshes::label::side, meshes::label::bottom};
+  sample_wall_ =
+      system_.add_wall(MeshWall(placed, sample_material, {}, true, "sample", std::move(covered)));
+  if (t.holder) {
+    const int holder_material = m.add(material("holder", dem_.holder));
+    m.set_pair(particle_material_, holder_material, dem_.particle_wall);
+    for (int other : {sample_material, wall_material, holder_material})
+      m.set_pair(holder_material, other, dem_.particle_wall); // walls never meet
+    holder_wall_ = system_.add_wall(
+        MeshWall(frame.place_in_tester(meshes::generate_holder(geometry_.sample, t)),
+                 holder_material, {}, false, "holder", {meshes::label::pocket}));
+  }
 
   auto& s = system_.settings;
   s.time_step_fraction = dem_.time_step_fraction;
@@ -152,8 +177,9 @@ FillReport WearTester::fill_and_settle(const std::function<void(const TesterProg
   const meshes::SampleFrame frame(g, geometry_.placement);
   const double d_max = dem_.psd.max_diameter();
   const double element_h = g.convex ? g.pattern.h : 0;
+  const double rim = t.holder ? t.holder_rim_width : 0; // the holder around and under it
   const double ri = t.inner_radius, ro = t.outer_radius, Th = sector_;
-  const auto make_region = [&, frame, d_max, element_h](double z_top) {
+  const auto make_region = [&, frame, d_max, element_h, rim](double z_top) {
     FillRegion base =
         annular_sector_region(ri, ro, Th, 0, std::min(z_top, t.wall_height), 0.5 * d_max);
     const auto inside = base.inside;
@@ -162,8 +188,8 @@ FillReport WearTester::fill_and_settle(const std::function<void(const TesterProg
         return false;
       const Vec3 q = frame.point_to_sample(x);
       const double c = d_max;
-      if (std::abs(q.x) < g.width / 2 + c && std::abs(q.y) < g.length / 2 + c && q.z > -c &&
-          q.z < g.thickness + element_h + c)
+      if (std::abs(q.x) < g.width / 2 + rim + c && std::abs(q.y) < g.length / 2 + rim + c &&
+          q.z > -rim - c && q.z < g.thickness + element_h + c)
         return false;
       if (t.consolidator && x.z > t.consolidator_height - c) {
         double th = std::atan2(x.y, x.x);
@@ -178,7 +204,15 @@ FillReport WearTester::fill_and_settle(const std::function<void(const TesterProg
     return base;
   };
   use_thread_count();
-  const double area = 0.5 * Th * (ro * ro - ri * ri);
+  // The bed fills the sector's annulus up to the fill height less what the holder's frame
+  // occupies there (its rim top is the wear face's edge, below the bed's surface): the count
+  // is that of the annulus with the frame's volume taken out, so the bed settles at the same
+  // height with and without the holder (the bare sample's own volume is left in, as before).
+  const double frame_volume =
+      t.holder ? (g.width + 2 * rim) * (g.length + 2 * rim) * (g.thickness + rim) -
+                     g.width * g.length * g.thickness
+               : 0.0;
+  const double area = 0.5 * Th * (ro * ro - ri * ri) - frame_volume / dem_.fill_height;
   const meshes::Stopwatch wall_clock;
   const auto report = fill_to_height(
       system_, make_region, area, 0, dem_.fill_height, dem_.psd, dem_.particle.density,

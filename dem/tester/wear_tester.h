@@ -1,8 +1,8 @@
 #pragma once
 // The circular wear tester in DEM (docs/wear-tester.md): a periodic sector of the annular bed
 // with rotating floor and cylinders, the fixed sample as a wearing wall, an optional
-// consolidator, a bed filled from the PSD and settled; then revolutions with per-face wear
-// integrals, evaluations and, optionally, the reference node-moving deformation.
+// consolidator, the sample's holder, a bed filled from the PSD and settled; then revolutions with
+// per-face wear integrals, evaluations and, optionally, the reference node-moving deformation.
 #include "dem/engine/filling.h"
 #include "dem/engine/system.h"
 #include "dem/tester/reference_deformation.h"
@@ -85,6 +85,8 @@ public:
   System& system() { return system_; }
   const System& system() const { return system_; }
   int sample_wall() const { return sample_wall_; }
+  /// The holder's wall, -1 without a holder (Geometry/Tester/Holder = none).
+  int holder_wall() const { return holder_wall_; }
   const meshes::SurfaceMesh& sample_mesh() const { return system_.wall(sample_wall_).mesh(); }
   const TesterEvaluation& evaluation() const { return *evaluation_; }
   TesterEvaluation& evaluation() { return *evaluation_; }
@@ -107,7 +109,7 @@ private:
   TesterDemParameters dem_;
   ReferenceDeformationParameters deformation_parameters_;
   System system_;
-  int sample_wall_ = -1, particle_material_ = 0;
+  int sample_wall_ = -1, holder_wall_ = -1, particle_material_ = 0;
   std::vector<int> rotating_walls_;
   std::unique_ptr<WearLaw> law_;
   std::unique_ptr<ReferenceDeformation> deformation_;

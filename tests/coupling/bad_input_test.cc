@@ -188,6 +188,12 @@ std::vector<Row> combination_rows() {
        "subsection Geometry\n subsection Sample\n  subsection Pattern\n   set b = 1e-3\n"
        "   set h = 10e-3\n  end\n end\nend\n",
        {"Geometry/Sample/Pattern/h"}},
+      {"a negative holder rim width",
+       "subsection Geometry\n subsection Tester\n  set Holder rim width = -0.01\n end\nend\n",
+       {"Geometry/Tester/Holder rim width"}},
+      {"an unknown holder",
+       "subsection Geometry\n subsection Tester\n  set Holder = clamp\n end\nend\n",
+       {"Holder", "clamp"}},
       {"walls too low for loose insertion",
        "subsection Geometry\n subsection Tester\n  set Wall height = 0.14\n end\nend\n",
        {"DEM/Fill height", "Geometry/Tester/Wall height"}},

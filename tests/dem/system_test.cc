@@ -421,6 +421,76 @@ TEST_CASE("a finely tessellated concave wall gives one Hertz contact", "[dem][wa
   CHECK(dot(f, out) == Approx(-f_hertz).epsilon(1e-9));
 }
 
+TEST_CASE("a sphere on the flush junction of a sample and its holder has one contact",
+          "[dem][walls][holder]") {
+  // The sample box (its top the wear face) in the holder frame of meshes::generate_holder: the
+  // rim top and the wear face form one plane z = T. A sphere (r = 4 mm) pressed delta into
+  // that plane 0.05 r beside the junction also overlaps the other wall's edge there
+  // (r - sqrt((0.05 r)^2 + (r - delta)^2) > 0 for delta > 0.00125 r); on one flat wall it
+  // would have one contact, F = 4/3 E* sqrt(r) delta^1.5 along +z. With the sides and bottom
+  // of the sample and the holder's pocket covered, the junction's edges give no contact: the
+  // force is that of the flat wall to round-off, and the sample's sides take no wear window.
+  // Without covering, the edge contact adds about 85 % (the test would fail).
+  const double r = 4e-3, delta = 5e-5, e_star = 5e7 / (2 * (1 - 0.25 * 0.25));
+  const double f_flat = 4.0 / 3.0 * e_star * std::sqrt(r) * std::pow(delta, 1.5);
+  wear::meshes::SampleGeometry g;
+  wear::meshes::TesterGeometry t;
+  const double hx = g.width / 2, hy = g.length / 2, T = g.thickness;
+  namespace label = wear::meshes::label;
+  wear::meshes::SurfaceMesh sample;
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 2; ++i)
+        sample.vertices.push_back({(2 * i - 1) * hx, (2 * j - 1) * hy, k * T});
+  const auto v = [](int i, int j, int k) { return std::uint32_t(i + 2 * j + 4 * k); };
+  const auto quad = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d,
+                        int l) { // counter-clockwise seen from outside
+    sample.triangles.push_back({a, b, c});
+    sample.triangles.push_back({a, c, d});
+    sample.face_labels.insert(sample.face_labels.end(), 2, l);
+  };
+  quad(v(0, 0, 1), v(1, 0, 1), v(1, 1, 1), v(0, 1, 1), label::base);
+  quad(v(0, 0, 0), v(0, 1, 0), v(1, 1, 0), v(1, 0, 0), label::bottom);
+  quad(v(0, 0, 0), v(1, 0, 0), v(1, 0, 1), v(0, 0, 1), label::side);
+  quad(v(0, 1, 0), v(0, 1, 1), v(1, 1, 1), v(1, 1, 0), label::side);
+  quad(v(0, 0, 0), v(0, 0, 1), v(0, 1, 1), v(0, 1, 0), label::side);
+  quad(v(1, 0, 0), v(1, 1, 0), v(1, 1, 1), v(1, 0, 1), label::side);
+  REQUIRE(wear::meshes::enclosed_volume(sample) == Approx(4 * hx * hy * T));
+  const auto holder = wear::meshes::generate_holder(g, t);
+  for (const bool covered : {true, false})
+    for (const double side : {1.0, -1.0}) { // over the rim, over the wear face
+      System s;
+      s.settings.gravity = {0, 0, 0};
+      const int m = add_gravel(s, 0.5, 0.5, 0.0);
+      const int w_sample = s.add_wall(
+          MeshWall(sample, m, {}, true, "sample",
+                   covered ? std::vector<int>{label::side, label::bottom} : std::vector<int>{}));
+      s.add_wall(MeshWall(holder, m, {}, false, "holder",
+                          covered ? std::vector<int>{label::pocket} : std::vector<int>{}));
+      s.particles.add({hx + side * 0.05 * r, 0.013, T + r - delta}, {}, r, 2650, m);
+      s.setup();
+      const Vec3 f = s.particles.force[0];
+      INFO((covered ? "covered" : "not covered")
+           << ", centre over the " << (side > 0 ? "rim" : "wear face"));
+      if (!covered) {
+        CHECK(norm(f) > 1.5 * f_flat); // the double contact the covering removes
+        continue;
+      }
+      CHECK(f.z == Approx(f_flat).epsilon(1e-9));
+      CHECK(std::hypot(f.x, f.y) < 1e-9 * f_flat);
+      s.run(1);
+      const auto wi = s.wear_integrals(w_sample);
+      double on_wear_face = 0, elsewhere = 0;
+      for (std::size_t k = 0; k < sample.n_faces(); ++k)
+        (sample.face_labels[k] == label::base ? on_wear_face : elsewhere) += wi.contact_steps[k];
+      CHECK(elsewhere == 0);
+      if (side > 0)
+        CHECK(on_wear_face == 0); // the rim took it
+      else
+        CHECK(on_wear_face > 0);
+    }
+}
+
 TEST_CASE("the wall's cheap rejections never drop a face within reach", "[dem][walls]") {
   // The step rejects a candidate face by the distance to its plane, then by the distance to
   // its bounding sphere and by the disc the ball cuts from its plane, before the closest-point

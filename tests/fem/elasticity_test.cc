@@ -88,6 +88,53 @@ TEST_CASE("elasticity patch test: uniform strain is exact with P1 and P2", "[fem
   }
 }
 
+TEST_CASE("elasticity: a sample pressed in its holder is in uniaxial strain, exactly",
+          "[fem][elasticity][holder]") {
+  // Clamped bottom, sides held at zero normal displacement and free to slide (the holder's
+  // support), a uniform pressure p on the top: u = (0, 0, -p z / M) with the constrained
+  // modulus M = lambda + 2 mu, sigma_zz = -p, sigma_xx = sigma_yy = -p lambda / M. Linear in
+  // z, so P1 and P2 hold it to the solver's tolerance (1e-8 relative here). The supports
+  // carry the whole load: the reaction is -(applied force). Traction-free sides (no holder)
+  // let the sample bulge: the top then sinks measurably further (checked > 1 % more).
+  const double E = 700e6, nu = 0.4, pressure = 1.2e3, c = 0.01;
+  const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
+  const double M = lambda + 2 * mu;
+  for (unsigned int degree : {1u, 2u}) {
+    dealii::Triangulation<3> tria;
+    make_box(tria, 3, 2, 2, 0.03, 0.02, c);
+    const auto surface = extract_boundary_surface(tria);
+    BoundaryFaceMap map(tria, surface);
+    wear::meshes::FaceField<Vec3> F("force", "N", wear::meshes::Extensivity::extensive, surface);
+    const auto a = wear::meshes::face_areas(surface);
+    for (std::size_t f = 0; f < surface.n_faces(); ++f)
+      if (surface.face_labels[f] == 3)
+        F[f] = Vec3{0, 0, -pressure * a[f]};
+    double u_free = 0;
+    for (const bool held : {true, false}) {
+      INFO("P" << degree << (held ? ", held sides" : ", free sides"));
+      ElasticityParameters p;
+      p.degree = degree;
+      p.relative_tolerance = 1e-13;
+      p.holder_support = held;
+      ElasticitySolver solver(tria, map, p);
+      const auto r = solver.run(F);
+      CHECK(r.reaction_force.z == Approx(-r.applied_force.z).epsilon(1e-8));
+      CHECK(std::abs(r.reaction_force.x) < 1e-8 * std::abs(r.applied_force.z));
+      CHECK(std::abs(r.reaction_force.y) < 1e-8 * std::abs(r.applied_force.z));
+      if (!held) {
+        u_free = r.max_displacement;
+        continue;
+      }
+      CHECK(r.max_displacement == Approx(pressure * c / M).epsilon(1e-8));
+      for (unsigned int k = 0; k < tria.n_active_cells(); ++k) {
+        CHECK(solver.principal_stresses()[0][k] == Approx(-pressure * lambda / M).epsilon(1e-8));
+        CHECK(solver.principal_stresses()[2][k] == Approx(-pressure).epsilon(1e-8));
+      }
+    }
+    CHECK(u_free > 1.01 * pressure * c / M);
+  }
+}
+
 TEST_CASE("elasticity: reaction at the clamped face balances an arbitrary load",
           "[fem][elasticity]") {
   dealii::Triangulation<3> tria;
