@@ -6,8 +6,8 @@
 #include "coupling/app/dem_command.h"
 #include "coupling/app/mesh_command.h"
 #include "coupling/app/run_command.h"
-#include "coupling/output/engine_version.h"
 #include "coupling/parameters/case_parameters.h"
+#include "coupling/parameters/engine_version.h"
 
 #include <deal.II/base/mpi.h>
 

@@ -8,8 +8,8 @@
 // it always round-trips.
 #include "coupling/parameters/case_parameters.h"
 
-#include "coupling/output/engine_version.h"
 #include "coupling/parameters/case_consistency.h"
+#include "coupling/parameters/engine_version.h"
 #include "dem/tester/wear_tester.h"
 #include "meshes/atomic_file.h"
 
