@@ -24,7 +24,7 @@
 // about 14 %, P2 about 8 %; docs/fem.md says why); checked is that its change is a
 // discretisation error of the FEM: smaller with P2 than with P1. The per-face traction,
 // the two draws and the window-to-window noise are printed, not checked. [long]: 159 s on 2
-// idle cores (17 min on a host loaded by other builds).
+// idle cores (7 to 17 min on a host loaded by other builds).
 #include "coupling/parameters/case_parameters.h"
 #include "dem/tester/wear_tester.h"
 #include "fem/elasticity.h"
