@@ -47,8 +47,10 @@ struct ElasticityResult {
   /// [Pa] largest von Mises over all quadrature points: mesh-dependent, it grows without
   /// bound under refinement near a contact load (docs/theory.md)
   double max_von_mises_qp = 0;
-  double von_mises_p99 = 0;  ///< [Pa] volume-weighted 99th percentile over quadrature points
-  double von_mises_p999 = 0; ///< [Pa] volume-weighted 99.9th percentile
+  /// [Pa] volume-weighted 99th percentile of the ball-averaged von Mises over the cells (of
+  /// the quadrature points' own von Mises when the averaging radius is 0)
+  double von_mises_p99 = 0;
+  double von_mises_p999 = 0; ///< [Pa] the same, 99.9th percentile
   /// [Pa] largest von Mises of the stress averaged over a ball of radius averaging_radius,
   /// over the centres: the mesh vertices and the surface faces' centroids (0: no radius)
   double max_von_mises_ball = 0;
