@@ -68,12 +68,13 @@ fi
 
 plain=() convex=()
 for seed in "${seeds[@]}"; do plain+=("$root/plain-$seed"); convex+=("$root/convex-$seed"); done
-# --from 3: six revolutions need not reach steady state (two consecutive revolutions under
+# first=3: six revolutions need not reach steady state (two consecutive revolutions under
 # DEM/Steady threshold), and compare refuses a run without revolutions after it; the four
 # staged revolutions after the two settling ones are averaged instead
-build/wearsim compare --from 3 "${plain[@]}" -- "${convex[@]}" | tee "$root/compare.txt"
-/usr/bin/python3 coupling/output/plot_run.py --compare --from 3 "${plain[@]}" -- "${convex[@]}" \
+first=3
+build/wearsim compare --from $first "${plain[@]}" -- "${convex[@]}" | tee "$root/compare.txt"
+/usr/bin/python3 coupling/output/plot_run.py --compare --from $first "${plain[@]}" -- "${convex[@]}" \
   --output "$root"
 /usr/bin/python3 coupling/output/plot_run.py "$root/plain-${seeds[0]}" "$root/convex-${seeds[0]}"
-/usr/bin/python3 cases/quick/report.py "${update_readme[@]}" --seconds $(( $(date +%s) - start )) \
-  "$root" "${seeds[@]}"
+/usr/bin/python3 cases/quick/report.py "${update_readme[@]}" --from $first \
+  --seconds $(( $(date +%s) - start )) "$root" "${seeds[@]}"

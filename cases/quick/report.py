@@ -9,7 +9,7 @@ always those of one run of the default command, named by its engine version.
 
 Refuses runs made by different engine versions (parameters.prm, "# Engine version:").
 
-usage: report.py [--update-readme] [--seconds S] <root> <seed> [<seed> ...]
+usage: report.py [--update-readme] [--from K] [--seconds S] <root> <seed> [<seed> ...]
        (<root> holds plain-<seed>/, convex-<seed>/ and compare.txt)
 """
 import argparse
@@ -25,7 +25,6 @@ REPO = os.path.normpath(os.path.join(HERE, "../.."))
 sys.path.insert(0, os.path.join(REPO, "docs/results"))
 from dem_reference_report import read as read_summary  # noqa: E402
 
-FIRST = 3  # first revolution averaged, as the ensemble's `wearsim compare --from 3`
 # The full 150-degree tester at s = 4 as docs/results/README.md states it ("Wear-face mesh
 # size 0.5 mm at s = 4": plain 62.4, convex 35.0 mm^3 per revolution, 44 % less).
 FULL_TESTER = {"reduction_percent": 44.0, "where": "docs/results/README.md, full tester at s = 4"}
@@ -42,10 +41,10 @@ def engine_version(run):
              "engine versions were recorded); run the default case again")
 
 
-def per_run(run):
-    rows = [r for r in read_summary(run) if r["revolution"] >= FIRST]
+def per_run(run, first):
+    rows = [r for r in read_summary(run) if r["revolution"] >= first]
     if not rows:
-        sys.exit(f"report: {run}: no revolution from {FIRST} on")
+        sys.exit(f"report: {run}: no revolution from {first} on")
     mean = lambda key: statistics.mean(r[key] for r in rows)
     return {"wear": mean("wear_volume_m3") * 1e9, "speed": mean("bottom_speed_mean_m_s"),
             "force": mean("normal_force_mean_N")}
@@ -69,6 +68,8 @@ def main():
     ap.add_argument("root")
     ap.add_argument("seeds", nargs="+")
     ap.add_argument("--update-readme", action="store_true")
+    ap.add_argument("--from", dest="first", type=int, default=3,
+                    help="first revolution averaged, as given to wearsim compare (default 3)")
     ap.add_argument("--seconds", type=int, default=None, help="wall time of the runs")
     args = ap.parse_args()
 
@@ -98,13 +99,13 @@ def main():
                  "bottom speed [m/s] | reduction |")
     lines.append("|---|---|---|---|---|---|")
     for s in args.seeds:
-        p, c = per_run(runs[("plain", s)]), per_run(runs[("convex", s)])
+        p, c = per_run(runs[("plain", s)], args.first), per_run(runs[("convex", s)], args.first)
         lines.append(f"| {s} | {p['wear']:.2f} | {p['speed']:.3f} | {c['wear']:.2f} | "
                      f"{c['speed']:.3f} | {100 * (1 - c['wear'] / p['wear']):.0f} % |")
     lines.append(f"| mean +- 95 % interval | {a:.3g} +- {ha:.2g} | | {b:.3g} +- {hb:.2g} | | "
                  f"**{red:.1f} +- {hred:.1f} %** |")
     lines.append("")
-    lines.append(f"Wear of the wear face per revolution, revolutions {FIRST} to 6 (the staged "
+    lines.append(f"Wear of the wear face per revolution, revolutions {args.first} to 6 (the staged "
                  "ones, wear amplified 20x). The convex sample wears "
                  f"**{red:.0f} +- {hred:.0f} % less** than the plain one (95 % interval across "
                  f"the seeds, `wearsim compare`); the full tester gives {ref:.0f} % "

@@ -379,18 +379,22 @@ void System::replace_wall_mesh(int w, const meshes::SurfaceMesh& mesh) {
   rebuild();
 }
 
+void WearIntegrals::zero_faces(std::size_t n_faces) {
+  impulse.assign(n_faces, {});
+  normal_impulse.assign(n_faces, 0);
+  archard.assign(n_faces, 0);
+  sliding_work.assign(n_faces, 0);
+  contact_steps.assign(n_faces, 0);
+  normal_moment.assign(n_faces, {});
+  impulse_moment.assign(n_faces, {});
+}
+
 WearIntegrals System::wear_integrals(int w) const {
   if (!wall_wearing(w))
     throw std::invalid_argument("wall '" + wall_name(w) + "' is not a wearing wall");
   const std::size_t nf = wall_faces(w);
   WearIntegrals r;
-  r.impulse.assign(nf, {});
-  r.normal_impulse.assign(nf, 0);
-  r.archard.assign(nf, 0);
-  r.sliding_work.assign(nf, 0);
-  r.contact_steps.assign(nf, 0);
-  r.normal_moment.assign(nf, {});
-  r.impulse_moment.assign(nf, {});
+  r.zero_faces(nf);
   for (int t = 0; t < n_threads_; ++t) {
     const auto& a = wear_acc_[t][w];
     for (std::size_t f = 0; f < nf; ++f) {

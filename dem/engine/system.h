@@ -56,6 +56,8 @@ struct WearIntegrals {
   Vec3 total_impulse;        ///< [N s]
   Vec3 total_normal_moment;  ///< [N s m]
   Vec3 total_impulse_moment; ///< [N s m]
+  /// Every per-face field sized n_faces and zero; the totals are left as they are.
+  void zero_faces(std::size_t n_faces);
 };
 
 /// Everything that decides how a set-up System continues: the real particles in the engine's

@@ -150,13 +150,7 @@ dem::WearIntegrals summed_on(const dem::WearIntegrals& fine, const meshes::Surfa
                              const meshes::SurfaceLocator& coarse) {
   const std::size_t n = coarse_mesh.n_faces();
   dem::WearIntegrals c = fine;
-  c.impulse.assign(n, {});
-  c.normal_impulse.assign(n, 0);
-  c.archard.assign(n, 0);
-  c.sliding_work.assign(n, 0);
-  c.contact_steps.assign(n, 0);
-  c.normal_moment.assign(n, {});
-  c.impulse_moment.assign(n, {});
+  c.zero_faces(n);
   const auto centroid = meshes::face_centroids(fine_mesh);
   for (std::size_t f = 0; f < fine_mesh.n_faces(); ++f) {
     if (fine.contact_steps[f] == 0)

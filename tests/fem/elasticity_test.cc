@@ -42,6 +42,17 @@ wear::meshes::FaceField<Vec3> uniform_stress_forces(const wear::meshes::SurfaceM
   }
   return F;
 }
+
+// Face forces of a uniform traction t on the top (label 3): F_f = t A_f, zero elsewhere.
+wear::meshes::FaceField<Vec3> top_traction_forces(const wear::meshes::SurfaceMesh& s,
+                                                  const Vec3& t) {
+  wear::meshes::FaceField<Vec3> F("force", "N", wear::meshes::Extensivity::extensive, s);
+  const auto a = wear::meshes::face_areas(s);
+  for (std::size_t f = 0; f < s.n_faces(); ++f)
+    if (s.face_labels[f] == 3)
+      F[f] = a[f] * t;
+  return F;
+}
 } // namespace
 
 TEST_CASE("elasticity patch test: uniform strain is exact with P1 and P2", "[fem][elasticity]") {
@@ -104,11 +115,7 @@ TEST_CASE("elasticity: a sample pressed in its holder is in uniaxial strain, exa
     make_box(tria, 3, 2, 2, 0.03, 0.02, c);
     const auto surface = extract_boundary_surface(tria);
     BoundaryFaceMap map(tria, surface);
-    wear::meshes::FaceField<Vec3> F("force", "N", wear::meshes::Extensivity::extensive, surface);
-    const auto a = wear::meshes::face_areas(surface);
-    for (std::size_t f = 0; f < surface.n_faces(); ++f)
-      if (surface.face_labels[f] == 3)
-        F[f] = Vec3{0, 0, -pressure * a[f]};
+    const auto F = top_traction_forces(surface, Vec3{0, 0, -pressure});
     double u_free = 0;
     for (const bool held : {true, false}) {
       INFO("P" << degree << (held ? ", held sides" : ", free sides"));
@@ -172,11 +179,7 @@ TEST_CASE("elasticity: a cantilever fin under a tip load follows beam theory",
     make_box(tria, n, n, 10 * n, b, b, L);
     const auto surface = extract_boundary_surface(tria);
     BoundaryFaceMap map(tria, surface);
-    wear::meshes::FaceField<Vec3> F("force", "N", wear::meshes::Extensivity::extensive, surface);
-    const auto a = wear::meshes::face_areas(surface);
-    for (std::size_t f = 0; f < surface.n_faces(); ++f)
-      if (surface.face_labels[f] == 3)
-        F[f] = {P * a[f] / A, 0, 0};
+    const auto F = top_traction_forces(surface, Vec3{P / A, 0, 0});
     ElasticityParameters p;
     p.degree = 2;
     ElasticitySolver solver(tria, map, p);
