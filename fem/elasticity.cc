@@ -379,12 +379,10 @@ void ElasticitySolver::compute_measures(const StressSamples& samples, Elasticity
     r.von_mises_p999 = pct[1];
     return;
   }
-  // The ball average over cells (centroid, volume, mean stress): for P1 the stress is
-  // constant in a cell, for P2 the mean is the value at the centroid; a cell the sphere cuts
-  // counts by its centroid. A quarter of the samples for P1, fewer still for P2.
+  // The ball average with the samples grouped by cell: whole cells where the ball holds them,
+  // single quadrature points only where the sphere cuts a cell (stress_measures.cc).
   const auto per_cell = unsigned(samples.points.size() / tria_.n_active_cells());
-  const StressSamples cells = cell_means(samples, per_cell);
-  const BallAverage ball(cells, p_.averaging_radius);
+  const BallAverage ball(samples, p_.averaging_radius, per_cell);
   const auto& surface = faces_.surface();
   std::vector<Point<3>> centres;
   for (const auto& c : meshes::face_centroids(surface))
@@ -394,7 +392,7 @@ void ElasticitySolver::compute_measures(const StressSamples& samples, Elasticity
     if (used[v])
       centres.push_back(tria_.get_vertices()[v]);
   const std::size_t n_extremum_centres = centres.size();
-  centres.insert(centres.end(), cells.points.begin(), cells.points.end());
+  centres.insert(centres.end(), ball.cell_centroids().begin(), ball.cell_centroids().end());
   const auto value = ball.von_mises_at(centres);
   r.face_von_mises_ball.assign(value.begin(), value.begin() + long(surface.n_faces()));
   // The first largest value over the surface and the vertices, in the fixed order of the
@@ -408,7 +406,7 @@ void ElasticitySolver::compute_measures(const StressSamples& samples, Elasticity
   // points' own von Mises would count the singular stress at re-entrant edges and the clamp,
   // whose share of the top 0.1 % grows under refinement (docs/fem.md, mesh independence).
   const std::vector<double> cell_value(end, value.end());
-  const auto pct = volume_percentiles(cell_value, cells.weights, {0.99, 0.999});
+  const auto pct = volume_percentiles(cell_value, ball.cell_volumes(), {0.99, 0.999});
   r.von_mises_p99 = pct[0];
   r.von_mises_p999 = pct[1];
 }

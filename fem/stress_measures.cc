@@ -9,11 +9,14 @@
 // volume: a cell cut by the sphere contributes the points inside, an error of the order of
 // the cell size over R in the ball's volume, which the mean largely cancels. The tensor is
 // averaged before von Mises is taken (the mean stress the material of that ball carries; the
-// mean of von Mises would keep the peak's sharpness). Cost: the samples are sorted into bins
-// of edge R/4 with their sums; a centre visits the bins of its ball's bounding box (at most
-// 9^3 when the grid is not capped), adds the sums of those wholly inside the ball and tests
-// the samples of those its sphere cuts, about 1.5 times the samples in a shell of one bin's
-// diagonal around the sphere.
+// mean of von Mises would keep the peak's sharpness). Cost: the cells (groups of per_cell
+// points) are sorted into bins of edge R/4 by centroid, with the sums of each cell and bin and
+// the cells' extent e (farthest point from the centroid); a centre adds the sums of the bins
+// lying within R - e, the sums of the cells within R - e of it, and tests single points only
+// in the cells the sphere may cut (centroid within R +- e). Counting a cut cell whole or not by
+// its centroid instead would be cheaper, but the ball's volume then jumps by whole cells:
+// under a point load the largest average moved 6 % between h/R = 0.67 and 0.33 (P2) against
+// 4 % with the points.
 #include "fem/stress_measures.h"
 
 #include <algorithm>
@@ -29,29 +32,6 @@ using dealii::SymmetricTensor;
 double von_mises(const SymmetricTensor<2, 3>& stress) {
   const auto d = dealii::deviator(stress);
   return std::sqrt(1.5 * dealii::scalar_product(d, d));
-}
-
-StressSamples cell_means(const StressSamples& samples, unsigned int per_cell) {
-  const std::size_t n = samples.points.size();
-  if (per_cell == 0 || n % per_cell != 0 || samples.stress.size() != n ||
-      samples.weights.size() != n)
-    throw std::invalid_argument("cell_means: " + std::to_string(n) +
-                                " samples are not whole groups of " + std::to_string(per_cell));
-  StressSamples out;
-  for (std::size_t c = 0; c < n; c += per_cell) {
-    Point<3> x;
-    SymmetricTensor<2, 3> stress;
-    double w = 0;
-    for (std::size_t q = c; q < c + per_cell; ++q) {
-      x += samples.weights[q] * samples.points[q];
-      stress += samples.weights[q] * samples.stress[q];
-      w += samples.weights[q];
-    }
-    out.points.push_back(x / w);
-    out.stress.push_back(stress / w);
-    out.weights.push_back(w);
-  }
-  return out;
 }
 
 std::vector<double> volume_percentiles(const std::vector<double>& values,
@@ -85,27 +65,54 @@ std::vector<double> volume_percentiles(const std::vector<double>& values,
   return out;
 }
 
-BallAverage::BallAverage(const StressSamples& samples, double radius)
-    : radius_(radius), bin_(radius / 4) {
+BallAverage::BallAverage(const StressSamples& samples, double radius, unsigned int per_cell)
+    : radius_(radius), per_cell_(per_cell), bin_(radius / 4) {
   const std::size_t n = samples.points.size();
   if (!(radius > 0) || !std::isfinite(radius))
     throw std::invalid_argument("BallAverage: the radius must be positive [m], got " +
                                 std::to_string(radius));
   if (samples.stress.size() != n || samples.weights.size() != n)
     throw std::invalid_argument("BallAverage: points, stresses and weights differ in number");
+  if (per_cell == 0 || n % per_cell != 0)
+    throw std::invalid_argument("BallAverage: " + std::to_string(n) +
+                                " samples are not whole groups of " + std::to_string(per_cell));
+  const std::size_t n_cells = n / per_cell;
+  // Each cell's centroid, sums and extent (its farthest sample from the centroid), in the
+  // samples' order.
+  centroids_in_order_.resize(n_cells);
+  volumes_in_order_.resize(n_cells);
+  std::vector<SymmetricTensor<2, 3>> sum(n_cells);
+  std::vector<double> extent(n_cells, 0);
+  for (std::size_t c = 0; c < n_cells; ++c) {
+    Point<3> x;
+    double w = 0;
+    for (std::size_t q = c * per_cell; q < (c + 1) * per_cell; ++q) {
+      x += samples.weights[q] * samples.points[q];
+      sum[c] += samples.weights[q] * samples.stress[q];
+      w += samples.weights[q];
+    }
+    if (w > 0)
+      x /= w;
+    else
+      x = samples.points[c * per_cell];
+    for (std::size_t q = c * per_cell; q < (c + 1) * per_cell; ++q)
+      extent[c] = std::max(extent[c], samples.points[q].distance(x));
+    centroids_in_order_[c] = x;
+    volumes_in_order_[c] = w;
+  }
   Point<3> lo, hi;
   for (unsigned int d = 0; d < 3; ++d) {
-    lo[d] = n ? samples.points[0][d] : 0;
+    lo[d] = n_cells ? centroids_in_order_[0][d] : 0;
     hi[d] = lo[d];
   }
-  for (const auto& x : samples.points)
+  for (const auto& x : centroids_in_order_)
     for (unsigned int d = 0; d < 3; ++d) {
       lo[d] = std::min(lo[d], x[d]);
       hi[d] = std::max(hi[d], x[d]);
     }
   origin_ = lo;
-  // A radius far below the sample's size would ask for more bins than samples: the bins grow
-  // (a centre then scans more samples outside its ball, never misses one inside).
+  // A radius far below the sample's size would ask for more bins than cells: the bins grow
+  // (a centre then scans more cells outside its ball, never misses one inside).
   const auto count = [&] {
     double total = 1;
     for (unsigned int d = 0; d < 3; ++d) {
@@ -114,43 +121,59 @@ BallAverage::BallAverage(const StressSamples& samples, double radius)
     }
     return total;
   };
-  while (count() > 4.0 * double(n) + 64)
+  while (count() > 4.0 * double(n_cells) + 64)
     bin_ *= 1.25;
   const std::size_t n_total = std::size_t(n_bins_[0] * n_bins_[1] * n_bins_[2]);
-  std::vector<std::size_t> bin_of(n);
+  std::vector<std::size_t> bin_of(n_cells);
   bin_start_.assign(n_total + 1, 0);
-  for (std::size_t q = 0; q < n; ++q) {
+  for (std::size_t c = 0; c < n_cells; ++c) {
     std::array<long, 3> b{};
     for (unsigned int d = 0; d < 3; ++d)
-      b[d] = std::min(n_bins_[d] - 1, long((samples.points[q][d] - origin_[d]) / bin_));
-    bin_of[q] = std::size_t((b[2] * n_bins_[1] + b[1]) * n_bins_[0] + b[0]);
-    ++bin_start_[bin_of[q] + 1];
+      b[d] = std::min(n_bins_[d] - 1, long((centroids_in_order_[c][d] - origin_[d]) / bin_));
+    bin_of[c] = std::size_t((b[2] * n_bins_[1] + b[1]) * n_bins_[0] + b[0]);
+    ++bin_start_[bin_of[c] + 1];
   }
   std::partial_sum(bin_start_.begin(), bin_start_.end(), bin_start_.begin());
   std::vector<std::size_t> next(bin_start_.begin(), bin_start_.end() - 1);
+  cell_centroid_.resize(n_cells);
+  cell_extent_.resize(n_cells);
+  cell_weighted_.resize(n_cells);
+  cell_weight_.resize(n_cells);
   points_.resize(n);
   weighted_.resize(n);
   weights_.resize(n);
-  for (std::size_t q = 0; q < n; ++q) { // counting sort, stable: samples keep their order
-    const std::size_t k = next[bin_of[q]]++;
-    points_[k] = samples.points[q];
-    weighted_[k] = samples.weights[q] * samples.stress[q];
-    weights_[k] = samples.weights[q];
+  for (std::size_t c = 0; c < n_cells; ++c) { // counting sort, stable: cells keep their order
+    const std::size_t k = next[bin_of[c]]++;
+    cell_centroid_[k] = centroids_in_order_[c];
+    cell_extent_[k] = extent[c];
+    cell_weighted_[k] = sum[c];
+    cell_weight_[k] = volumes_in_order_[c];
+    for (std::size_t j = 0; j < per_cell; ++j) {
+      const std::size_t q = c * per_cell + j;
+      points_[k * per_cell + j] = samples.points[q];
+      weighted_[k * per_cell + j] = samples.weights[q] * samples.stress[q];
+      weights_[k * per_cell + j] = samples.weights[q];
+    }
   }
   bin_weighted_.resize(n_total);
   bin_weight_.assign(n_total, 0);
+  bin_extent_.assign(n_total, 0);
   for (std::size_t b = 0; b < n_total; ++b)
-    for (std::size_t q = bin_start_[b]; q < bin_start_[b + 1]; ++q) {
-      bin_weighted_[b] += weighted_[q];
-      bin_weight_[b] += weights_[q];
+    for (std::size_t c = bin_start_[b]; c < bin_start_[b + 1]; ++c) {
+      bin_weighted_[b] += cell_weighted_[c];
+      bin_weight_[b] += cell_weight_[c];
+      bin_extent_[b] = std::max(bin_extent_[b], cell_extent_[c]);
     }
+  max_extent_ = n_total ? *std::max_element(bin_extent_.begin(), bin_extent_.end()) : 0;
 }
 
 SymmetricTensor<2, 3> BallAverage::mean_stress(const Point<3>& centre) const {
+  // A cell whose centroid lies farther than R + extent has no sample in the ball.
+  const double reach = radius_ + max_extent_;
   std::array<long, 3> from{}, to{};
   for (unsigned int d = 0; d < 3; ++d) {
-    from[d] = std::max(0L, long(std::floor((centre[d] - radius_ - origin_[d]) / bin_)));
-    to[d] = std::min(n_bins_[d] - 1, long(std::floor((centre[d] + radius_ - origin_[d]) / bin_)));
+    from[d] = std::max(0L, long(std::floor((centre[d] - reach - origin_[d]) / bin_)));
+    to[d] = std::min(n_bins_[d] - 1, long(std::floor((centre[d] + reach - origin_[d]) / bin_)));
   }
   const double r2 = radius_ * radius_;
   // Squared distances from the centre to the nearest and farthest point of bin slab i along
@@ -161,27 +184,42 @@ SymmetricTensor<2, 3> BallAverage::mean_stress(const Point<3>& centre) const {
     const double far = std::max(std::abs(lo), std::abs(hi));
     return std::make_pair(near * near, far * far);
   };
+  const auto square = [](double x) { return x * x; };
   SymmetricTensor<2, 3> sum;
   double weight = 0;
+  const double reach2 = reach * reach;
   for (long k = from[2]; k <= to[2]; ++k) {
     const auto z = near_far(2, k);
     for (long j = from[1]; j <= to[1]; ++j) {
       const auto y = near_far(1, j);
+      if (y.first + z.first > reach2)
+        continue;
       for (long i = from[0]; i <= to[0]; ++i) {
         const auto x = near_far(0, i);
-        if (x.first + y.first + z.first > r2)
-          continue;
         const std::size_t b = std::size_t((k * n_bins_[1] + j) * n_bins_[0] + i);
-        if (x.second + y.second + z.second <= r2) { // the whole bin lies inside the ball
-          sum += bin_weighted_[b];
+        const double e = bin_extent_[b];
+        if (x.first + y.first + z.first > square(radius_ + e))
+          continue;
+        if (e <= radius_ && x.second + y.second + z.second <= square(radius_ - e)) {
+          sum += bin_weighted_[b]; // every sample of every cell of the bin lies inside
           weight += bin_weight_[b];
           continue;
         }
-        for (std::size_t q = bin_start_[b]; q < bin_start_[b + 1]; ++q)
-          if ((points_[q] - centre).norm_square() <= r2) {
-            sum += weighted_[q];
-            weight += weights_[q];
+        for (std::size_t c = bin_start_[b]; c < bin_start_[b + 1]; ++c) {
+          const double d2 = (cell_centroid_[c] - centre).norm_square(), ec = cell_extent_[c];
+          if (d2 > square(radius_ + ec))
+            continue;
+          if (ec <= radius_ && d2 <= square(radius_ - ec)) {
+            sum += cell_weighted_[c];
+            weight += cell_weight_[c];
+            continue;
           }
+          for (std::size_t q = c * per_cell_; q < (c + 1) * per_cell_; ++q)
+            if ((points_[q] - centre).norm_square() <= r2) {
+              sum += weighted_[q];
+              weight += weights_[q];
+            }
+        }
       }
     }
   }

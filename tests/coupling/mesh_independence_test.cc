@@ -21,8 +21,8 @@
 //
 // Checked, per window: the same contacts carry the same total force on both meshes (1e-9);
 // with the coarse-grained traction and P2 the largest ball average and the 99.9th percentile
-// change by less than 5 % from h to h/2. With the case's P1 they moved by 3 to 9 % and 5.5
-// to 7 % (printed): P1 on cells of 3 mm against w = 4.8 mm is not converged (docs/fem.md).
+// change by less than 5 % from h to h/2. With the case's P1 they moved by 8 to 10 % and 7
+// to 7.3 % (printed): P1 on cells of 3 mm against w = 4.8 mm is not converged (docs/fem.md).
 // (Percentiles of the quadrature points' own von Mises moved by 14 % with P1 and 8 % with P2: the
 // singular stress at the elements' feet and the clamp; docs/fem.md.) The per-face traction, the two
 // draws and the window-to-window noise are printed, not checked. [long]: 159 s on 2 idle cores (7
