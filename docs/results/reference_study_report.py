@@ -1,0 +1,522 @@
+#!/usr/bin/python3
+"""The reference study's report (issue 32), generated from its run folders.
+
+Usage: /usr/bin/python3 docs/results/reference_study_report.py [--runs DIR] [--out DIR]
+           [--calibration RUN]
+
+--runs         the study's run folders (default output/reference-study): plain, convex (the
+               study), plain-seed2/3 and convex-seed2/3 (seeds), plain-s4/s2 and
+               convex-s4/s2 (particle size), as cases/reference-study/run.sh writes them
+--out          where reference-study.md and its plots go (default docs/results)
+--calibration  the calibration run (default output/calibration-plain)
+
+Each run's summary.csv, history.h5 and surface/stage_*.h5 are read. The study pair is
+required; every other run missing is listed as not run. All runs present must name the same
+engine version (the second line of their parameters.prm), or the report is refused.
+
+"After steady state" counts from the first staged revolution (the schedule's dem-only
+revolutions bring the bed to steady flow on the unworn sample; the run's own steady judgement
+is printed beside). 56 h of the laboratory test are 2 revolutions, 184 h 6.57 (28 h per
+revolution, docs/wear-tester.md).
+"""
+import csv
+import math
+import os
+import sys
+
+import h5py
+import matplotlib
+import numpy as np
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+PROG = os.path.basename(sys.argv[0])
+HOURS_PER_REV = 28.0
+T56, T184 = 56.0 / HOURS_PER_REV, 184.0 / HOURS_PER_REV
+T_95 = {1: 12.706, 2: 4.303, 3: 3.182, 4: 2.776, 5: 2.571}  # Student t, two-sided 95 %
+
+
+def fail(message):
+    sys.exit(f"{PROG}: {message}")
+
+
+class Run:
+    """One run folder: its revolutions, stages, engine version and surfaces."""
+
+    def __init__(self, path):
+        self.path = path
+        self.name = os.path.basename(os.path.normpath(path))
+        with open(os.path.join(path, "parameters.prm")) as f:
+            lines = [f.readline() for _ in range(2)]
+        if not lines[1].startswith("# Engine version:"):
+            fail(f"'{path}/parameters.prm' names no engine version (a run older than the study)")
+        self.engine = lines[1].split(":", 1)[1].strip()
+        self.case = lines[0].split(" of ", 1)[-1].strip()
+        self.rows = self._csv("summary.csv")
+        self.stages = self._csv("stages.csv")
+        if not self.rows:
+            fail(f"'{path}/summary.csv' has no revolution yet")
+        self.params = self._parameters()
+        with h5py.File(os.path.join(path, "history.h5"), "r") as h:
+            rev = h["revolutions"]
+            self.element_labels = [int(v) for v in rev["element_labels"][:]] if "element_labels" in rev else []
+            self.element_wear = rev["element_wear_m3"][:] if "element_wear_m3" in rev else None
+            self.column_wear = rev["column_wear_m3"][:]
+        schemes = [r["scheme_name"] for r in self.stages]
+        self.first_staged_rev = next(
+            (int(r["first_revolution"]) for r in self.stages if r["scheme_name"] == "staged"), None)
+        self.n_staged = schemes.count("staged")
+        self.planned = self.params.get("Schedule", "?")
+
+    def _csv(self, name):
+        path = os.path.join(self.path, name)
+        if not os.path.isfile(path):
+            fail(f"'{path}' does not exist (is '{self.path}' a wearsim run folder?)")
+        with open(path) as f:
+            rows = list(csv.DictReader(f))
+        for r in rows:
+            for k, v in list(r.items()):
+                try:
+                    r[k] = float(v)
+                except (TypeError, ValueError):
+                    pass
+        return rows
+
+    def _parameters(self):
+        out = {}
+        with open(os.path.join(self.path, "parameters.prm")) as f:
+            for line in f:
+                s = line.split("#", 1)[0].strip()
+                if s.startswith("set ") and "=" in s:
+                    k, v = s[4:].split("=", 1)
+                    out.setdefault(k.strip(), v.strip())
+        return out
+
+    def column(self, name):
+        return np.array([r[name] for r in self.rows], dtype=float)
+
+    def after_steady(self):
+        """Revolutions from the first staged one: (index array into rows, revolutions 1..n)."""
+        if self.first_staged_rev is None:
+            return np.array([], dtype=int), np.array([])
+        idx = np.array([i for i, r in enumerate(self.rows) if r["revolution"] >= self.first_staged_rev])
+        return idx, np.arange(1, len(idx) + 1, dtype=float)
+
+    def cumulative(self):
+        """Cumulative wear-face volume [mm^3] after steady state, revolutions 1..n."""
+        idx, n = self.after_steady()
+        return n, np.cumsum(self.column("wear_volume_m3")[idx]) * 1e9
+
+    def steady_judgement(self):
+        s = int(self.rows[-1].get("steady_revolution", 0) or 0)
+        return s
+
+    def surface(self, stage):
+        with h5py.File(os.path.join(self.path, "surface", f"stage_{stage:04d}.h5"), "r") as h:
+            return (h["points"][:], h["triangles"][:].astype(int), h["cell/label"][:, 0].astype(int),
+                    h["cell/cumulative_removed_volume"][:, 0], h["cell/wear_depth"][:, 0])
+
+    def n_surfaces(self):
+        d = os.path.join(self.path, "surface")
+        return len([f for f in os.listdir(d) if f.startswith("stage_") and f.endswith(".h5")]) if os.path.isdir(d) else 0
+
+
+def fits(x, y):
+    """Least squares through the origin: y = a x and y = b x^2 + c x, with R^2."""
+    x, y = np.asarray(x, float), np.asarray(y, float)
+    out = {"a": float("nan"), "r2_lin": float("nan"), "b": float("nan"), "c": float("nan"), "r2_quad": float("nan")}
+    if len(x) < 1:
+        return out
+    ss = float(np.sum((y - y.mean()) ** 2)) if len(y) > 1 else 0.0
+    a = float(np.dot(x, y) / np.dot(x, x))
+    out["a"] = a
+    out["r2_lin"] = 1 - float(np.sum((y - a * x) ** 2)) / ss if ss > 0 else float("nan")
+    if len(x) >= 2:
+        A = np.column_stack([x * x, x])
+        (b, c), *_ = np.linalg.lstsq(A, y, rcond=None)
+        out["b"], out["c"] = float(b), float(c)
+        out["r2_quad"] = 1 - float(np.sum((y - b * x * x - c * x) ** 2)) / ss if ss > 0 else float("nan")
+    return out
+
+
+def at(n, cum, t):
+    """Cumulative wear at t revolutions after steady (linear between whole revolutions), or None
+    when the run has not got that far."""
+    if len(n) == 0 or t > n[-1] + 1e-9:
+        return None
+    return float(np.interp(t, np.concatenate([[0.0], n]), np.concatenate([[0.0], cum])))
+
+
+def interval(values):
+    """Mean and 95 % half-width (Student t) of a list."""
+    v = np.asarray(values, float)
+    if len(v) < 2:
+        return float(v.mean()), float("nan")
+    return float(v.mean()), T_95.get(len(v) - 1, 2.0) * float(v.std(ddof=1)) / math.sqrt(len(v))
+
+
+def fmt(x, digits=2):
+    return "n/a" if x is None or (isinstance(x, float) and math.isnan(x)) else f"{x:.{digits}f}"
+
+
+def load_runs(root, calibration):
+    names = ["plain", "convex", "plain-seed2", "plain-seed3", "convex-seed2", "convex-seed3",
+             "plain-s4", "convex-s4", "plain-s2", "convex-s2"]
+    runs, missing = {}, []
+    for n in names:
+        p = os.path.join(root, n)
+        if os.path.isfile(os.path.join(p, "summary.csv")):
+            runs[n] = Run(p)
+        else:
+            missing.append(n)
+    for n in ("plain", "convex"):
+        if n not in runs:
+            fail(f"the study run '{os.path.join(root, n)}' is missing (cases/reference-study/run.sh)")
+    cal = Run(calibration) if os.path.isfile(os.path.join(calibration, "summary.csv")) else None
+    engines = {r.engine for r in runs.values()} | ({cal.engine} if cal else set())
+    if len(engines) != 1:
+        listing = ", ".join(f"{n}: {r.engine}" for n, r in runs.items())
+        fail(f"the runs come from different engine versions ({listing}"
+             f"{', calibration: ' + cal.engine if cal else ''}); re-run them with one")
+    return runs, missing, cal
+
+
+def element_rows(run, upto):
+    """Per element cumulative wear [mm^3] over the first `upto` revolutions after steady, and the
+    base (wear face minus elements)."""
+    idx, _ = run.after_steady()
+    idx = idx[:upto]
+    total = float(np.sum(run.column("wear_volume_m3")[idx])) * 1e9
+    if run.element_wear is None or not run.element_labels:
+        return {}, total, total
+    per = np.sum(run.element_wear[idx, :], axis=0) * 1e9
+    elements = {f"C{lab}": float(v) for lab, v in zip(run.element_labels, per)}
+    return elements, total - float(per.sum()), total
+
+
+def plot_wear(runs, out):
+    fig, ax = plt.subplots(figsize=(6.4, 4.2))
+    for name, colour in (("plain", "tab:blue"), ("convex", "tab:orange")):
+        n, cum = runs[name].cumulative()
+        if len(n) == 0:
+            continue
+        f = fits(n, cum)
+        ax.plot(n, cum, "o", color=colour, label=f"{name}")
+        xx = np.linspace(0, n[-1], 50)
+        ax.plot(xx, f["a"] * xx, "-", color=colour, lw=0.8, label=f"{name}: linear fit")
+        if not math.isnan(f["b"]):
+            ax.plot(xx, f["b"] * xx * xx + f["c"] * xx, "--", color=colour, lw=0.8, label=f"{name}: quadratic fit")
+    for t, lab in ((T56, "56 h"), (T184, "184 h")):
+        ax.axvline(t, color="grey", lw=0.6, ls=":")
+        ax.text(t, ax.get_ylim()[1] * 0.97, lab, ha="right", va="top", fontsize=8, rotation=90)
+    ax.set_xlabel("revolutions after steady state (28 h each)")
+    ax.set_ylabel("cumulative wear of the wear face [mm$^3$]")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "reference_study_wear.png"), dpi=120)
+    plt.close(fig)
+
+
+def plot_columns_elements(runs, upto, out):
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4.0), gridspec_kw={"width_ratios": [1, 2.4]})
+    for k, (name, colour) in enumerate((("plain", "tab:blue"), ("convex", "tab:orange"))):
+        r = runs[name]
+        idx, _ = r.after_steady()
+        cols = np.sum(r.column_wear[idx[:upto], :], axis=0) * 1e9
+        a1.bar(np.arange(1, 6) + (k - 0.5) * 0.38, cols, width=0.38, color=colour, label=name)
+    a1.set_xlabel("column (1 meets the flow first)")
+    a1.set_ylabel(f"wear over {upto} revolutions [mm$^3$]")
+    a1.legend(fontsize=8)
+    elements, base, _ = element_rows(runs["convex"], upto)
+    names = list(elements)
+    a2.bar(range(len(names)), [elements[n] for n in names], color="tab:orange")
+    a2.set_xticks(range(len(names)))
+    a2.set_xticklabels(names, rotation=90, fontsize=8)
+    a2.set_ylabel(f"convex: wear over {upto} revolutions [mm$^3$]")
+    a2.set_title(f"elements (base: {base:.1f} mm$^3$)", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "reference_study_elements.png"), dpi=120)
+    plt.close(fig)
+
+
+def plot_map(run, upto, out):
+    """Per-element wear on the footprint: each element's faces coloured by its wear."""
+    pts, tri, lab, _, _ = run.surface(0)
+    elements, _, _ = element_rows(run, upto)
+    fig, ax = plt.subplots(figsize=(5.2, 5.6))
+    c = pts[tri].mean(axis=1)
+    vmax = max(elements.values()) if elements else 1
+    cmap = plt.get_cmap("viridis")
+    base = lab == 3
+    ax.scatter(c[base, 0] * 1e3, c[base, 1] * 1e3, s=0.3, color="0.85")
+    for name, v in elements.items():
+        m = lab == int(name[1:])
+        if not np.any(m):
+            continue
+        ax.scatter(c[m, 0] * 1e3, c[m, 1] * 1e3, s=1.5, color=cmap(v / vmax))
+        ax.text(c[m, 0].mean() * 1e3 + 4, c[m, 1].mean() * 1e3, f"{name}\n{v:.1f}", fontsize=6, va="center")
+    sm = plt.cm.ScalarMappable(cmap=cmap, norm=plt.Normalize(0, vmax))
+    fig.colorbar(sm, ax=ax, label=f"element wear over {upto} revolutions [mm$^3$]")
+    ax.set_xlabel("radial position [mm] (inner radius left)")
+    ax.set_ylabel("along the flow [mm] (the flow comes from below)")
+    ax.set_aspect("equal")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "reference_study_map.png"), dpi=130)
+    plt.close(fig)
+
+
+def section(pts, tri, lab, x0, field=None):
+    """Profile of the wear face (base top and elements) cut by the plane x = x0: the crossing
+    points (y, z) sorted along y, and the per-face `field` of the face crossed there."""
+    keep = np.nonzero((lab == 3) | (lab >= 11))[0]
+    p = pts[tri[keep]]
+    xs = p[:, :, 0] - x0
+    ys, zs, fs = [], [], []
+    for t in np.nonzero((xs.min(axis=1) <= 0) & (xs.max(axis=1) >= 0))[0]:
+        for a, b in ((0, 1), (1, 2), (2, 0)):
+            da, db = xs[t, a], xs[t, b]
+            if (da <= 0 <= db or db <= 0 <= da) and da != db:
+                s = da / (da - db)
+                q = p[t, a] + s * (p[t, b] - p[t, a])
+                ys.append(q[1])
+                zs.append(q[2])
+                fs.append(field[keep[t]] if field is not None else 0.0)
+    order = np.argsort(ys, kind="stable")
+    return np.array(ys)[order], np.array(zs)[order], np.array(fs)[order]
+
+
+def plot_profiles(run, out):
+    """Worn profiles along the flow through the middle elements (C13, C33, C53) and the
+    inner ones (C11, ...): first and last surface, and the depth between them."""
+    n = run.n_surfaces()
+    if n < 2:
+        return False
+    first, last = run.surface(0), run.surface(n - 1)
+    c0 = first[0][first[1]].mean(axis=1)
+    lines = []
+    for lab in (13, 11):
+        m = first[2] == lab
+        if np.any(m):
+            lines.append((f"through C{lab}", float(c0[m, 0].mean())))
+    fig, axes = plt.subplots(len(lines), 1, figsize=(8, 2.6 * len(lines)), squeeze=False)
+    for ax, (title, x0) in zip(axes[:, 0], lines):
+        y0, z0, _ = section(first[0], first[1], first[2], x0)
+        y1, z1, d1 = section(last[0], last[1], last[2], x0, last[4])
+        ax.plot(y0 * 1e3, z0 * 1e3, color="0.5", lw=0.8, label="unworn")
+        ax.plot(y1 * 1e3, z1 * 1e3, color="tab:red", lw=0.8, label=f"after stage {n - 1}")
+        ax.set_ylabel("z [mm]")
+        ax.set_title(f"{title} (x = {x0 * 1e3:.1f} mm)", fontsize=9)
+        ax2 = ax.twinx()
+        ax2.plot(y1 * 1e3, d1 * 1e6, color="tab:blue", lw=0.6)
+        ax2.set_ylabel("worn depth (normal) [um]", color="tab:blue")
+        ax.legend(fontsize=7, loc="upper left")
+    axes[-1, 0].set_xlabel("along the flow [mm]")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "reference_study_profiles.png"), dpi=120)
+    plt.close(fig)
+    return True
+
+
+def plot_flow(runs, out):
+    fig, axes = plt.subplots(1, 3, figsize=(12, 3.6))
+    for name, colour in (("plain", "tab:blue"), ("convex", "tab:orange")):
+        r = runs[name]
+        rev = r.column("revolution")
+        for ax, col, lab in zip(axes, ("normal_force_mean_N", "bottom_speed_mean_m_s", "bottom_spin_mean_rad_s"),
+                                ("mean normal force on the wear face [N]", "bottom-layer speed [m/s]",
+                                 "bottom-layer spin [rad/s]")):
+            ax.plot(rev, r.column(col), "o-", color=colour, ms=3, label=name)
+            ax.set_ylabel(lab)
+            ax.set_xlabel("revolution")
+            if r.first_staged_rev:
+                ax.axvline(r.first_staged_rev - 0.5, color=colour, lw=0.5, ls=":")
+    axes[0].legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "reference_study_flow.png"), dpi=120)
+    plt.close(fig)
+
+
+def report(runs, missing, cal, out):
+    P, C = runs["plain"], runs["convex"]
+    w = []
+    w.append("# The reference study: plain and convex samples in the holder at s = 3\n")
+    w.append("Generated by `/usr/bin/python3 docs/results/reference_study_report.py` from the run "
+             "folders; do not edit by hand.\n")
+    w.append(f"**Engine version** {P.engine} (every run below). **Case files** "
+             "`cases/reference-study/*.prm`, the calibrated coefficient from "
+             "`cases/reference-study/calibration.prm`.\n")
+    w.append("| run | case | schedule | revolutions done | staged stages done |")
+    w.append("|---|---|---|---|---|")
+    for n, r in runs.items():
+        w.append(f"| {n} | `{r.case}` | {r.planned} | {int(r.rows[-1]['revolution'])} | {r.n_staged} |")
+    if cal:
+        w.append(f"| calibration | `{cal.case}` | `wearsim dem` to steady + 2 | {int(cal.rows[-1]['revolution'])} | - |")
+    w.append("")
+    if missing or not cal:
+        w.append("**Not run** with this engine: " + ", ".join(missing + ([] if cal else ["calibration"])) + ".\n")
+
+    # Calibration
+    if cal:
+        alpha = P.params.get("Archard coefficient", "?")
+        steady = cal.steady_judgement()
+        vols = [r["wear_volume_m3"] * 1e9 for r in cal.rows if r["revolution"] > steady] if steady else []
+        w.append("## Calibration\n")
+        w.append(f"Plain sample in the holder, s = 3, `wearsim dem` (`{cal.case}`): steady from revolution "
+                 f"{steady}; wear of the wear face in the revolutions after it "
+                 f"{', '.join(f'{v:.2f}' for v in vols)} mm^3 (mean {np.mean(vols) if vols else float('nan'):.2f}"
+                 f" at the starting alpha {cal.params.get('Archard coefficient', '?')} 1/Pa). The laboratory's "
+                 f"145.16 mm^3 over 2 revolutions (56 h) calibrates alpha = **{alpha} 1/Pa**, used by every "
+                 "run below.\n")
+
+    # Cumulative wear and fits
+    w.append("## Cumulative wear after steady state\n")
+    w.append("![cumulative wear](reference_study_wear.png)\n")
+    n_p, cum_p = P.cumulative()
+    n_c, cum_c = C.cumulative()
+    for name, r in (("plain", P), ("convex", C)):
+        s = r.steady_judgement()
+        w.append(f"- {name}: first staged revolution {r.first_staged_rev} "
+                 f"(the run judged its flow steady {'from revolution ' + str(s) if s else 'at no revolution'}).")
+    w.append("")
+    w.append("| revolutions after steady | hours | plain [mm^3] | convex [mm^3] | convex / plain |")
+    w.append("|---|---|---|---|---|")
+    for k in range(max(len(n_p), len(n_c))):
+        p = cum_p[k] if k < len(cum_p) else None
+        c = cum_c[k] if k < len(cum_c) else None
+        ratio = c / p if p and c is not None else None
+        w.append(f"| {k + 1} | {28 * (k + 1)} | {fmt(p)} | {fmt(c)} | {fmt(ratio, 3)} |")
+    w.append("")
+    w.append("Fits through the origin, V in mm^3, n in revolutions after steady state:\n")
+    w.append("| sample | linear V = a n: a | R^2 | quadratic V = b n^2 + c n: b | c | R^2 |")
+    w.append("|---|---|---|---|---|---|")
+    for name, (n, cum) in (("plain", (n_p, cum_p)), ("convex", (n_c, cum_c))):
+        f = fits(n, cum)
+        w.append(f"| {name} | {fmt(f['a'], 3)} | {fmt(f['r2_lin'], 5)} | {fmt(f['b'], 4)} | {fmt(f['c'], 3)} | {fmt(f['r2_quad'], 5)} |")
+    w.append("")
+    w.append("| | plain [mm^3] | convex [mm^3] | convex / plain | reduction |")
+    w.append("|---|---|---|---|---|")
+    for t, lab in ((T56, "56 h (2 revolutions)"), (T184, "184 h (6.57 revolutions)")):
+        p, c = at(n_p, cum_p, t), at(n_c, cum_c, t)
+        if p is None or c is None:
+            w.append(f"| {lab} | {fmt(p)} | {fmt(c)} | not reached | |")
+        else:
+            w.append(f"| {lab} | {p:.2f} | {c:.2f} | {c / p:.3f} | {100 * (1 - c / p):.1f} % |")
+    w.append("")
+
+    # Columns and elements
+    upto = int(min(len(n_p), len(n_c)))
+    w.append(f"## Where the wear goes (over the {upto} revolutions after steady state both runs have)\n")
+    w.append("![columns and elements](reference_study_elements.png)\n")
+    w.append("| column | plain [mm^3] | convex [mm^3] |")
+    w.append("|---|---|---|")
+    idx_p, _ = P.after_steady()
+    idx_c, _ = C.after_steady()
+    cp = np.sum(P.column_wear[idx_p[:upto], :], axis=0) * 1e9
+    cc = np.sum(C.column_wear[idx_c[:upto], :], axis=0) * 1e9
+    for j in range(5):
+        w.append(f"| {j + 1} | {cp[j]:.2f} | {cc[j]:.2f} |")
+    w.append("")
+    elements, base, total = element_rows(C, upto)
+    if elements:
+        share = sum(elements.values()) / total if total else float("nan")
+        w.append(f"Convex sample: the 23 elements take **{100 * share:.1f} %** of its wear "
+                 f"({sum(elements.values()):.2f} of {total:.2f} mm^3), the base {base:.2f} mm^3.\n")
+        w.append("| element | wear [mm^3] | element | wear [mm^3] | element | wear [mm^3] |")
+        w.append("|---|---|---|---|---|---|")
+        names = list(elements)
+        for k in range(0, len(names), 3):
+            cells = []
+            for n in names[k:k + 3]:
+                cells += [n, f"{elements[n]:.2f}"]
+            cells += [""] * (6 - len(cells))
+            w.append("| " + " | ".join(cells) + " |")
+        w.append("")
+        trio = [elements.get(n) for n in ("C11", "C13", "C15")]
+        if all(v is not None for v in trio):
+            w.append(f"Leading column, inner to outer: C11 {trio[0]:.2f}, C13 {trio[1]:.2f}, C15 {trio[2]:.2f} mm^3 "
+                     f"(C15 / C11 = {trio[2] / trio[0]:.2f}; the outer radius moves faster).\n")
+        w.append("![per-element wear on the footprint](reference_study_map.png)\n")
+    if plot_profiles(C, out):
+        w.append("![worn profiles](reference_study_profiles.png)\n")
+
+    # Flow
+    w.append("## Loads and flow per revolution\n")
+    w.append("![force, speed, spin](reference_study_flow.png)\n")
+    w.append("| sample | window | mean normal force [N] | bottom-layer speed [m/s] | bottom-layer spin [rad/s] | C_v speed | C_v bed height | C_v wear rate |")
+    w.append("|---|---|---|---|---|---|---|---|")
+    for name, r in (("plain", P), ("convex", C)):
+        idx, _ = r.after_steady()
+        if len(idx) == 0:
+            continue
+        rows = [r.rows[i] for i in idx]
+        mean = lambda k: float(np.mean([x[k] for x in rows]))  # noqa: E731
+        s = r.steady_judgement()
+        cv = r.rows[s - 1] if s else r.rows[idx[0] - 1]
+        w.append(f"| {name} | revolutions {int(rows[0]['revolution'])}-{int(rows[-1]['revolution'])} | "
+                 f"{mean('normal_force_mean_N'):.2f} | {mean('bottom_speed_mean_m_s'):.3f} | "
+                 f"{mean('bottom_spin_mean_rad_s'):.2f} | {cv['cv_speed']:.3f} | {cv['cv_bed_height']:.3f} | "
+                 f"{cv['cv_wear_rate']:.3f} |")
+    w.append("\nC_v: of the steady window the run judged itself by (revolution of its steady judgement).\n")
+
+    # Seeds
+    w.append("## Spread over insertion seeds (2 revolutions after steady state, 56 h)\n")
+    seeds = {"plain": [P] + [runs[n] for n in ("plain-seed2", "plain-seed3") if n in runs],
+             "convex": [C] + [runs[n] for n in ("convex-seed2", "convex-seed3") if n in runs]}
+    vals = {}
+    for k, rs in seeds.items():
+        vals[k] = [(r.params.get("Seed", "?"), at(*r.cumulative(), T56)) for r in rs]
+    w.append("| sample | " + " | ".join(f"seed {s}" for s, _ in vals["plain"]) + " | mean +- 95 % |")
+    w.append("|---|" + "---|" * (len(vals["plain"]) + 1))
+    for k in ("plain", "convex"):
+        got = [v for _, v in vals[k] if v is not None]
+        m, h = interval(got) if got else (float("nan"), float("nan"))
+        w.append(f"| {k} | " + " | ".join(fmt(v) for _, v in vals[k]) + f" | {fmt(m)} +- {fmt(h)} |")
+    pairs = [(p, c) for (_, p), (_, c) in zip(vals["plain"], vals["convex"]) if p and c]
+    if pairs:
+        m, h = interval([c / p for p, c in pairs])
+        w.append(f"\nconvex / plain per seed: {', '.join(f'{c / p:.3f}' for p, c in pairs)}; mean {m:.3f} +- {fmt(h, 3)} "
+                 f"(95 %, {len(pairs)} seeds).\n")
+
+    # Particle size
+    w.append("## Trend with particle size: convex / plain at 56 h\n")
+    w.append("| s | plain [mm^3] | convex [mm^3] | convex / plain |")
+    w.append("|---|---|---|---|")
+    for s, (pn, cn) in (("4", ("plain-s4", "convex-s4")), ("3", ("plain", "convex")), ("2", ("plain-s2", "convex-s2"))):
+        if pn in runs and cn in runs:
+            p, c = at(*runs[pn].cumulative(), T56), at(*runs[cn].cumulative(), T56)
+            w.append(f"| {s} | {fmt(p)} | {fmt(c)} | {fmt(c / p, 3) if p and c else 'not reached'} |")
+        else:
+            w.append(f"| {s} | not run | not run | |")
+    w.append("")
+    return "\n".join(w)
+
+
+def main(argv):
+    args = {"--runs": "output/reference-study", "--out": "docs/results", "--calibration": "output/calibration-plain"}
+    k = 0
+    while k < len(argv):
+        if argv[k] in args and k + 1 < len(argv):
+            args[argv[k]] = argv[k + 1]
+            k += 2
+        else:
+            fail(f"unexpected argument '{argv[k]}'; {__doc__.splitlines()[2]}")
+    runs, missing, cal = load_runs(args["--runs"], args["--calibration"])
+    out = args["--out"]
+    os.makedirs(out, exist_ok=True)
+    plot_wear(runs, out)
+    n = int(min(len(runs["plain"].after_steady()[1]), len(runs["convex"].after_steady()[1])))
+    if n > 0:
+        plot_columns_elements(runs, n, out)
+        plot_map(runs["convex"], n, out)
+    plot_flow(runs, out)
+    text = report(runs, missing, cal, out)
+    tmp = os.path.join(out, ".reference-study.md.tmp")
+    with open(tmp, "w") as f:
+        f.write(text)
+    os.replace(tmp, os.path.join(out, "reference-study.md"))
+    print(f"{PROG}: {os.path.join(out, 'reference-study.md')} from {len(runs)} runs, engine {runs['plain'].engine}")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])
