@@ -34,6 +34,12 @@ TEST_CASE("reference case files parse and validate", "[coupling][parameters]") {
 TEST_CASE("every case file under cases/ parses, validates, passes the consistency checks "
           "without a warning and writes its own folder",
           "[coupling][parameters]") {
+  // Case files are run from the repository root, where their INCLUDE paths start.
+  struct InDirectory {
+    std::filesystem::path before = std::filesystem::current_path();
+    explicit InDirectory(const std::filesystem::path& p) { std::filesystem::current_path(p); }
+    ~InDirectory() { std::filesystem::current_path(before); }
+  } in_root(WEAR_SOURCE_DIR);
   std::set<std::string> directories;
   int n_files = 0;
   for (const auto& e : std::filesystem::recursive_directory_iterator(WEAR_SOURCE_DIR "/cases")) {
