@@ -162,7 +162,7 @@ def fmt(x, digits=2):
 
 def load_runs(root, calibration):
     names = ["plain", "convex", "plain-seed2", "plain-seed3", "convex-seed2", "convex-seed3",
-             "plain-s4", "convex-s4", "plain-s2", "convex-s2"]
+             "plain-s4", "convex-s4", "plain-s2", "convex-s2", "plain-reference", "convex-reference"]
     runs, missing = {}, []
     for n in names:
         p = os.path.join(root, n)
@@ -477,6 +477,30 @@ def report(runs, missing, cal, out):
         m, h = interval([c / p for p, c in pairs])
         w.append(f"\nconvex / plain per seed: {', '.join(f'{c / p:.3f}' for p, c in pairs)}; mean {m:.3f} +- {fmt(h, 3)} "
                  f"(95 %, {len(pairs)} seeds).\n")
+
+    # The node-moving method
+    w.append("## The node-moving method on the same cases\n")
+    w.append("The `reference` scheme moves the sample's surface nodes inside the DEM from the first "
+             "revolution and stops at the first distorted face; its wear is counted from revolution "
+             f"{P.first_staged_rev or 4}, as the staged run's.\n")
+    w.append("| sample | revolutions run | how it ended | cumulative wear from that revolution [mm^3] | staged, same revolutions [mm^3] |")
+    w.append("|---|---|---|---|---|")
+    for name, staged in (("plain", P), ("convex", C)):
+        key = f"{name}-reference"
+        if key not in runs:
+            w.append(f"| {name} | not run | | | |")
+            continue
+        r = runs[key]
+        start = staged.first_staged_rev or 4
+        done = int(r.rows[-1]["revolution"])
+        ended = next((str(x.get("distortion", "")) for x in r.stages if str(x.get("distortion", "")).strip()), "")
+        ended = f"distorted: {ended}" if ended else ("completed" if done >= 20 else "stopped (session end)")
+        ref = sum(x["wear_volume_m3"] for x in r.rows if x["revolution"] >= start) * 1e9
+        n_ref = sum(1 for x in r.rows if x["revolution"] >= start)
+        _, cum = staged.cumulative()
+        same = fmt(cum[n_ref - 1]) if 0 < n_ref <= len(cum) else "n/a"
+        w.append(f"| {name} | {done} | {ended} | {ref:.2f} ({n_ref} revolutions) | {same} |")
+    w.append("")
 
     # Particle size
     w.append("## Trend with particle size: convex / plain at 56 h\n")
