@@ -33,6 +33,27 @@ struct CadSurface {
   double solid_volume = 0;           ///< [m^3] their volume by the CAD kernel (0 for STL)
 };
 
+/// The walls a scene builds without a file, in metres. Each is meshed by the CAD path below;
+/// its faces are labelled by gmsh's surface tags (a cylinder's side 1; with caps, its end
+/// discs 2 and 3).
+enum class PrimitiveKind { plane, disc, cylinder, cone, box };
+
+struct Primitive {
+  PrimitiveKind kind = PrimitiveKind::plane;
+  Vec3 origin;           ///< [m] plane: a corner; disc: centre; cylinder, cone: base centre; box:
+                         ///< lower corner
+  Vec3 edge_u, edge_v;   ///< [m] plane: its two edges from the corner (a parallelogram)
+  Vec3 axis;             ///< [m] disc: normal (any length); cylinder, cone: base to top; box: size
+  double radius = 0;     ///< [m] disc, cylinder; cone at its base
+  double radius_top = 0; ///< [m] cone at its top (0: a pointed cone)
+  bool caps = false;     ///< cylinder, cone: with the end discs (a closed solid)
+};
+
+/// The primitive meshed with triangles of at most `mesh_size` [m]. Throws
+/// std::invalid_argument naming `what` and the dimension that is wrong (a radius not
+/// positive, a zero axis or edge, parallel plane edges, a box with a side not positive).
+CadSurface primitive_surface(const Primitive& p, double mesh_size, const std::string& what);
+
 /// Reads `path` by its extension (.step/.stp, .iges/.igs, .brep, .stl; any case) and scales it
 /// to metres. Throws std::runtime_error naming the file when it is missing or unreadable,
 /// its extension unknown, or it holds no surface; std::invalid_argument when a CAD file is

@@ -121,3 +121,75 @@ TEST_CASE("CAD import: bad input is refused naming the file", "[meshes][cad]") {
                     Catch::Contains("Scene/Wall/Unit: unknown length unit 'inch'"));
   CHECK(metres_per(parse_length_unit("mm", "u")) == 1e-3);
 }
+
+TEST_CASE("CAD import: primitives have their analytic areas", "[meshes][cad]") {
+  const double size = 0.005;
+  Primitive plane;
+  plane.origin = {0.1, 0, 0.2};
+  plane.edge_u = {0.3, 0, 0};
+  plane.edge_v = {0, 0.1, 0.1}; // a tilted parallelogram, 0.3 x 0.1 sqrt(2)
+  const auto p = primitive_surface(plane, size, "Scene/plane");
+  CHECK(total_area(p.mesh) == Approx(0.3 * 0.1 * std::sqrt(2.0)).epsilon(1e-12));
+  CHECK(check_closed(p.mesh).n_boundary_edges > 0);
+
+  Primitive disc;
+  disc.kind = PrimitiveKind::disc;
+  disc.origin = {0, 0, 0.5};
+  disc.axis = {1, 1, 0};
+  disc.radius = 0.1;
+  const auto d = primitive_surface(disc, size, "Scene/disc");
+  const double disc_error = total_area(d.mesh) / (M_PI * 0.01) - 1;
+  INFO("disc: area " << disc_error << " relative");
+  CHECK(std::abs(disc_error) < 2e-3);
+  // Turned onto its normal: every vertex in the plane through the centre normal to (1, 1, 0).
+  double off_plane = 0;
+  for (const auto& v : d.mesh.vertices)
+    off_plane = std::max(off_plane, std::abs(dot(v - disc.origin, Vec3{1, 1, 0}) / std::sqrt(2.0)));
+  CHECK(off_plane < 1e-12);
+
+  Primitive tube;
+  tube.kind = PrimitiveKind::cylinder;
+  tube.origin = {0, 0, 0};
+  tube.axis = {0, 0, 0.2};
+  tube.radius = 0.1;
+  const auto t = primitive_surface(tube, size, "Scene/tube");
+  CHECK(t.surface_labels.size() == 1); // the side only
+  const double tube_error = total_area(t.mesh) / (2 * M_PI * 0.1 * 0.2) - 1;
+  INFO("open cylinder: area " << tube_error << " relative");
+  CHECK(std::abs(tube_error) < 2e-3);
+  CHECK(!check_closed(t.mesh).closed());
+  tube.caps = true;
+  const auto closed = primitive_surface(tube, size, "Scene/tube");
+  CHECK(closed.surface_labels.size() == 3);
+  CHECK(check_closed(closed.mesh).closed());
+  CHECK(enclosed_volume(closed.mesh) == Approx(M_PI * 0.01 * 0.2).epsilon(2e-3));
+
+  Primitive cone;
+  cone.kind = PrimitiveKind::cone;
+  cone.axis = {0, 0, 0.1};
+  cone.radius = 0.1;
+  cone.radius_top = 0.05;
+  const auto c = primitive_surface(cone, size, "Scene/cone");
+  const double slant = std::sqrt(0.1 * 0.1 + 0.05 * 0.05);
+  CHECK(total_area(c.mesh) == Approx(M_PI * (0.1 + 0.05) * slant).epsilon(2e-3));
+
+  Primitive box;
+  box.kind = PrimitiveKind::box;
+  box.origin = {-0.1, -0.1, 0};
+  box.axis = {0.2, 0.3, 0.4};
+  const auto b = primitive_surface(box, 0.05, "Scene/box");
+  CHECK(enclosed_volume(b.mesh) == Approx(0.024).epsilon(1e-12));
+  CHECK(check_closed(b.mesh).closed());
+
+  // Bad dimensions are named.
+  disc.radius = -1;
+  CHECK_THROWS_WITH(primitive_surface(disc, size, "Scene/disc"),
+                    Catch::Contains("Scene/disc: the radius must be positive"));
+  plane.edge_v = 2 * plane.edge_u;
+  CHECK_THROWS_WITH(primitive_surface(plane, size, "Scene/plane"),
+                    Catch::Contains("edges are parallel"));
+  box.axis.y = 0;
+  CHECK_THROWS_WITH(primitive_surface(box, size, "Scene/box"), Catch::Contains("y size"));
+  cone.radius_top = 0.1;
+  CHECK_THROWS_WITH(primitive_surface(cone, size, "Scene/cone"), Catch::Contains("top radius"));
+}
