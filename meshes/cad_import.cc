@@ -100,12 +100,27 @@ CadSurface read_stl_surface(const std::string& path, double scale) {
 
 /// The current gmsh model's surfaces meshed at `mesh_size`, one physical group (= label) per
 /// surface, with the kernel's areas and volumes; `what` names the source in errors.
-CadSurface mesh_model(const std::string& what, double mesh_size) {
+CadSurface mesh_model(const std::string& what, double mesh_size,
+                      const std::optional<BoundingBox>& bounds) {
   gmsh::vectorpair surfaces, solids;
   gmsh::model::getEntities(surfaces, 2);
   gmsh::model::getEntities(solids, 3);
   if (surfaces.empty())
     throw std::runtime_error(what + " holds no surface");
+  if (bounds) {
+    double x0, y0, z0, x1, y1, z1;
+    gmsh::model::getBoundingBox(-1, -1, x0, y0, z0, x1, y1, z1);
+    const BoundingBox& b = *bounds;
+    if (x0 < b.min.x || y0 < b.min.y || z0 < b.min.z || x1 > b.max.x || y1 > b.max.y ||
+        z1 > b.max.z) {
+      char text[512];
+      std::snprintf(text, sizeof text,
+                    " spans (%.4g, %.4g, %.4g) to (%.4g, %.4g, %.4g) m, outside the domain "
+                    "(%.4g, %.4g, %.4g) to (%.4g, %.4g, %.4g) m; is the unit right?",
+                    x0, y0, z0, x1, y1, z1, b.min.x, b.min.y, b.min.z, b.max.x, b.max.y, b.max.z);
+      throw std::invalid_argument(what + text);
+    }
+  }
   CadSurface out;
   std::sort(surfaces.begin(), surfaces.end());
   for (const auto& [dim, tag] : surfaces) {
@@ -121,6 +136,18 @@ CadSurface mesh_model(const std::string& what, double mesh_size) {
     out.solid_volume += volume;
   }
   out.n_solids = solids.size();
+  double total = 0;
+  for (const double a : out.surface_areas)
+    total += a;
+  const double estimate = total / (std::sqrt(3.0) / 4 * mesh_size * mesh_size);
+  if (estimate > max_cad_triangles) {
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  ": %.4g m^2 at %.4g m would make about %.3g triangles (at most %.3g); a "
+                  "larger mesh size, or is the unit right?",
+                  total, mesh_size, estimate, max_cad_triangles);
+    throw std::invalid_argument(what + text);
+  }
   gmsh::option::setNumber("Mesh.MeshSizeMin", mesh_size / 4);
   gmsh::option::setNumber("Mesh.MeshSizeMax", mesh_size);
   gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 20);
@@ -137,7 +164,8 @@ CadSurface mesh_model(const std::string& what, double mesh_size) {
   return out;
 }
 
-CadSurface read_cad(const std::string& path, double scale, double mesh_size) {
+CadSurface read_cad(const std::string& path, double scale, double mesh_size,
+                    const std::optional<BoundingBox>& bounds) {
   GmshSession session("cad");
   gmsh::vectorpair imported;
   try {
@@ -151,7 +179,7 @@ CadSurface read_cad(const std::string& path, double scale, double mesh_size) {
   if (scale != 1)
     gmsh::model::occ::dilate(all, 0, 0, 0, scale, scale, scale);
   gmsh::model::occ::synchronize();
-  return mesh_model("CAD file '" + path + "'", mesh_size);
+  return mesh_model("CAD file '" + path + "'", mesh_size, bounds);
 }
 
 /// Rotates the entities from +z onto the direction n (unit), about the point c.
@@ -175,7 +203,8 @@ void require_positive(double v, const std::string& what, const std::string& name
 
 } // namespace
 
-CadSurface primitive_surface(const Primitive& p, double mesh_size, const std::string& what) {
+CadSurface primitive_surface(const Primitive& p, double mesh_size, const std::string& what,
+                             const std::optional<BoundingBox>& bounds) {
   require_positive(mesh_size, what, "the triangle size");
   GmshSession session("primitive");
   const Vec3& o = p.origin;
@@ -239,7 +268,7 @@ CadSurface primitive_surface(const Primitive& p, double mesh_size, const std::st
     break;
   }
   gmsh::model::occ::synchronize();
-  return mesh_model(what, mesh_size);
+  return mesh_model(what, mesh_size, bounds);
 }
 
 CadSurface read_cad_surface(const std::string& path, const CadImportOptions& options) {
@@ -258,7 +287,7 @@ CadSurface read_cad_surface(const std::string& path, const CadImportOptions& opt
     throw std::invalid_argument("CAD file '" + path +
                                 "': the triangle size must be positive [m], got " +
                                 std::to_string(options.mesh_size));
-  return read_cad(path, scale, options.mesh_size);
+  return read_cad(path, scale, options.mesh_size, options.bounds);
 }
 
 } // namespace wear::meshes

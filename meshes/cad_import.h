@@ -5,6 +5,7 @@
 // file, as gmsh numbers it), so a case file can name surfaces (wearing, clamped, ...) by it.
 #include "meshes/surface_mesh.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,7 +21,14 @@ double metres_per(LengthUnit unit);
 struct CadImportOptions {
   LengthUnit unit = LengthUnit::metre; ///< unit of the file's coordinates
   double mesh_size = 0;                ///< [m] target triangle edge (CAD files; STL is as is)
+  /// [m] the geometry must lie inside (checked on the CAD kernel's bounding box, before the
+  /// meshing, so a file read in the wrong unit is refused at once); empty: no bound
+  std::optional<BoundingBox> bounds;
 };
+
+/// Most triangles a CAD file or primitive may be meshed into: more would take minutes and
+/// gigabytes, and says the mesh size or the unit is wrong.
+constexpr double max_cad_triangles = 2e7;
 
 struct CadSurface {
   /// [m] the triangles, labelled by CAD surface (1, 2, ... in the file's order; an STL file's
@@ -52,12 +60,14 @@ struct Primitive {
 /// The primitive meshed with triangles of at most `mesh_size` [m]. Throws
 /// std::invalid_argument naming `what` and the dimension that is wrong (a radius not
 /// positive, a zero axis or edge, parallel plane edges, a box with a side not positive).
-CadSurface primitive_surface(const Primitive& p, double mesh_size, const std::string& what);
+CadSurface primitive_surface(const Primitive& p, double mesh_size, const std::string& what,
+                             const std::optional<BoundingBox>& bounds = {});
 
 /// Reads `path` by its extension (.step/.stp, .iges/.igs, .brep, .stl; any case) and scales it
 /// to metres. Throws std::runtime_error naming the file when it is missing or unreadable,
 /// its extension unknown, or it holds no surface; std::invalid_argument when a CAD file is
-/// given without a positive mesh size.
+/// given without a positive mesh size, reaches outside `bounds` or would need more than
+/// max_cad_triangles triangles.
 CadSurface read_cad_surface(const std::string& path, const CadImportOptions& options);
 
 } // namespace wear::meshes

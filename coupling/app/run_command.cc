@@ -26,7 +26,9 @@ int run_run_command(const std::vector<std::string>& args, std::ostream& log) {
   if (case_file.empty())
     throw std::invalid_argument("wearsim run: expected a case file: wearsim run [--resume | "
                                 "--overwrite] <case.prm>");
-  CoupledRun run(read_case(case_file), log, options);
+  CaseParameters p = read_case(case_file);
+  require_no_scene(p, "run");
+  CoupledRun run(p, log, options);
   return run.run();
 }
 

@@ -6,6 +6,7 @@
 #include "coupling/app/dem_command.h"
 #include "coupling/app/mesh_command.h"
 #include "coupling/app/run_command.h"
+#include "coupling/app/scene_command.h"
 #include "coupling/parameters/case_parameters.h"
 #include "coupling/parameters/engine_version.h"
 
@@ -22,6 +23,8 @@ void usage(std::ostream& out) {
   out << "usage: wearsim <command> [arguments]\n\n"
          "commands:\n"
          "  mesh <case.prm>          generate the sample (.msh/.stl/.vtu) and the tester walls\n"
+         "  scene <case.prm>         build and check the walls of the case's Scene (CAD files,\n"
+         "                           primitives): a table per wall and label, <name>.stl each\n"
          "  dem <case.prm>           the wear tester in DEM: fill, settle, revolutions with wear\n"
          "                           evaluations; writes history.h5/.xdmf and summary.csv\n"
          "  run [--resume | --overwrite] <case.prm>\n"
@@ -87,7 +90,9 @@ int main(int argc, char** argv) {
         std::cerr << "wearsim mesh: expected one case file\n";
         return 2;
       }
-      run_mesh_command(read_case(argv[2]), std::cout);
+      const CaseParameters p = read_case(argv[2]);
+      require_no_scene(p, "mesh");
+      run_mesh_command(p, std::cout);
       return 0;
     }
     if (cmd == "dem") {
@@ -95,7 +100,17 @@ int main(int argc, char** argv) {
         std::cerr << "wearsim dem: expected one case file\n";
         return 2;
       }
-      run_dem_command(read_case(argv[2]), std::cout);
+      const CaseParameters p = read_case(argv[2]);
+      require_no_scene(p, "dem");
+      run_dem_command(p, std::cout);
+      return 0;
+    }
+    if (cmd == "scene") {
+      if (argc != 3) {
+        std::cerr << "wearsim scene: expected one case file\n";
+        return 2;
+      }
+      run_scene_command(read_case(argv[2]), std::cout);
       return 0;
     }
     if (cmd == "run")

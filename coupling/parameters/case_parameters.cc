@@ -33,6 +33,7 @@ namespace {
 template <typename Visitor>
 void visit(CaseParameters& c, Visitor& v) {
   meshes::visit_parameters(c.geometry, v);
+  dem::visit_parameters(c.scene, v);
   dem::visit_parameters(c.dem, v);
   dem::visit_parameters(c.wear_law, v);
   dem::visit_parameters(c.deformation, v);
@@ -179,8 +180,21 @@ std::string short_message(const std::exception& e) {
 
 } // namespace
 
-void declare_parameters(ParameterHandler& prm) {
-  CaseParameters defaults;
+namespace {
+/// Defaults with one scene wall per name, so that their subsections are declared.
+CaseParameters defaults_with_walls(const std::string& wall_names) {
+  CaseParameters c;
+  c.scene.wall_names = wall_names;
+  for (const auto& name : dem::scene_wall_names(wall_names)) {
+    c.scene.walls.emplace_back();
+    c.scene.walls.back().name = name;
+  }
+  return c;
+}
+} // namespace
+
+void declare_parameters(ParameterHandler& prm, const std::string& wall_names) {
+  CaseParameters defaults = defaults_with_walls(wall_names);
   Declare declare{prm};
   visit(defaults, declare);
 }
@@ -188,20 +202,35 @@ void declare_parameters(ParameterHandler& prm) {
 CaseParameters read_case(const std::string& path, std::ostream& warnings) {
   if (!std::filesystem::exists(path))
     throw std::runtime_error("case file '" + path + "' does not exist");
-  ParameterHandler prm;
-  declare_parameters(prm);
+  // Two readings: the first, which skips what it does not know, finds Scene/Walls; the
+  // second declares a subsection per wall and refuses anything undeclared.
+  std::string wall_names;
   try {
+    ParameterHandler names;
+    declare_parameters(names);
+    names.parse_input(path, "", true);
+    names.enter_subsection("Scene");
+    wall_names = names.get("Walls");
+    names.leave_subsection();
+  } catch (const std::exception& e) {
+    throw std::runtime_error("case file '" + path + "': " + short_message(e));
+  }
+  ParameterHandler prm;
+  CaseParameters p;
+  try {
+    declare_parameters(prm, wall_names);
+    p = defaults_with_walls(wall_names);
     prm.parse_input(path, "", false);
   } catch (const std::exception& e) {
     throw std::runtime_error("case file '" + path + "': " + short_message(e));
   }
-  CaseParameters p;
   p.case_file = path;
   Parse parse{prm};
   visit(p, parse);
   std::vector<std::string> notes;
   try {
     meshes::validate(p.geometry);
+    dem::validate(p.scene);
     dem::validate(p.dem);
     dem::make_wear_law(p.wear_law);
     validate(p.coupling, p.fem);
@@ -231,7 +260,7 @@ CaseParameters read_case(const std::string& path) {
 
 std::string resolved_parameters(const CaseParameters& p) {
   ParameterHandler prm;
-  declare_parameters(prm);
+  declare_parameters(prm, p.scene.wall_names);
   CaseParameters copy = p;
   Store store{prm};
   visit(copy, store);
@@ -253,8 +282,16 @@ void write_resolved_parameters(const CaseParameters& p, const std::string& path)
 
 void print_parameters(std::ostream& out) {
   ParameterHandler prm;
-  declare_parameters(prm);
+  declare_parameters(prm, "example");
   prm.print_parameters(out, ParameterHandler::Text);
+}
+
+void require_no_scene(const CaseParameters& p, const std::string& command) {
+  if (!p.scene.walls.empty())
+    throw std::invalid_argument(
+        "case file '" + p.case_file + "': Scene/Walls lists walls, but `wearsim " + command +
+        "` runs the built-in wear tester; a scene is built and checked by `wearsim scene` (its "
+        "DEM run is not there yet)");
 }
 
 } // namespace wear::coupling

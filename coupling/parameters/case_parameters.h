@@ -4,6 +4,7 @@
 // struct, by the module's visit_parameters (meshes/parameter_visitor.h); the case file only
 // composes them (meshes/ and dem/ have no deal.II dependency).
 #include "coupling/parameters/coupling_parameters.h"
+#include "dem/scene/scene_parameters.h"
 #include "dem/tester/reference_deformation.h"
 #include "dem/tester/tester_parameters.h"
 #include "dem/tester/wear_law.h"
@@ -37,6 +38,7 @@ void visit_parameters(OutputParameters& o, Visitor& v) {
 
 struct CaseParameters {
   meshes::GeometryParameters geometry;
+  dem::SceneParameters scene; ///< the user's own walls; none: the built-in tester
   dem::TesterDemParameters dem;
   dem::WearLawParameters wear_law;
   dem::ReferenceDeformationParameters deformation;
@@ -51,8 +53,9 @@ struct CaseParameters {
 /// (the coarse-graining width of the wall loads).
 double stress_averaging_radius(const CaseParameters& p);
 
-/// Declares every subsection and parameter with its default and documentation.
-void declare_parameters(dealii::ParameterHandler& prm);
+/// Declares every subsection and parameter with its default and documentation; the Scene
+/// subsection with one `Wall <name>` subsection per name in `wall_names` (Scene/Walls).
+void declare_parameters(dealii::ParameterHandler& prm, const std::string& wall_names = "");
 
 /// Reads a case file. Unknown or misspelled parameters, malformed values, physically
 /// impossible values and combinations that would fail later (check_consistency,
@@ -68,7 +71,13 @@ std::string resolved_parameters(const CaseParameters& p);
 /// Writes the fully resolved parameters of a case (every value, defaults included) as .prm.
 void write_resolved_parameters(const CaseParameters& p, const std::string& path);
 
-/// Prints every parameter with its default and documentation (for --print-parameters).
+/// Prints every parameter with its default and documentation (for --print-parameters); the
+/// Scene's wall subsection as for one wall named `example`.
 void print_parameters(std::ostream& out);
+
+/// Throws std::invalid_argument for a case with scene walls: `command` runs the built-in
+/// wear tester, and a scene is built and checked by `wearsim scene` only (its DEM run is
+/// the next part of issue 33).
+void require_no_scene(const CaseParameters& p, const std::string& command);
 
 } // namespace wear::coupling
