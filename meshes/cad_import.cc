@@ -85,6 +85,20 @@ private:
   int saved_ = -1;
 };
 
+/// Throws std::invalid_argument when `extent` reaches outside `bounds`, naming both: the
+/// usual sign of a file read in the wrong unit.
+void require_inside(const BoundingBox& extent, const BoundingBox& bounds, const std::string& what) {
+  const Vec3 &a = extent.min, &b = extent.max, &lo = bounds.min, &hi = bounds.max;
+  if (a.x >= lo.x && a.y >= lo.y && a.z >= lo.z && b.x <= hi.x && b.y <= hi.y && b.z <= hi.z)
+    return;
+  char text[512];
+  std::snprintf(text, sizeof text,
+                " spans (%.4g, %.4g, %.4g) to (%.4g, %.4g, %.4g) m, outside the domain "
+                "(%.4g, %.4g, %.4g) to (%.4g, %.4g, %.4g) m; is the unit right?",
+                a.x, a.y, a.z, b.x, b.y, b.z, lo.x, lo.y, lo.z, hi.x, hi.y, hi.z);
+  throw std::invalid_argument(what + text);
+}
+
 CadSurface read_stl_surface(const std::string& path, double scale) {
   CadSurface out;
   out.mesh = read_stl(path);
@@ -110,16 +124,7 @@ CadSurface mesh_model(const std::string& what, double mesh_size,
   if (bounds) {
     double x0, y0, z0, x1, y1, z1;
     gmsh::model::getBoundingBox(-1, -1, x0, y0, z0, x1, y1, z1);
-    const BoundingBox& b = *bounds;
-    if (x0 < b.min.x || y0 < b.min.y || z0 < b.min.z || x1 > b.max.x || y1 > b.max.y ||
-        z1 > b.max.z) {
-      char text[512];
-      std::snprintf(text, sizeof text,
-                    " spans (%.4g, %.4g, %.4g) to (%.4g, %.4g, %.4g) m, outside the domain "
-                    "(%.4g, %.4g, %.4g) to (%.4g, %.4g, %.4g) m; is the unit right?",
-                    x0, y0, z0, x1, y1, z1, b.min.x, b.min.y, b.min.z, b.max.x, b.max.y, b.max.z);
-      throw std::invalid_argument(what + text);
-    }
+    require_inside({{x0, y0, z0}, {x1, y1, z1}}, *bounds, what);
   }
   CadSurface out;
   std::sort(surfaces.begin(), surfaces.end());
@@ -278,8 +283,12 @@ CadSurface read_cad_surface(const std::string& path, const CadImportOptions& opt
     throw std::runtime_error("CAD file '" + path + "' cannot be read");
   const double scale = metres_per(options.unit);
   const std::string ext = lower_extension(path);
-  if (ext == ".stl")
-    return read_stl_surface(path, scale);
+  if (ext == ".stl") {
+    CadSurface stl = read_stl_surface(path, scale);
+    if (options.bounds)
+      require_inside(bounding_box(stl.mesh), *options.bounds, "CAD file '" + path + "'");
+    return stl;
+  }
   if (ext != ".step" && ext != ".stp" && ext != ".iges" && ext != ".igs" && ext != ".brep")
     throw std::runtime_error("CAD file '" + path + "': unknown extension '" + ext +
                              "' (known: .step, .stp, .iges, .igs, .brep, .stl)");

@@ -21,8 +21,9 @@ double metres_per(LengthUnit unit);
 struct CadImportOptions {
   LengthUnit unit = LengthUnit::metre; ///< unit of the file's coordinates
   double mesh_size = 0;                ///< [m] target triangle edge (CAD files; STL is as is)
-  /// [m] the geometry must lie inside (checked on the CAD kernel's bounding box, before the
-  /// meshing, so a file read in the wrong unit is refused at once); empty: no bound
+  /// [m] the geometry must lie inside (a CAD file checked on the kernel's bounding box before
+  /// the meshing, so a file read in the wrong unit is refused at once; an STL file on its
+  /// vertices); empty: no bound
   std::optional<BoundingBox> bounds;
 };
 

@@ -1,8 +1,6 @@
 // The Scene subsection's own checks (scene_parameters.h): names, list lengths, signs.
 #include "dem/scene/scene_parameters.h"
 
-#include "meshes/vec3.h"
-
 #include <cctype>
 #include <set>
 #include <sstream>
@@ -10,14 +8,13 @@
 
 namespace wear::dem {
 
-namespace {
-std::string path_of(const SceneWallParameters& w) {
+std::string scene_wall_path(const SceneWallParameters& w) {
   return "Scene/Wall " + w.name;
 }
-meshes::Vec3 vec(const std::vector<double>& v) {
+
+meshes::Vec3 scene_vector(const std::vector<double>& v) {
   return {v.at(0), v.at(1), v.at(2)};
 }
-} // namespace
 
 std::vector<std::string> scene_wall_names(const std::string& text_list) {
   std::vector<std::string> names;
@@ -57,7 +54,7 @@ void validate(const SceneParameters& s) {
       throw std::invalid_argument("Scene/Domain minimum must lie below Scene/Domain maximum in "
                                   "every direction");
   for (const auto& w : s.walls) {
-    const std::string p = path_of(w);
+    const std::string p = scene_wall_path(w);
     for (const auto& [v, name] : {std::pair{&w.origin, "Origin"},
                                   {&w.edge_u, "Edge u"},
                                   {&w.edge_v, "Edge v"},
@@ -72,7 +69,7 @@ void validate(const SceneParameters& s) {
     if (!(w.mesh_size > 0))
       throw std::invalid_argument(p + "/Mesh size must be positive [m], got " +
                                   std::to_string(w.mesh_size));
-    if (w.motion == "rotation" && meshes::norm(vec(w.rotation_axis)) == 0)
+    if (w.motion == "rotation" && meshes::norm(scene_vector(w.rotation_axis)) == 0)
       throw std::invalid_argument(p + "/Rotation axis must not be zero");
     if (w.motion == "oscillation" && !(w.frequency > 0))
       throw std::invalid_argument(p + "/Frequency must be positive [Hz] for an oscillation");

@@ -5,6 +5,7 @@
 // how it moves. scene_walls.h builds and checks the surfaces (`wearsim scene`); the scene's
 // particles, sources and sinks and its DEM run are the next parts of the issue.
 #include "meshes/parameter_visitor.h"
+#include "meshes/vec3.h"
 
 #include <string>
 #include <vector>
@@ -98,6 +99,11 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
   }
   v.leave();
 }
+
+/// "Scene/Wall <name>": how messages name a wall's parameters.
+std::string scene_wall_path(const SceneWallParameters& w);
+/// The three values of a checked list (x, y, z) as a vector.
+meshes::Vec3 scene_vector(const std::vector<double>& v);
 
 /// Checks the values on their own (list lengths, signs, a file given where needed); throws
 /// std::invalid_argument naming the parameter by its case-file path.

@@ -4,6 +4,7 @@
 // naming the option or the file.
 #include "coupling/app/calibrate_command.h"
 #include "coupling/app/dem_command.h"
+#include "error_of.h"
 #include "small_tester.h"
 
 #include <catch2/catch.hpp>
@@ -15,14 +16,6 @@
 using namespace wear::coupling;
 
 namespace {
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::exception& e) {
-    return e.what();
-  }
-  return "";
-}
 
 double wear_of_first_revolution(const std::string& dir) {
   std::ifstream in(dir + "/summary.csv");

@@ -5,6 +5,7 @@
 // tester's commands refuse a scene.
 #include "coupling/app/scene_command.h"
 #include "dem/scene/scene_walls.h"
+#include "error_of.h"
 #include "meshes/gmsh_session.h"
 #include "meshes/stl_io.h"
 
@@ -20,15 +21,6 @@
 using namespace wear::coupling;
 
 namespace {
-
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::exception& e) {
-    return e.what();
-  }
-  return "";
-}
 
 // A 100 x 200 x 50 mm plate written by OpenCASCADE as STEP, in millimetres.
 void write_plate(const std::string& path) {

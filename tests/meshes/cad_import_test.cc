@@ -103,6 +103,10 @@ TEST_CASE("CAD import: BREP and STL read alike", "[meshes][cad]") {
   const auto stl = read_cad_surface("cad_box_mm.stl", {LengthUnit::millimetre, 0});
   CHECK(total_area(stl.mesh) == Approx(area).epsilon(1e-12));
   CHECK(stl.n_solids == 0);
+  // Read as metres it is 1000 times too large for a 1 m domain, refused by its extent.
+  CadImportOptions metres{LengthUnit::metre, 0, BoundingBox{{-1, -1, -1}, {1, 1, 1}}};
+  CHECK_THROWS_WITH(read_cad_surface("cad_box_mm.stl", metres),
+                    Catch::Contains("outside the domain"));
 }
 
 TEST_CASE("CAD import: bad input is refused naming the file", "[meshes][cad]") {
