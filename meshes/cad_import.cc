@@ -233,7 +233,17 @@ CadSurface primitive_surface(const Primitive& p, double mesh_size, const std::st
   case PrimitiveKind::disc: {
     require_positive(p.radius, what, "the radius");
     require_positive(norm(p.axis), what, "the normal's length");
-    const int d = gmsh::model::occ::addDisk(o.x, o.y, o.z, p.radius, p.radius);
+    if (p.radius_inner < 0 || p.radius_inner >= p.radius)
+      throw std::invalid_argument(what + ": the hole's radius must lie in [0, radius), got " +
+                                  std::to_string(p.radius_inner));
+    int d = gmsh::model::occ::addDisk(o.x, o.y, o.z, p.radius, p.radius);
+    if (p.radius_inner > 0) { // an annulus: a hopper's floor around its orifice
+      const int hole = gmsh::model::occ::addDisk(o.x, o.y, o.z, p.radius_inner, p.radius_inner);
+      gmsh::vectorpair out;
+      std::vector<gmsh::vectorpair> map;
+      gmsh::model::occ::cut({{2, d}}, {{2, hole}}, out, map);
+      d = out.at(0).second;
+    }
     rotate_from_z({{2, d}}, o, p.axis * (1 / norm(p.axis)));
     break;
   }

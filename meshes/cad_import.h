@@ -55,12 +55,14 @@ struct Primitive {
   Vec3 axis;             ///< [m] disc: normal (any length); cylinder, cone: base to top; box: size
   double radius = 0;     ///< [m] disc, cylinder; cone at its base
   double radius_top = 0; ///< [m] cone at its top (0: a pointed cone)
-  bool caps = false;     ///< cylinder, cone: with the end discs (a closed solid)
+  double radius_inner = 0; ///< [m] disc: a central hole of this radius (an annulus; 0: none)
+  bool caps = false;       ///< cylinder, cone: with the end discs (a closed solid)
 };
 
 /// The primitive meshed with triangles of at most `mesh_size` [m]. Throws
 /// std::invalid_argument naming `what` and the dimension that is wrong (a radius not
-/// positive, a zero axis or edge, parallel plane edges, a box with a side not positive).
+/// positive, a zero axis or edge, parallel plane edges, a box with a side not positive, a
+/// disc's hole not inside it).
 CadSurface primitive_surface(const Primitive& p, double mesh_size, const std::string& what,
                              const std::optional<BoundingBox>& bounds = {});
 

@@ -4,6 +4,7 @@
 // and the surface locator; inline because it sits in the DEM inner loop.
 #include "meshes/vec3.h"
 
+#include <cmath>
 #include <cstdint>
 
 namespace wear::meshes {
@@ -44,6 +45,34 @@ inline TrianglePoint closest_point_on_triangle(const Vec3& a, const Vec3& b, con
     return {b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6))), F::edge, 1};
   const double denom = 1 / (va + vb + vc);
   return {a + ab * (vb * denom) + ac * (vc * denom), F::face, 0};
+}
+
+/// True when triangle abc and the axis-aligned box [lo, hi] share a point: no separating axis
+/// among the box's three, the triangle's normal and the nine edge-axis cross products
+/// (Akenine-Moeller's test).
+inline bool triangle_intersects_box(Vec3 a, Vec3 b, Vec3 c, const Vec3& lo, const Vec3& hi) {
+  const Vec3 centre = (lo + hi) * 0.5, h = (hi - lo) * 0.5;
+  a = a - centre;
+  b = b - centre;
+  c = c - centre;
+  const auto separated = [&](const Vec3& axis) {
+    const double p0 = dot(axis, a), p1 = dot(axis, b), p2 = dot(axis, c);
+    const double lo_p = std::fmin(p0, std::fmin(p1, p2)), hi_p = std::fmax(p0, std::fmax(p1, p2));
+    const double r = h.x * std::fabs(axis.x) + h.y * std::fabs(axis.y) + h.z * std::fabs(axis.z);
+    return lo_p > r || hi_p < -r;
+  };
+  const Vec3 units[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  for (const Vec3& u : units)
+    if (separated(u))
+      return false;
+  const Vec3 edges[3] = {b - a, c - b, a - c};
+  if (separated(cross(edges[0], edges[1])))
+    return false;
+  for (const Vec3& e : edges)
+    for (const Vec3& u : units)
+      if (separated(cross(u, e)))
+        return false;
+  return true;
 }
 
 } // namespace wear::meshes

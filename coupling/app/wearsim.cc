@@ -7,6 +7,7 @@
 #include "coupling/app/mesh_command.h"
 #include "coupling/app/run_command.h"
 #include "coupling/app/scene_command.h"
+#include "coupling/app/scene_run_command.h"
 #include "coupling/parameters/case_parameters.h"
 #include "coupling/parameters/engine_version.h"
 
@@ -25,6 +26,9 @@ void usage(std::ostream& out) {
          "  mesh <case.prm>          generate the sample (.msh/.stl/.vtu) and the tester walls\n"
          "  scene <case.prm>         build and check the walls of the case's Scene (CAD files,\n"
          "                           primitives): a table per wall and label, <name>.stl each\n"
+         "  scene-run <case.prm>     the DEM run of the case's Scene: walls and their motions,\n"
+         "                           fill, inlets, outlets, to Scene/End time; writes\n"
+         "                           scene_series.csv, particles_<k>.vtu, walls_<k>/\n"
          "  dem <case.prm>           the wear tester in DEM: fill, settle, revolutions with wear\n"
          "                           evaluations; writes history.h5/.xdmf and summary.csv\n"
          "  run [--resume | --overwrite] <case.prm>\n"
@@ -111,6 +115,14 @@ int main(int argc, char** argv) {
         return 2;
       }
       run_scene_command(read_case(argv[2]), std::cout);
+      return 0;
+    }
+    if (cmd == "scene-run") {
+      if (argc != 3) {
+        std::cerr << "wearsim scene-run: expected one case file\n";
+        return 2;
+      }
+      run_scene_run_command(read_case(argv[2]), std::cout);
       return 0;
     }
     if (cmd == "run")

@@ -3,7 +3,7 @@
 // Layout of checkpoint.h5:
 //   attributes on /: stages_done, revolutions_done, has_sample, parameters (text)
 //   /dem/...        every array of dem::SystemState (Vec3 arrays as n x 3), attributes time,
-//                   n_steps, n_rebuilds
+//                   n_steps, n_rebuilds, next_id
 //   /revolutions/data, /revolutions/offsets   the records packed as numbers (pack()), one
 //                   after another; distortions as the text attribute /revolutions:distortions
 //   /stages/data, /stages/offsets             the same for the stage records
@@ -11,8 +11,9 @@
 //                   attribute revision), removed_volume, wear_depth
 //   /face_von_mises, /dem/cumulative_removed   per face of the current sample surface
 //   in-stage checkpoints only (attribute has_open_stage = 1 on /):
-//   /dem/continuation/...  the DEM state's continuation part (reference positions, wall
-//                   candidates, cost estimate, the threads' wear window; attribute n_threads)
+//   /dem/continuation/...  the DEM state's continuation part (reference positions with the
+//                   attribute wall_reference_time, wall candidates, cost estimate, the threads'
+//                   wear window; attribute n_threads)
 //   /open_stage/... the stage's summed loads per face and its open revolution (steps done,
 //                   the evaluation's samples; column forces as n_columns x n_samples)
 // The checkpoint a write replaces is kept as checkpoint.previous.h5 (a hard link taken
@@ -257,6 +258,7 @@ void write_continuation(Hdf5File& h5, const dem::SystemState& d) {
   write_doubles(h5, g + "/particle_cost", d.particle_cost);
   write_doubles(h5, g + "/wear_window", d.wear_window);
   h5.attribute(g + "/particle_cost", "n_threads", double(d.n_threads));
+  h5.attribute(g + "/reference_position", "wall_reference_time", d.wall_reference_time);
 }
 
 void read_continuation(const Hdf5Reader& h5, dem::SystemState& d) {
@@ -267,6 +269,9 @@ void read_continuation(const Hdf5Reader& h5, dem::SystemState& d) {
   d.particle_cost = h5.doubles(g + "/particle_cost");
   d.wear_window = h5.doubles(g + "/wear_window");
   d.n_threads = int(h5.attribute(g + "/particle_cost", "n_threads"));
+  // Absent from checkpoints written before walls could move; no wall moved then.
+  if (h5.has_attribute(g + "/reference_position", "wall_reference_time"))
+    d.wall_reference_time = h5.attribute(g + "/reference_position", "wall_reference_time");
 }
 
 // The evaluation's samples: scalars in one dataset, in this order.
@@ -406,6 +411,7 @@ void write_checkpoint(const std::string& path, const Checkpoint& c) {
   h5.attribute("/dem", "time", d.time);
   h5.attribute("/dem", "n_steps", double(d.n_steps));
   h5.attribute("/dem", "n_rebuilds", double(d.n_rebuilds));
+  h5.attribute("/dem", "next_id", double(d.next_id)); // exact below 2^53
   write_records(h5, "/revolutions", c.revolutions);
   write_records(h5, "/stages", c.stages);
   if (c.has_sample) {
@@ -527,6 +533,10 @@ Checkpoint read_checkpoint(const std::string& path) {
     d.time = h5.attribute("/dem", "time");
     d.n_steps = std::uint64_t(h5.attribute("/dem", "n_steps"));
     d.n_rebuilds = std::uint64_t(h5.attribute("/dem", "n_rebuilds"));
+    // Absent from checkpoints written before particles could be inserted: one past the largest
+    // id then, which the import takes anyway.
+    if (h5.has_attribute("/dem", "next_id"))
+      d.next_id = std::int64_t(h5.attribute("/dem", "next_id"));
     c.revolutions = read_records<dem::RevolutionRecord>(h5, "/revolutions");
     c.stages = read_records<StageRecord>(h5, "/stages");
     if (c.has_sample) {

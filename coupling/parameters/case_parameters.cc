@@ -181,20 +181,17 @@ std::string short_message(const std::exception& e) {
 } // namespace
 
 namespace {
-/// Defaults with one scene wall per name, so that their subsections are declared.
-CaseParameters defaults_with_walls(const std::string& wall_names) {
+/// Defaults with one scene wall, inlet and outlet per name, so that their subsections are
+/// declared.
+CaseParameters defaults_with_scene(const dem::SceneNames& names) {
   CaseParameters c;
-  c.scene.wall_names = wall_names;
-  for (const auto& name : dem::scene_wall_names(wall_names)) {
-    c.scene.walls.emplace_back();
-    c.scene.walls.back().name = name;
-  }
+  c.scene = dem::scene_with_names(names);
   return c;
 }
 } // namespace
 
-void declare_parameters(ParameterHandler& prm, const std::string& wall_names) {
-  CaseParameters defaults = defaults_with_walls(wall_names);
+void declare_parameters(ParameterHandler& prm, const dem::SceneNames& names) {
+  CaseParameters defaults = defaults_with_scene(names);
   Declare declare{prm};
   visit(defaults, declare);
 }
@@ -202,24 +199,25 @@ void declare_parameters(ParameterHandler& prm, const std::string& wall_names) {
 CaseParameters read_case(const std::string& path, std::ostream& warnings) {
   if (!std::filesystem::exists(path))
     throw std::runtime_error("case file '" + path + "' does not exist");
-  // Two readings: the first, which skips what it does not know, finds Scene/Walls; the
-  // second declares a subsection per wall and refuses anything undeclared.
-  std::string wall_names;
+  // Two readings: the first, which skips what it does not know, finds the names of the
+  // scene's walls, inlets and outlets; the second declares a subsection per name and refuses
+  // anything undeclared.
+  dem::SceneNames names;
   try {
-    ParameterHandler names;
-    declare_parameters(names);
-    names.parse_input(path, "", true);
-    names.enter_subsection("Scene");
-    wall_names = names.get("Walls");
-    names.leave_subsection();
+    ParameterHandler first;
+    declare_parameters(first);
+    first.parse_input(path, "", true);
+    first.enter_subsection("Scene");
+    names = {first.get("Walls"), first.get("Inlets"), first.get("Outlets")};
+    first.leave_subsection();
   } catch (const std::exception& e) {
     throw std::runtime_error("case file '" + path + "': " + short_message(e));
   }
   ParameterHandler prm;
   CaseParameters p;
   try {
-    declare_parameters(prm, wall_names);
-    p = defaults_with_walls(wall_names);
+    declare_parameters(prm, names);
+    p = defaults_with_scene(names);
     prm.parse_input(path, "", false);
   } catch (const std::exception& e) {
     throw std::runtime_error("case file '" + path + "': " + short_message(e));
@@ -260,7 +258,7 @@ CaseParameters read_case(const std::string& path) {
 
 std::string resolved_parameters(const CaseParameters& p) {
   ParameterHandler prm;
-  declare_parameters(prm, p.scene.wall_names);
+  declare_parameters(prm, {p.scene.wall_names, p.scene.inlet_names, p.scene.outlet_names});
   CaseParameters copy = p;
   Store store{prm};
   visit(copy, store);
@@ -282,7 +280,7 @@ void write_resolved_parameters(const CaseParameters& p, const std::string& path)
 
 void print_parameters(std::ostream& out) {
   ParameterHandler prm;
-  declare_parameters(prm, "example");
+  declare_parameters(prm, {"example", "example", "example"});
   prm.print_parameters(out, ParameterHandler::Text);
 }
 
@@ -290,8 +288,8 @@ void require_no_scene(const CaseParameters& p, const std::string& command) {
   if (!p.scene.walls.empty())
     throw std::invalid_argument(
         "case file '" + p.case_file + "': Scene/Walls lists walls, but `wearsim " + command +
-        "` runs the built-in wear tester; a scene is built and checked by `wearsim scene` (its "
-        "DEM run is not there yet)");
+        "` runs the built-in wear tester; a scene is built and checked by `wearsim scene` and "
+        "run by `wearsim scene-run`");
 }
 
 } // namespace wear::coupling

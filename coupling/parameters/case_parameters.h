@@ -54,8 +54,9 @@ struct CaseParameters {
 double stress_averaging_radius(const CaseParameters& p);
 
 /// Declares every subsection and parameter with its default and documentation; the Scene
-/// subsection with one `Wall <name>` subsection per name in `wall_names` (Scene/Walls).
-void declare_parameters(dealii::ParameterHandler& prm, const std::string& wall_names = "");
+/// subsection with one `Wall <name>`, `Inlet <name>` and `Outlet <name>` subsection per name
+/// in `names` (Scene/Walls, Inlets, Outlets).
+void declare_parameters(dealii::ParameterHandler& prm, const dem::SceneNames& names = {});
 
 /// Reads a case file. Unknown or misspelled parameters, malformed values, physically
 /// impossible values and combinations that would fail later (check_consistency,
@@ -72,12 +73,12 @@ std::string resolved_parameters(const CaseParameters& p);
 void write_resolved_parameters(const CaseParameters& p, const std::string& path);
 
 /// Prints every parameter with its default and documentation (for --print-parameters); the
-/// Scene's wall subsection as for one wall named `example`.
+/// Scene's wall, inlet and outlet subsections as for one of each named `example`.
 void print_parameters(std::ostream& out);
 
 /// Throws std::invalid_argument for a case with scene walls: `command` runs the built-in
-/// wear tester, and a scene is built and checked by `wearsim scene` only (its DEM run is
-/// the next part of issue 33).
+/// wear tester; a scene is built and checked by `wearsim scene` and run by
+/// `wearsim scene-run`.
 void require_no_scene(const CaseParameters& p, const std::string& command);
 
 } // namespace wear::coupling

@@ -7,6 +7,7 @@
 // radius, the packing fraction is counted in the bed core by particle centres.
 #include "dem/engine/filling.h"
 
+#include "dem/engine/insertion_grid.h"
 #include "dem/engine/system.h"
 
 #include <algorithm>
@@ -15,7 +16,6 @@
 #include <random>
 #include <stdexcept>
 #include <string>
-#include <unordered_map>
 
 namespace wear::dem {
 
@@ -79,52 +79,6 @@ FillRegion annular_sector_region(double r_in, double r_out, double angle, double
 }
 
 namespace {
-/// Hash grid of particle centres with cubic cells: the particles that may overlap a new one
-/// lie in its own cell or the 26 around it when the cell is the largest diameter.
-class InsertionGrid {
-public:
-  InsertionGrid(const Particles& p, double cell) : cell_(cell) {
-    for (std::uint32_t i = 0; i < p.n_real; ++i)
-      add(p.position[i], i);
-  }
-  void add(const Vec3& x, std::uint32_t i) { cells_[key(x)].push_back(i); }
-  /// True when a sphere of radius r at x overlaps a particle of p listed in the grid.
-  bool overlaps(const Particles& p, const Vec3& x, double r) const {
-    const Key c = key(x);
-    for (long a = -1; a <= 1; ++a)
-      for (long b = -1; b <= 1; ++b)
-        for (long e = -1; e <= 1; ++e) {
-          auto it = cells_.find({c.i + a, c.j + b, c.k + e});
-          if (it == cells_.end())
-            continue;
-          for (auto j : it->second) {
-            const double s = r + p.radius[j];
-            if (meshes::norm2(p.position[j] - x) < s * s)
-              return true;
-          }
-        }
-    return false;
-  }
-
-private:
-  struct Key {
-    long i, j, k;
-    bool operator==(const Key& o) const { return i == o.i && j == o.j && k == o.k; }
-  };
-  struct Hash {
-    std::size_t operator()(const Key& k) const {
-      return std::size_t(k.i) * 73856093u ^ std::size_t(k.j) * 19349663u ^
-             std::size_t(k.k) * 83492791u;
-    }
-  };
-  Key key(const Vec3& x) const {
-    return Key{long(std::floor(x.x / cell_)), long(std::floor(x.y / cell_)),
-               long(std::floor(x.z / cell_))};
-  }
-  double cell_;
-  std::unordered_map<Key, std::vector<std::uint32_t>, Hash> cells_;
-};
-
 /// The n diameters to place [m, at s = 1], fixed before placing: counts from the number
 /// fractions (rounded, the remainder carried to the next size), in a random order. Redrawing
 /// a diameter after a failed placement would favour small particles and skew the size

@@ -96,8 +96,31 @@ void MeshWall::set_vertices(const std::vector<Vec3>& vertices) {
   mesh_.vertices = vertices;
   mesh_.bump_revision();
   compute_geometry();
+  if (moving_)
+    axis_reach_ =
+        axis_reach(rigid_, mesh_.vertices.data(), mesh_.vertices.data() + mesh_.vertices.size());
   if (cell_ > 0)
     build_grid(reach_);
+}
+
+void MeshWall::set_rigid_motion(const RigidMotion& m) {
+  const std::string what = "wall '" + name_ + "'";
+  validate(m, what);
+  if (m.moves() && (motion_.angular_velocity != 0 || motion_.surface_velocity != Vec3{}))
+    throw std::invalid_argument(what + " has a surface motion already; a rigid motion of its "
+                                       "geometry replaces it, give one or the other");
+  rigid_ = m;
+  moving_ = m.moves();
+  pose_ = reference_pose_ = RigidPose{};
+  axis_reach_ =
+      axis_reach(rigid_, mesh_.vertices.data(), mesh_.vertices.data() + mesh_.vertices.size());
+}
+
+std::vector<Vec3> MeshWall::world_vertices() const {
+  std::vector<Vec3> v(mesh_.vertices.size());
+  for (std::size_t k = 0; k < v.size(); ++k)
+    v[k] = to_world(mesh_.vertices[k]);
+  return v;
 }
 
 void MeshWall::compute_geometry() {

@@ -1,6 +1,8 @@
 #pragma once
 // A triangle-mesh wall: geometry, the topology needed to count each physical contact once,
-// a rigid rotation, a candidate-search grid, and optional per-face wear accumulation.
+// a surface velocity or a rigid motion of the whole wall, a candidate-search grid, and
+// optional per-face wear accumulation.
+#include "dem/engine/rigid_motion.h"
 #include "meshes/surface_mesh.h"
 #include "meshes/triangle_geometry.h"
 
@@ -75,7 +77,7 @@ public:
   bool wearing() const { return wearing_; }
   const std::vector<int>& covered_labels() const { return covered_labels_; }
   const WallMotion& motion() const { return motion_; }
-  /// Changes the rigid motion (e.g. start the floor's rotation after settling).
+  /// Changes the surface motion (e.g. start the floor's rotation after settling).
   void set_motion(const WallMotion& m) {
     motion_ = m;
     omega_ = meshes::normalized(m.axis) * m.angular_velocity;
@@ -83,10 +85,40 @@ public:
   const meshes::SurfaceMesh& mesh() const { return mesh_; }
   std::size_t n_faces() const { return mesh_.n_faces(); }
 
+  /// Gives the wall a rigid motion of its geometry (rigid_motion.h): the mesh as given is its
+  /// body frame, where it is at the motion's start time. Exclusive with a surface motion
+  /// (WallMotion); throws std::invalid_argument naming the wall for both or a bad motion.
+  void set_rigid_motion(const RigidMotion& m);
+  const RigidMotion& rigid_motion() const { return rigid_; }
+  /// True when the geometry moves: contact searches then take points into the body frame.
+  bool moving() const { return moving_; }
+  /// The pose at the time of the last move_to() (identity for a wall that does not move).
+  const RigidPose& pose() const { return pose_; }
+  /// Places a moving wall at time t [s]; nothing for another.
+  void move_to(double t) {
+    if (moving_)
+      pose_ = pose_at(rigid_, t);
+  }
+  /// The current pose becomes the one displacement() measures from (a list rebuild).
+  void mark_reference() { reference_pose_ = pose_; }
+  /// [m] Upper bound of the distance any point of the wall moved since mark_reference().
+  double displacement() const {
+    return moving_ ? max_displacement(reference_pose_, pose_, axis_reach_) : 0.0;
+  }
+  /// A point of the mesh (body frame) where it is now (world frame), and back.
+  Vec3 to_world(const Vec3& body) const { return moving_ ? pose_.to_world(body) : body; }
+  Vec3 to_body(const Vec3& world) const { return moving_ ? pose_.to_body(world) : world; }
+  /// The mesh's vertices where they are now [m].
+  std::vector<Vec3> world_vertices() const;
+
+  /// [m/s] Velocity of the wall's material point at mesh point p (body frame).
   Vec3 velocity_at(const Vec3& p) const {
+    if (moving_)
+      return pose_.velocity_at(pose_.to_world(p));
     return meshes::cross(omega_, p - motion_.axis_point) + motion_.surface_velocity;
   }
-  const Vec3& angular_velocity_vector() const { return omega_; }
+  /// [rad/s] The wall's angular velocity (for the rolling resistance).
+  const Vec3& angular_velocity_vector() const { return moving_ ? pose_.omega : omega_; }
 
   /// Plane and bounding sphere of triangle f (FaceBound's rejection tests).
   const FaceBound& bound(std::uint32_t f) const { return bound_[f]; }
@@ -111,14 +143,14 @@ public:
   int faces_sharing(std::uint32_t f, const ClosestFeature& cf, std::uint32_t* out, double* weight,
                     int max_out) const;
 
-  /// Moves the vertices (same count and topology), recomputes the geometry and the candidate
-  /// grid and bumps the mesh revision. Throws if a triangle degenerates.
+  /// Moves the vertices (same count and topology, in the body frame), recomputes the geometry and
+  /// the candidate grid and bumps the mesh revision. Throws if a triangle degenerates.
   void set_vertices(const std::vector<Vec3>& vertices);
 
-  /// Builds the candidate grid: every face is registered in each cell its bounding box,
-  /// inflated by `reach`, overlaps.
+  /// Builds the candidate grid (body frame): every face is registered in each cell its bounding
+  /// box, inflated by `reach`, overlaps.
   void build_grid(double reach);
-  /// Faces that may lie within `reach` of point c (empty outside the grid).
+  /// Faces that may lie within `reach` of point c of the body frame (empty outside the grid).
   std::pair<const std::uint32_t*, const std::uint32_t*> candidates(const Vec3& c) const;
 
 private:
@@ -126,6 +158,10 @@ private:
   int material_;
   WallMotion motion_;
   Vec3 omega_;
+  RigidMotion rigid_;
+  bool moving_ = false;
+  RigidPose pose_, reference_pose_;
+  double axis_reach_ = 0; ///< [m] largest vertex distance from the rigid motion's axis
   bool wearing_;
   std::string name_;
   std::vector<int> covered_labels_;

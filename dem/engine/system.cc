@@ -69,7 +69,8 @@ void System::setup() {
       << " s of the smallest particle; the limit is 40 % (set 'Force time step' to override)";
     throw std::invalid_argument(s.str());
   }
-  r_max_ = *std::max_element(p.radius.begin(), p.radius.begin() + p.n_real);
+  r_max_ = std::max(settings.max_radius,
+                    *std::max_element(p.radius.begin(), p.radius.begin() + p.n_real));
   double r_min = *std::min_element(p.radius.begin(), p.radius.begin() + p.n_real);
   skin_ = settings.skin > 0 ? settings.skin : 0.5 * r_min;
   if (settings.periodic.enabled) {
@@ -84,12 +85,15 @@ void System::setup() {
   }
   for (auto& w : walls_)
     w.build_grid(r_max_ + skin_);
-  for (std::size_t i = 0; i < p.n_real; ++i)
-    if (p.id[i] < 0 || std::size_t(p.id[i]) >= p.n_real)
-      throw std::invalid_argument("DEM: particle ids must be 0 .. n - 1");
+  if (settings.periodic.enabled && has_moving_walls())
+    throw std::invalid_argument(
+        "DEM: walls with a rigid motion cannot be combined with a periodic sector");
+  next_id_ = first_free_id(p.id.data(), p.n_real);
   set_n_threads(omp_get_max_threads());
   set_up_ = true;
+  time_ = settings.start_time;
   check_particles_or_throw("at setup");
+  move_walls(time_);
   rebuild();
   reset_forces();
   compute_forces();
@@ -190,9 +194,9 @@ void System::advance(bool close_previous) {
   const double h = 0.5 * dt_, vmax2 = settings.max_speed * settings.max_speed;
   const double trigger = 0.25 * skin_ * skin_; // half the skin, squared
   const Vec3 gravity = settings.gravity;
-  int need_rebuild = 0;
+  double max_moved2 = 0; // [m^2] the largest squared displacement since the last rebuild
   const double t_begin = omp_get_wtime();
-#pragma omp parallel num_threads(n_threads_) reduction(max : need_rebuild)
+#pragma omp parallel num_threads(n_threads_) reduction(max : max_moved2)
   {
     const int thread = omp_get_thread_num();
     const auto [i0, i1] = kick_range(thread);
@@ -219,13 +223,20 @@ void System::advance(bool close_previous) {
           error_kind_[thread] = std::isfinite(v2) ? too_fast : not_finite;
         }
       }
-      if (meshes::norm2(p.position[i] - reference_position_[i]) > trigger)
-        need_rebuild = 1;
+      max_moved2 = std::max(max_moved2, meshes::norm2(p.position[i] - reference_position_[i]));
     }
   }
   if (close_previous) {
     time_ += dt_;
     ++n_steps_;
+  }
+  bool need_rebuild = max_moved2 > trigger;
+  if (has_moving_walls()) {
+    // A wall candidate stays valid while the particle and the wall together moved less than
+    // the half skin that find_wall_candidates() added to the reach.
+    move_walls(time_ + dt_);
+    const double shift = wall_displacement();
+    need_rebuild = need_rebuild || std::sqrt(max_moved2) + shift > 0.5 * skin_;
   }
   for (int t = 0; t < n_threads_; ++t)
     if (error_kind_[t] != no_error)
@@ -369,6 +380,8 @@ void System::replace_wall_mesh(int w, const meshes::SurfaceMesh& mesh) {
   const MeshWall& old = walls_[m];
   MeshWall wall(mesh, old.material(), old.motion(), old.wearing(), old.name(),
                 old.covered_labels());
+  wall.set_rigid_motion(old.rigid_motion());
+  wall.move_to(wall_time_);
   walls_[m] = std::move(wall);
   if (!set_up_)
     return;

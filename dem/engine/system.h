@@ -8,6 +8,7 @@
 #include "dem/engine/revolution_wall.h"
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -28,7 +29,11 @@ struct DemSettings {
   double time_step_fraction = 0.2; ///< [-] of the Rayleigh time of the smallest particle
   bool force_time_step = false;    ///< allow a step above 40 % of the Rayleigh time
   double skin = 0;                 ///< [m] neighbour-list skin; 0: 0.25 x smallest diameter
-  double max_speed = 50;           ///< [m/s] a faster particle stops the run
+  /// [m] The largest radius a particle may have, also one inserted later (the lists' reach);
+  /// 0: the largest at setup.
+  double max_radius = 0;
+  double max_speed = 50; ///< [m/s] a faster particle stops the run
+  double start_time = 0; ///< [s] the clock at setup
   meshes::BoundingBox domain{{-1e3, -1e3, -1e3}, {1e3, 1e3, 1e3}}; ///< [m] leaving it is an error
   PeriodicSector periodic;
 };
@@ -41,7 +46,8 @@ constexpr std::size_t n_wear_values = 13;
 
 /// Extensive per-face integrals on a wearing wall over the current window (model.md s. 4).
 /// Points are the contact points on the wall (the closest point to the particle centre), in
-/// the wall's frame; the moments are about its origin.
+/// the wall's frame (a moving wall's mesh as given, its body frame; vectors rotated there too);
+/// the moments are about its origin.
 struct WearIntegrals {
   std::vector<Vec3> impulse;          ///< [N s] integral of the force on the face
   std::vector<double> normal_impulse; ///< [N s] integral of F_n
@@ -84,6 +90,10 @@ struct SystemState {
   std::vector<Vec3> reference_position; ///< [m] positions at the last rebuild (its trigger)
   std::vector<std::uint32_t> wall_candidate_offset, wall_candidate; ///< per particle
   std::vector<double> particle_cost; ///< [-] the threads' split of the force evaluation
+  /// The id the next inserted particle gets (0: one past the largest id).
+  std::int64_t next_id = 0;
+  /// [s] Time of the moving walls' poses at the last rebuild (their share of its trigger).
+  double wall_reference_time = 0;
   /// The wear window's accumulators as the threads hold them: per thread, per wearing wall
   /// in wall order, n_wear_values per face and as many totals (WearIntegrals' order).
   std::vector<double> wear_window;
@@ -103,10 +113,32 @@ struct PhaseTimes {
   std::uint64_t n_steps = 0;
 };
 
+/// A particle to add between steps (System::insert_particles).
+struct NewParticle {
+  Vec3 position;         ///< [m]
+  Vec3 velocity;         ///< [m/s]
+  Vec3 angular_velocity; ///< [rad/s]
+  double radius = 0;     ///< [m]
+  double density = 0;    ///< [kg/m^3]
+  int material = 0;
+};
+
+/// A particle taken out between steps (System::remove_particles).
+struct RemovedParticle {
+  std::int64_t id = 0;
+  Vec3 position;   ///< [m]
+  Vec3 velocity;   ///< [m/s]
+  double mass = 0; ///< [kg]
+};
+
 struct Energy {
   double kinetic = 0, rotational = 0, potential = 0, elastic = 0; ///< [J]
   double total() const { return kinetic + rotational + potential + elastic; }
 };
+
+/// One past the largest of the n ids; throws std::invalid_argument for a negative, too large
+/// (>= 2^32 - 1) or repeated id.
+std::int64_t first_free_id(const std::int64_t* id, std::size_t n);
 
 class System {
 public:
@@ -158,6 +190,8 @@ public:
   double bytes_per_particle() const;
 
   void set_wall_motion(int w, const WallMotion& m);
+  /// True when some mesh wall has a rigid motion of its geometry (MeshWall::set_rigid_motion).
+  bool has_moving_walls() const;
   /// Moves the vertices of wall w (same topology, e.g. a worn surface) and rebuilds the
   /// contact candidates; contact histories are kept.
   void set_wall_vertices(int w, const std::vector<Vec3>& vertices);
@@ -166,6 +200,20 @@ public:
   /// material, motion, wear flag, name and covered labels stay. The wall's wear integrals restart
   /// at zero.
   void replace_wall_mesh(int w, const meshes::SurfaceMesh& mesh);
+
+  /// Adds particles between steps (after setup), each with a new stable id (next_id() on),
+  /// their forces gravity only. The caller places them clear of the other particles and the
+  /// walls (an overlap would give a large repulsion at the next step). Rebuilds the lists;
+  /// the others keep their contact histories. Throws for a non-positive radius or density or
+  /// an unknown material, naming the batch entry.
+  void insert_particles(const std::vector<NewParticle>& batch);
+  /// Removes, between steps, the real particles for which remove(centre, radius) holds (an
+  /// outlet), and returns them in the engine's order. Rebuilds the lists; the pairs and wall
+  /// contacts that stay keep their histories.
+  std::vector<RemovedParticle>
+  remove_particles(const std::function<bool(const Vec3&, double)>& remove);
+  /// The stable id the next inserted particle gets: ids are never reused.
+  std::int64_t next_id() const { return next_id_; }
 
   /// The state that decides the continuation (see SystemState).
   SystemState export_state() const;
@@ -183,9 +231,18 @@ public:
   void reset_wear_integrals();
 
 private:
+  /// Particles to add and a rule for those to remove, applied by a rebuild between steps.
+  struct ParticleChanges {
+    const std::vector<NewParticle>* insert = nullptr;
+    const std::function<bool(const Vec3&, double)>* remove = nullptr;
+    std::vector<RemovedParticle>* removed = nullptr; ///< receives the removed particles
+  };
   /// `in_step`: called between the drift and the force evaluation, when the particles'
-  /// forces hold gravity only (a wrapped particle's is then not rotated).
-  void rebuild(bool in_step = false);
+  /// forces hold gravity only (a wrapped particle's is then not rotated). `changes`: applied
+  /// after the old lists' histories are keyed by id and before the new lists are built.
+  void rebuild(bool in_step = false, const ParticleChanges* changes = nullptr);
+  /// Removes and appends real particles (rebuild's step for `changes`; ghosts dropped).
+  void apply_particle_changes(const ParticleChanges& changes);
   // The steps of rebuild(), in its order (system_rebuild.cc).
   struct CarriedHistory; // a pair history in the canonical frame, keyed by the stable ids
   struct HistoryTable;   // carried histories bucketed by the lower id
@@ -221,6 +278,10 @@ private:
   /// Adds the forces the threads kept for particles they do not own, in thread order.
   void apply_foreign_forces();
   void refresh_ghosts();
+  /// Places the moving walls at time t [s] (their contacts are evaluated there).
+  void move_walls(double t);
+  /// [m] The largest distance a moving wall's point may have moved since the last rebuild.
+  double wall_displacement() const;
   /// The kernels' copies (packed positions and motion, which pairs touch, the wall candidates'
   /// bounds) from the particles' arrays, the pair histories and the candidate list: after a
   /// rebuild or a resumed state.
@@ -261,6 +322,7 @@ private:
   NeighborList neighbors_;
   double dt_ = 0, time_ = 0, skin_ = 0, r_max_ = 0;
   std::uint64_t n_steps_ = 0, n_rebuilds_ = 0;
+  std::int64_t next_id_ = 0; ///< stable id of the next inserted particle
   bool set_up_ = false;
   int n_threads_ = 1;
 
@@ -295,6 +357,7 @@ private:
   int uniform_material_ = -1;               // the material of every particle, -1 when they differ
   std::size_t n_pair_contacts_ = 0;
   std::vector<Vec3> reference_position_;
+  double wall_time_ = 0, wall_reference_time_ = 0; ///< [s] the moving walls' poses: now, rebuild
 
   // Wall contacts: candidates per particle (wall << 24 | face) and history slots.
   static constexpr int wall_slots = 6;

@@ -11,6 +11,11 @@
 // most one contact, at its exact closest point, through the same slots, merge rule and law;
 // on a wearing one the contact's integrals go whole to its accounting face under that point.
 //
+// A mesh wall with a rigid motion (rigid_motion.h) is searched in its body frame: the
+// particle centre is taken there once per wall, the contact normal back to the world frame;
+// the contact point stays on the mesh, where the wall's velocity is evaluated and its wear
+// integrals are kept (impulses rotated into the body frame, so a face's load is the face's).
+//
 // Each thread adds the forces on the particles it owns into their own arrays; a force on a
 // particle another thread owns (across the boundary between the threads' ranges, or a ghost's
 // owner) is kept aside and added after the evaluation in thread order, so a run is bitwise
@@ -29,9 +34,9 @@ namespace wear::dem {
 namespace {
 /// A particle-wall contact found on a candidate face, before merging.
 struct Candidate {
-  ClosestFeature feature;
-  Vec3 normal; ///< unit, wall to particle centre
-  double dist; ///< [m] centre to closest point
+  ClosestFeature feature; ///< on the wall's mesh (a moving wall's body frame)
+  Vec3 normal;            ///< unit, wall to particle centre (world frame)
+  double dist;            ///< [m] centre to closest point
   std::uint32_t wall, face;
 };
 constexpr int max_wall_candidates = 32;
@@ -55,6 +60,10 @@ struct WallTable {
                                                      const std::uint32_t* e, const FaceBound* bound,
                                                      const Vec3& x, double r, Candidate* found) {
   int n_found = 0;
+  // The particle centre in the frame of the candidate's wall: a moving wall's body frame,
+  // taken once per wall (candidates are listed wall by wall).
+  std::uint32_t frame_wall = ~0u;
+  Vec3 xb = x;
   for (; b != e; ++b, ++bound) {
     const std::uint32_t w = *b >> 24, f = *b & 0xFFFFFFu;
     if (walls.kind[w] == WallKind::revolution) {
@@ -69,18 +78,23 @@ struct WallTable {
       found[n_found++] = {{point, Feature::face, 0}, d / dist, dist, w, 0};
       continue;
     }
-    if (bound->rejects(x, r))
-      continue;
     const MeshWall& wall = walls.mesh[walls.local[w]];
-    const ClosestFeature cf = wall.closest(f, x);
-    const Vec3 d = x - cf.point;
+    if (w != frame_wall) {
+      frame_wall = w;
+      xb = wall.to_body(x);
+    }
+    if (bound->rejects(xb, r))
+      continue;
+    const ClosestFeature cf = wall.closest(f, xb);
+    const Vec3 d = xb - cf.point;
     const double dist2 = meshes::norm2(d);
-    if (dist2 >= r * r || dist2 == 0 || !wall.owns_contact(f, cf, x))
+    if (dist2 >= r * r || dist2 == 0 || !wall.owns_contact(f, cf, xb))
       continue;
     if (n_found == max_wall_candidates)
       return -1;
     const double dist = std::sqrt(dist2);
-    found[n_found++] = {cf, d / dist, dist, w, f};
+    const Vec3 normal = wall.moving() ? wall.pose().rotate(d / dist) : d / dist;
+    found[n_found++] = {cf, normal, dist, w, f};
   }
   return n_found;
 }
@@ -129,6 +143,14 @@ inline int wear_faces(const RevolutionWall& wall, const Candidate& cand, std::ui
   return 1;
 }
 
+/// A vector of the world frame in the wall's frame, where its wear integrals are kept.
+inline Vec3 in_wall_frame(const MeshWall& wall, const Vec3& v) {
+  return wall.moving() ? wall.pose().rotate_back(v) : v;
+}
+inline Vec3 in_wall_frame(const RevolutionWall&, const Vec3& v) {
+  return v;
+}
+
 /// Adds one contact's wear integrals over a step dt to a wearing wall's accumulator `a`: to
 /// the faces that take it (wear_faces), by their shares (n_wear_values entries per face:
 /// impulse, normal impulse, Archard integral, sliding work, contact-steps, and the first
@@ -141,7 +163,7 @@ template <class Wall>
   std::uint32_t faces[32];
   double shares[32];
   const int n_faces = wear_faces(wall, cand, faces, shares);
-  const Vec3 impulse = res.force * (-dt);
+  const Vec3 impulse = in_wall_frame(wall, res.force * (-dt));
   const double fn_dt = res.normal_force * dt;
   const double archard = fn_dt * meshes::norm(res.v_tangential);
   const double work = std::abs(meshes::dot(res.tangential_force, res.v_tangential)) * dt;

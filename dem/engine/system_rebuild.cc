@@ -76,14 +76,18 @@ struct System::HistoryTable {
   std::vector<CarriedHistory> entry;
 };
 
-void System::rebuild(bool in_step) {
-  const std::size_t n = particles.n_real;
+void System::rebuild(bool in_step, const ParticleChanges* changes) {
   // Pair histories and wall slots leave the old lists keyed by stable id: the wrap, the
-  // reordering and the new lists keep them.
+  // reordering, inserted and removed particles and the new lists keep them.
   std::vector<CarriedHistory> old = canonical_pair_histories();
-  const std::vector<std::int32_t> slots_of_id = wall_slots_by_id();
+  std::vector<std::int32_t> slots_of_id = wall_slots_by_id();
   if (settings.periodic.enabled)
     wrap_into_sector(in_step, slots_of_id, old);
+  if (changes) {
+    apply_particle_changes(*changes);
+    slots_of_id.resize(std::size_t(next_id_), -1); // the new ids own no slots
+  }
+  const std::size_t n = particles.n_real;
   const HistoryTable old_by_id = bucket_by_lower_id(std::move(old));
   // Every few rebuilds, reorder particles along the cell grid so that neighbours are
   // neighbours in memory (histories are keyed by id, so nothing is lost).
@@ -99,6 +103,9 @@ void System::rebuild(bool in_step) {
   split_ownership();
   pack_particles();
   reference_position_.assign(particles.position.begin(), particles.position.begin() + n);
+  for (auto& w : walls_)
+    w.mark_reference();
+  wall_reference_time_ = wall_time_;
   ++n_rebuilds_;
 }
 
@@ -135,7 +142,7 @@ std::vector<System::CarriedHistory> System::canonical_pair_histories() const {
 }
 
 std::vector<std::int32_t> System::wall_slots_by_id() const {
-  std::vector<std::int32_t> slots_of_id(particles.n_real, -1);
+  std::vector<std::int32_t> slots_of_id(std::size_t(next_id_), -1);
   for (std::size_t q = 0; q < wall_particles_.size(); ++q)
     slots_of_id[particles.id[wall_particles_[q]]] = std::int32_t(q);
   return slots_of_id;
@@ -176,7 +183,7 @@ void System::wrap_into_sector(bool in_step, const std::vector<std::int32_t>& slo
 }
 
 System::HistoryTable System::bucket_by_lower_id(std::vector<CarriedHistory> old) const {
-  const std::size_t n = particles.n_real;
+  const std::size_t n = std::size_t(next_id_); // ids lie below it
   HistoryTable table;
   table.bucket.assign(n + 1, 0);
   for (const auto& e : old)
@@ -251,8 +258,9 @@ void System::carry_pair_histories(const HistoryTable& old) {
 std::vector<std::uint32_t> System::find_wall_candidates() {
   // Faces within radius + skin/2 of each particle centre (of a revolution wall, its surface).
   // Until the next rebuild no particle moves more than skin/2 from here (the rebuild
-  // trigger), and wall geometry changes only through set_wall_vertices, which rebuilds; so no
-  // other face can be touched. (A pair needs the whole skin: both partners move.) Widened by a
+  // trigger, which counts a moving wall's displacement too), and wall geometry changes only
+  // through set_wall_vertices, which rebuilds; so no other face can be touched. A moving wall
+  // is searched in its body frame. (A pair needs the whole skin: both partners move.) Widened by a
   // relative 1e-9 against round-off.
   const auto& p = particles;
   const std::size_t n = p.n_real;
@@ -267,9 +275,10 @@ std::vector<std::uint32_t> System::find_wall_candidates() {
           emit(std::uint32_t(w << 24)); // its one "face", 0: the exact closest point
         continue;
       }
-      auto [b, e] = walls_[local].candidates(x);
+      const Vec3 xb = walls_[local].to_body(x);
+      auto [b, e] = walls_[local].candidates(xb);
       for (; b != e; ++b)
-        if (meshes::norm2(walls_[local].closest(*b, x).point - x) < reach * reach)
+        if (meshes::norm2(walls_[local].closest(*b, xb).point - xb) < reach * reach)
           emit(std::uint32_t(w << 24) | *b);
     }
   };

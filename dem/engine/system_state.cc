@@ -62,6 +62,8 @@ SystemState System::export_state() const {
   s.wall_candidate_offset = wall_candidate_offset_;
   s.wall_candidate = wall_candidate_;
   s.particle_cost = particle_cost_;
+  s.wall_reference_time = wall_reference_time_;
+  s.next_id = next_id_;
   for (const auto& thread : wear_acc_)
     for (const auto& wall : thread)
       s.wear_window.insert(s.wear_window.end(), wall.begin(), wall.end());
@@ -96,9 +98,14 @@ void System::check_importable(const SystemState& s) const {
   for (const auto q : s.wall_particles)
     require(q < n, "a wall slot refers to a missing particle");
   for (std::size_t i = 0; i < n; ++i)
-    require(s.id[i] >= 0 && std::size_t(s.id[i]) < n && s.radius[i] > 0 && s.mass[i] > 0 &&
-                s.material[i] >= 0 && s.material[i] < materials.n_materials(),
-            "particle " + std::to_string(i) + " has an invalid id, radius, mass or material");
+    require(s.radius[i] > 0 && s.mass[i] > 0 && s.material[i] >= 0 &&
+                s.material[i] < materials.n_materials(),
+            "particle " + std::to_string(i) + " has an invalid radius, mass or material");
+  try {
+    first_free_id(s.id.data(), n);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("DEM state: ") + e.what());
+  }
   for (const auto w : s.slot_wall)
     require(w >= -1 && w < n_walls(), "a wall slot refers to a missing wall");
 }
@@ -147,6 +154,7 @@ void System::take_particles(const SystemState& s) {
   p.inertia = s.inertia;
   p.material = s.material;
   p.id = s.id;
+  next_id_ = std::max(s.next_id, first_free_id(s.id.data(), s.id.size()));
   ghost_owner_ = s.ghost_owner;
   neighbors_.pair_i = s.pair_i;
   neighbors_.pair_j = s.pair_j;
@@ -167,6 +175,7 @@ void System::import_state(const SystemState& s) {
   take_particles(s);
   particles.resize_ghosts(s.ghost_owner.size());
   reset_wear_integrals();
+  move_walls(time_);
   rebuild();
 }
 
@@ -183,6 +192,11 @@ void System::resume_state(const SystemState& s) {
   split_ownership();
   pack_particles();
   reference_position_ = s.reference_position;
+  move_walls(s.wall_reference_time);
+  for (auto& w : walls_)
+    w.mark_reference();
+  wall_reference_time_ = s.wall_reference_time;
+  move_walls(time_);
   std::size_t at = 0;
   for (auto& thread : wear_acc_)
     for (auto& wall : thread) {

@@ -4,11 +4,15 @@
 // A revolution wall has one candidate "face", 0, for its exact closest point; its wear
 // integrals are kept per face of its accounting triangulation.
 //
+// A mesh wall with a rigid motion is queried in its body frame: particle centres are taken
+// there (MeshWall::to_body) and distances are the same in both frames.
+//
 // Elastic energy of a wall contact: the Hertz term 8/15 E* sqrt(R) delta^(5/2) of every
 // contact the force pass would count before merging (the tangential springs of wall contacts
 // are left out, as they always were).
 #include "dem/engine/system.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -60,6 +64,23 @@ void System::set_wall_motion(int w, const WallMotion& m) {
     revolution_walls_[std::size_t(wall_local_[w])].set_motion(m);
 }
 
+bool System::has_moving_walls() const {
+  return std::any_of(walls_.begin(), walls_.end(), [](const MeshWall& w) { return w.moving(); });
+}
+
+void System::move_walls(double t) {
+  for (auto& w : walls_)
+    w.move_to(t);
+  wall_time_ = t;
+}
+
+double System::wall_displacement() const {
+  double d = 0;
+  for (const auto& w : walls_)
+    d = std::max(d, w.displacement());
+  return d;
+}
+
 const std::string& System::wall_name(int w) const {
   const std::size_t k = std::size_t(wall_local_.at(w));
   return wall_kind_[w] == WallKind::mesh ? walls_[k].name() : revolution_walls_[k].name();
@@ -91,16 +112,17 @@ void System::add_wall_elastic_energy(double& e) const {
     for (auto k = wall_candidate_offset_[i]; k < wall_candidate_offset_[i + 1]; ++k) {
       const std::uint32_t w = wall_candidate_[k] >> 24;
       const std::size_t local = std::size_t(wall_local_[w]);
-      const Vec3& x = p.position[i];
       double d = 0;
       int material = 0;
       if (wall_kind_[w] == WallKind::revolution) {
+        const Vec3& x = p.position[i];
         const RevolutionWall& rw = revolution_walls_[local];
         const double dist = meshes::norm(x - rw.closest(x));
         d = dist > 0 ? p.radius[i] - dist : 0;
         material = rw.material();
       } else {
         const MeshWall& mw = walls_[local];
+        const Vec3 x = mw.to_body(p.position[i]);
         const std::uint32_t f = wall_candidate_[k] & 0xFFFFFFu;
         const auto cf = mw.closest(f, x);
         d = p.radius[i] - meshes::norm(x - cf.point);

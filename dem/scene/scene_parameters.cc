@@ -16,7 +16,7 @@ meshes::Vec3 scene_vector(const std::vector<double>& v) {
   return {v.at(0), v.at(1), v.at(2)};
 }
 
-std::vector<std::string> scene_wall_names(const std::string& text_list) {
+std::vector<std::string> scene_names(const std::string& text_list, const std::string& what) {
   std::vector<std::string> names;
   std::set<std::string> seen;
   std::string item;
@@ -27,18 +27,50 @@ std::vector<std::string> scene_wall_names(const std::string& text_list) {
     const auto b = item.find_first_not_of(" \t"), e = item.find_last_not_of(" \t");
     const std::string name = b == std::string::npos ? "" : item.substr(b, e - b + 1);
     if (name.empty())
-      throw std::invalid_argument("Scene/Walls: '" + text_list + "' has an empty name");
+      throw std::invalid_argument(what + ": '" + text_list + "' has an empty name");
     for (const char c : name)
       if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-')
-        throw std::invalid_argument("Scene/Walls: the name '" + name +
+        throw std::invalid_argument(what + ": the name '" + name +
                                     "' may hold letters, digits, '_' and '-' only");
     if (!seen.insert(name).second)
-      throw std::invalid_argument("Scene/Walls: the name '" + name + "' is listed twice");
+      throw std::invalid_argument(what + ": the name '" + name + "' is listed twice");
     names.push_back(name);
   }
   if (!any && text_list.find_first_not_of(" \t") != std::string::npos)
-    throw std::invalid_argument("Scene/Walls: cannot read '" + text_list + "'");
+    throw std::invalid_argument(what + ": cannot read '" + text_list + "'");
   return names;
+}
+
+SceneParameters scene_with_names(const SceneNames& names) {
+  SceneParameters s;
+  s.wall_names = names.walls;
+  s.inlet_names = names.inlets;
+  s.outlet_names = names.outlets;
+  for (const auto& name : scene_names(names.walls, "Scene/Walls"))
+    s.walls.emplace_back().name = name;
+  for (const auto& name : scene_names(names.inlets, "Scene/Inlets"))
+    s.inlets.emplace_back().name = name;
+  for (const auto& name : scene_names(names.outlets, "Scene/Outlets"))
+    s.outlets.emplace_back().name = name;
+  return s;
+}
+
+RigidMotion rigid_motion(const SceneWallParameters& w) {
+  RigidMotion m;
+  m.start_time = w.start_time;
+  if (w.end_time > 0)
+    m.end_time = w.end_time;
+  if (w.motion == "rotation") {
+    m.axis_point = scene_vector(w.axis_point);
+    m.axis = scene_vector(w.rotation_axis);
+    m.angular_velocity = w.angular_velocity;
+  } else if (w.motion == "translation") {
+    m.velocity = scene_vector(w.velocity);
+  } else if (w.motion == "oscillation") {
+    m.amplitude = scene_vector(w.amplitude);
+    m.frequency = w.frequency;
+  }
+  return m;
 }
 
 void validate(const SceneParameters& s) {
@@ -73,6 +105,48 @@ void validate(const SceneParameters& s) {
       throw std::invalid_argument(p + "/Rotation axis must not be zero");
     if (w.motion == "oscillation" && !(w.frequency > 0))
       throw std::invalid_argument(p + "/Frequency must be positive [Hz] for an oscillation");
+    validate(rigid_motion(w), p);
+  }
+  three(s.gravity, "Scene/Gravity");
+  if (!(s.end_time > 0))
+    throw std::invalid_argument("Scene/End time must be positive [s]");
+  if (!(s.output_interval > 0))
+    throw std::invalid_argument("Scene/Output interval must be positive [s]");
+  const auto inside_domain = [&](const std::vector<double>& lo, const std::vector<double>& hi,
+                                 const std::string& what) {
+    for (int d = 0; d < 3; ++d) {
+      if (!(lo[d] < hi[d]))
+        throw std::invalid_argument(what + "/Minimum must lie below Maximum in every direction");
+      if (lo[d] < s.domain_min[d] || hi[d] > s.domain_max[d])
+        throw std::invalid_argument(what + ": the box reaches outside Scene/Domain (check the "
+                                           "unit: metres)");
+    }
+  };
+  if (s.fill.region == "box") {
+    three(s.fill.minimum, "Scene/Fill/Minimum");
+    three(s.fill.maximum, "Scene/Fill/Maximum");
+    inside_domain(s.fill.minimum, s.fill.maximum, "Scene/Fill");
+    if (s.fill.count == 0 && !(s.fill.bed_height > 0))
+      throw std::invalid_argument("Scene/Fill: give a Count or a positive Bed height [m]");
+  }
+  for (const auto& in : s.inlets) {
+    const std::string p = "Scene/Inlet " + in.name;
+    three(in.corner, p + "/Corner");
+    three(in.edge_u, p + "/Edge u");
+    three(in.edge_v, p + "/Edge v");
+    three(in.velocity, p + "/Velocity");
+    if (!(in.mass_flow > 0))
+      throw std::invalid_argument(p + "/Mass flow rate must be positive [kg/s]");
+    if (in.start_time < 0 || in.end_time < 0)
+      throw std::invalid_argument(p + ": Start time and End time must not be negative [s]");
+  }
+  for (const auto& out : s.outlets) {
+    const std::string p = "Scene/Outlet " + out.name;
+    three(out.minimum, p + "/Minimum");
+    three(out.maximum, p + "/Maximum");
+    for (int d = 0; d < 3; ++d)
+      if (!(out.minimum[d] < out.maximum[d]))
+        throw std::invalid_argument(p + "/Minimum must lie below Maximum in every direction");
   }
 }
 

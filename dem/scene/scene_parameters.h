@@ -4,6 +4,7 @@
 // CAD or mesh file with its length unit, or a primitive), its material, whether it wears and
 // how it moves. scene_walls.h builds and checks the surfaces (`wearsim scene`); the scene's
 // particles, sources and sinks and its DEM run are the next parts of the issue.
+#include "dem/engine/rigid_motion.h"
 #include "meshes/parameter_visitor.h"
 #include "meshes/vec3.h"
 
@@ -24,6 +25,7 @@ struct SceneWallParameters {
   std::vector<double> axis{0, 0, 1};   ///< [m] disc normal; cylinder/cone axis; box size
   double radius = 0;                   ///< [m] disc, cylinder; cone base
   double radius_top = 0;               ///< [m] cone top
+  double radius_inner = 0;             ///< [m] disc: central hole (an annulus)
   bool caps = false;                   ///< cylinder, cone: with end discs
   std::string material = "wall";       ///< wall | sample | holder (the DEM subsection's)
   bool wears = false;                  ///< its faces accumulate wear (a closed solid)
@@ -32,33 +34,124 @@ struct SceneWallParameters {
   std::vector<double> rotation_axis{0, 0, 1}; ///< [-] rotation, right-handed
   double angular_velocity = 0;                ///< [rad/s] rotation
   std::vector<double> velocity{0, 0, 0};      ///< [m/s] translation
-  std::vector<double> amplitude{0, 0, 0};     ///< [m] oscillation: A sin(2 pi f t)
+  std::vector<double> amplitude{0, 0, 0};     ///< [m] oscillation: A sin(2 pi f (t - t0))
   double frequency = 0;                       ///< [Hz] oscillation
+  double start_time = 0;                      ///< [s] t0: the wall rests before it
+  double end_time = 0;                        ///< [s] t1: and after it; 0: never stops
+};
+
+/// A rectangle that feeds particles at a mass flow rate (inlet.h).
+struct SceneInletParameters {
+  std::string name;                       ///< from Scene/Inlets
+  std::vector<double> corner{0, 0, 0};    ///< [m]
+  std::vector<double> edge_u{0.1, 0, 0};  ///< [m]
+  std::vector<double> edge_v{0, 0.1, 0};  ///< [m]
+  double mass_flow = 0;                   ///< [kg/s]
+  std::vector<double> velocity{0, 0, -1}; ///< [m/s]
+  double start_time = 0;                  ///< [s]
+  double end_time = 0;                    ///< [s]; 0: to the end of the run
+};
+
+/// An axis-aligned box that removes the particles reaching it (outlet.h).
+struct SceneOutletParameters {
+  std::string name;                     ///< from Scene/Outlets
+  std::vector<double> minimum{0, 0, 0}; ///< [m]
+  std::vector<double> maximum{0, 0, 0}; ///< [m]
+};
+
+/// Particles in place at the start: none, or a box filled at random to a count, or to a
+/// bed height after settling.
+struct SceneFillParameters {
+  std::string region = "none";          ///< none | box
+  std::vector<double> minimum{0, 0, 0}; ///< [m] the box
+  std::vector<double> maximum{0, 0, 0}; ///< [m]
+  std::uint64_t count = 0;              ///< particles; 0: fill to Bed height
+  double bed_height = 0;                ///< [m] above the box's floor, settled
 };
 
 struct SceneParameters {
-  std::string wall_names;                        ///< "Walls": comma-separated names, "" for none
-  std::vector<SceneWallParameters> walls;        ///< one per name, in that order
+  std::string wall_names;                     ///< "Walls": comma-separated names, "" for none
+  std::vector<SceneWallParameters> walls;     ///< one per name, in that order
+  std::string inlet_names;                    ///< "Inlets"
+  std::vector<SceneInletParameters> inlets;   ///< one per name, in that order
+  std::string outlet_names;                   ///< "Outlets"
+  std::vector<SceneOutletParameters> outlets; ///< one per name, in that order
+  SceneFillParameters fill;
   std::vector<double> domain_min{-10, -10, -10}; ///< [m] particles and walls stay inside
   std::vector<double> domain_max{10, 10, 10};    ///< [m]
+  std::vector<double> gravity{0, 0, -9.81};      ///< [m/s^2]
+  double end_time = 1;                           ///< [s] simulated
+  double output_interval = 0.05;                 ///< [s] between records
 };
 
-/// The names listed in `text` ("a, b, c"); throws std::invalid_argument naming Scene/Walls
-/// for an empty or repeated name or one with characters other than letters, digits, '_' and
-/// '-'.
-std::vector<std::string> scene_wall_names(const std::string& text);
+/// The names a case file gives to its scene's walls, inlets and outlets: they decide which
+/// subsections exist (the case reader reads them first).
+struct SceneNames {
+  std::string walls, inlets, outlets;
+};
 
-/// The Scene subsection. `s.walls` must already hold one entry per name of the file (the
-/// case reader reads Scene/Walls first), so each wall's subsection is declared and read.
+/// Default parameters with one entry per name, so that their subsections are declared.
+SceneParameters scene_with_names(const SceneNames& names);
+
+/// The names listed in `text` ("a, b, c"); throws std::invalid_argument naming the parameter
+/// `what` (e.g. Scene/Walls) for an empty or repeated name or one with characters other than
+/// letters, digits, '_' and '-'.
+std::vector<std::string> scene_names(const std::string& text, const std::string& what);
+
+/// The Scene subsection. `s.walls`, `s.inlets` and `s.outlets` must already hold one entry
+/// per name of the file (scene_with_names), so each one's subsection is declared and read.
 template <typename Visitor>
 void visit_parameters(SceneParameters& s, Visitor& v) {
   v.enter("Scene");
   v.text("Walls", s.wall_names,
          "Names of the scene's walls, comma-separated; each has a subsection 'Wall <name>'. "
          "Empty: no scene (the built-in wear tester of the Geometry subsection).");
+  v.text("Inlets", s.inlet_names,
+         "Names of the particle inlets, comma-separated; each has a subsection 'Inlet <name>'.");
+  v.text("Outlets", s.outlet_names,
+         "Names of the outlets, comma-separated; each has a subsection 'Outlet <name>'.");
   v.real_list("Domain minimum", s.domain_min,
-              "[m] x, y, z of the domain's lower corner: every wall vertex lies inside.");
+              "[m] x, y, z of the domain's lower corner: every wall vertex lies inside, and a "
+              "particle that leaves the domain stops the run (put an outlet where they go).");
   v.real_list("Domain maximum", s.domain_max, "[m] x, y, z of the domain's upper corner.");
+  v.real_list("Gravity", s.gravity, "[m/s^2] Gravitational acceleration vector.");
+  v.real("End time", s.end_time, "[s] Simulated time of `wearsim scene-run`.");
+  v.real("Output interval", s.output_interval,
+         "[s] Simulated time between records of the run's series (and progress lines).");
+  v.enter("Fill");
+  v.selection("Region", s.fill.region, "none|box",
+              "Particles in place at the start: none, or random in an axis-aligned box (the "
+              "DEM subsection's size distribution and particle material).");
+  v.real_list("Minimum", s.fill.minimum, "[m] The box's lower corner.");
+  v.real_list("Maximum", s.fill.maximum, "[m] The box's upper corner.");
+  v.count("Count", s.fill.count,
+          "Particles to place; 0: as many as settle to Bed height above the box's floor.");
+  v.real("Bed height", s.fill.bed_height,
+         "[m] Settled bed height above the box's floor when Count is 0 (the particles are "
+         "placed loosely above and settle under gravity before the run starts).");
+  v.leave();
+  for (auto& in : s.inlets) {
+    v.enter("Inlet " + in.name);
+    v.real_list("Corner", in.corner, "[m] A corner of the inlet rectangle.");
+    v.real_list("Edge u", in.edge_u, "[m] The rectangle's first edge from Corner.");
+    v.real_list("Edge v", in.edge_v, "[m] The rectangle's second edge from Corner.");
+    v.real("Mass flow rate", in.mass_flow,
+           "[kg/s] Particle mass fed per second; particles appear in the box behind the "
+           "rectangle (upstream, two largest diameters deep), clear of each other.");
+    v.real_list("Velocity", in.velocity,
+                "[m/s] Velocity of each new particle; must cross the rectangle.");
+    v.real("Start time", in.start_time, "[s] When the feed starts.");
+    v.real("End time", in.end_time, "[s] When it stops; 0: at the end of the run.");
+    v.leave();
+  }
+  for (auto& out : s.outlets) {
+    v.enter("Outlet " + out.name);
+    v.real_list("Minimum", out.minimum, "[m] The outlet box's lower corner.");
+    v.real_list("Maximum", out.maximum,
+                "[m] Its upper corner: particles whose centres enter the box leave the run "
+                "and their mass is booked to the outlet.");
+    v.leave();
+  }
   for (auto& w : s.walls) {
     v.enter("Wall " + w.name);
     v.selection("Source", w.source, "file|plane|disc|cylinder|cone|box",
@@ -78,6 +171,9 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
                 "[m] Disc: the normal (any length); cylinder, cone: base to top; box: its size.");
     v.real("Radius", w.radius, "[m] Disc, cylinder; the cone's base.");
     v.real("Top radius", w.radius_top, "[m] The cone's top (0: pointed).");
+    v.real("Inner radius", w.radius_inner,
+           "[m] Disc: a central hole of this radius (an annulus, e.g. a hopper's flat floor "
+           "around its orifice); 0: none.");
     v.boolean("Caps", w.caps, "Cylinder, cone: with the end discs (a closed solid).");
     v.selection("Material", w.material, "wall|sample|holder",
                 "The DEM material of the wall: one of the DEM subsection's Wall, Sample and "
@@ -87,14 +183,20 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
               "closed solid (the FEM part).");
     v.selection("Motion", w.motion, "fixed|rotation|translation|oscillation",
                 "fixed; rotation about Axis point and Rotation axis at Angular velocity; "
-                "translation at Velocity; oscillation A sin(2 pi f t) of Amplitude and "
-                "Frequency.");
+                "translation at Velocity; oscillation A sin(2 pi f (t - t0)) of Amplitude and "
+                "Frequency. The whole wall moves as a rigid body from Start time t0 on.");
     v.real_list("Axis point", w.axis_point, "[m] A point of the rotation axis.");
     v.real_list("Rotation axis", w.rotation_axis, "[-] Direction of the rotation axis.");
     v.real("Angular velocity", w.angular_velocity, "[rad/s] Right-handed about Rotation axis.");
     v.real_list("Velocity", w.velocity, "[m/s] Translation velocity.");
     v.real_list("Amplitude", w.amplitude, "[m] Oscillation amplitude vector.");
     v.real("Frequency", w.frequency, "[Hz] Oscillation frequency.");
+    v.real("Start time", w.start_time,
+           "[s] The wall rests where its file or primitive puts it until this time, then "
+           "moves (e.g. after the particles settled).");
+    v.real("End time", w.end_time,
+           "[s] The wall stops where the motion brought it (e.g. a gate that opened); 0: it "
+           "never stops.");
     v.leave();
   }
   v.leave();
@@ -104,6 +206,10 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
 std::string scene_wall_path(const SceneWallParameters& w);
 /// The three values of a checked list (x, y, z) as a vector.
 meshes::Vec3 scene_vector(const std::vector<double>& v);
+
+/// The wall's motion for the engine (dem/engine/rigid_motion.h): only the parameters of the
+/// chosen Motion enter; a fixed wall gets the motion that does not move.
+RigidMotion rigid_motion(const SceneWallParameters& w);
 
 /// Checks the values on their own (list lengths, signs, a file given where needed); throws
 /// std::invalid_argument naming the parameter by its case-file path.

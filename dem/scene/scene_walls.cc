@@ -38,6 +38,7 @@ meshes::CadSurface surface_of(const SceneWallParameters& w, const meshes::Boundi
   p.axis = scene_vector(w.axis);
   p.radius = w.radius;
   p.radius_top = w.radius_top;
+  p.radius_inner = w.radius_inner;
   p.caps = w.caps;
   return meshes::primitive_surface(p, w.mesh_size, what + " (" + w.source + ")", domain);
 }

@@ -150,6 +150,17 @@ TEST_CASE("CAD import: primitives have their analytic areas", "[meshes][cad]") {
   for (const auto& v : d.mesh.vertices)
     off_plane = std::max(off_plane, std::abs(dot(v - disc.origin, Vec3{1, 1, 0}) / std::sqrt(2.0)));
   CHECK(off_plane < 1e-12);
+  // With a hole: an annulus (a hopper's floor), its inner boundary the hole's circle.
+  disc.radius_inner = 0.03;
+  const auto ring = primitive_surface(disc, size, "Scene/ring");
+  CHECK(total_area(ring.mesh) == Approx(M_PI * (0.01 - 0.0009)).epsilon(2e-3));
+  double nearest = 1;
+  for (const auto& v : ring.mesh.vertices)
+    nearest = std::min(nearest, norm(v - disc.origin));
+  CHECK(nearest == Approx(0.03).epsilon(1e-9));
+  disc.radius_inner = 0.1;
+  CHECK_THROWS_WITH(primitive_surface(disc, size, "Scene/ring"), Catch::Contains("hole"));
+  disc.radius_inner = 0;
 
   Primitive tube;
   tube.kind = PrimitiveKind::cylinder;

@@ -1,0 +1,119 @@
+// Particles that enter and leave a running System (inlets and outlets of a scene).
+//
+// Changes happen between steps, inside a list rebuild: the old lists' pair histories and
+// wall slots are first keyed by the particles' stable ids, then particles are removed (the
+// real arrays compacted in order) and appended (new ids from next_id_, never reused), then
+// the new lists are built and take the histories of the pairs and wall contacts that stay.
+// An inserted particle starts with gravity as its force (its first half-kick), a removed
+// one leaves its last contact forces on its partners for their closing half-kick: the same
+// as a contact that opens or closes within a step.
+#include "dem/engine/system.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace wear::dem {
+
+std::int64_t first_free_id(const std::int64_t* id, std::size_t n) {
+  std::int64_t bound = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    // Pair keys hold two ids in 32 bits each.
+    if (id[i] < 0 || id[i] >= (std::int64_t(1) << 32) - 1)
+      throw std::invalid_argument("DEM: particle id " + std::to_string(id[i]) +
+                                  " lies outside 0 .. 2^32 - 2");
+    bound = std::max(bound, id[i] + 1);
+  }
+  std::vector<char> seen(std::size_t(bound), 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (seen[std::size_t(id[i])])
+      throw std::invalid_argument("DEM: particle id " + std::to_string(id[i]) + " is given twice");
+    seen[std::size_t(id[i])] = 1;
+  }
+  return bound;
+}
+
+void System::insert_particles(const std::vector<NewParticle>& batch) {
+  if (!set_up_)
+    throw std::logic_error("System::insert_particles() before setup(): add them to particles");
+  for (std::size_t k = 0; k < batch.size(); ++k) {
+    const NewParticle& q = batch[k];
+    const std::string what = "DEM: inserted particle " + std::to_string(k) + " of the batch";
+    if (!(q.radius > 0) || !std::isfinite(q.radius))
+      throw std::invalid_argument(what + " has a non-positive radius");
+    if (!(q.density > 0) || !std::isfinite(q.density))
+      throw std::invalid_argument(what + " has a non-positive density");
+    if (q.material < 0 || q.material >= materials.n_materials())
+      throw std::invalid_argument(what + " refers to an unknown material");
+    if (q.radius > r_max_)
+      throw std::invalid_argument(what + " is larger (r = " + std::to_string(q.radius) +
+                                  " m) than the largest particle at setup, which fixed the "
+                                  "list reach (r = " +
+                                  std::to_string(r_max_) + " m)");
+  }
+  if (batch.empty())
+    return;
+  const ParticleChanges changes{&batch, nullptr, nullptr};
+  rebuild(false, &changes);
+}
+
+std::vector<RemovedParticle>
+System::remove_particles(const std::function<bool(const Vec3&, double)>& remove) {
+  if (!set_up_)
+    throw std::logic_error("System::remove_particles() before setup()");
+  std::vector<RemovedParticle> removed;
+  bool any = false;
+  for (std::size_t i = 0; i < particles.n_real && !any; ++i)
+    any = remove(particles.position[i], particles.radius[i]);
+  if (!any)
+    return removed;
+  const ParticleChanges changes{nullptr, &remove, &removed};
+  rebuild(false, &changes);
+  return removed;
+}
+
+void System::apply_particle_changes(const ParticleChanges& changes) {
+  auto& p = particles;
+  std::size_t n = p.n_real;
+  if (changes.remove) {
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      if ((*changes.remove)(p.position[i], p.radius[i])) {
+        if (changes.removed)
+          changes.removed->push_back({p.id[i], p.position[i], p.velocity[i], p.mass[i]});
+        continue;
+      }
+      if (kept != i) {
+        p.position[kept] = p.position[i];
+        p.velocity[kept] = p.velocity[i];
+        p.angular_velocity[kept] = p.angular_velocity[i];
+        p.force[kept] = p.force[i];
+        p.torque[kept] = p.torque[i];
+        p.radius[kept] = p.radius[i];
+        p.mass[kept] = p.mass[i];
+        p.inertia[kept] = p.inertia[i];
+        p.material[kept] = p.material[i];
+        p.id[kept] = p.id[i];
+      }
+      ++kept;
+    }
+    n = kept;
+    if (n == 0)
+      throw std::runtime_error(
+          "DEM: the outlets removed every particle at t = " + std::to_string(time_) + " s");
+  }
+  p.n_real = n;
+  p.resize_ghosts(0); // make_ghosts() sizes the ghost region anew
+  if (changes.insert)
+    for (const NewParticle& q : *changes.insert) {
+      p.add(q.position, q.velocity, q.radius, q.density, q.material);
+      p.angular_velocity.back() = q.angular_velocity;
+      p.force.back() = settings.gravity * p.mass.back();
+      if (next_id_ >= (std::int64_t(1) << 32) - 1)
+        throw std::runtime_error("DEM: particle ids are exhausted (2^32 - 1 inserted)");
+      p.id.back() = next_id_++;
+    }
+}
+
+} // namespace wear::dem

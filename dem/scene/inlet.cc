@@ -1,0 +1,171 @@
+// The inlet (inlet.h): a mass flow rate W [kg/s] fed through a rectangle.
+//
+// Insertion box: the rectangle (corner c, edges u, v, unit normal n = u x v / |u x v| turned
+// along the velocity) swept upstream by a depth D = 2 d_max. A particle with the inlet's
+// velocity crosses it in dt_b = D / (v . n), the batch interval: the previous batch has left
+// the box when the next one comes, so each batch finds it (nearly) empty. The box at the
+// requested rate holds a solid fraction phi = W / (rho A (v . n)); random sequential
+// placement jams near 0.3, so phi above 0.2 is refused.
+//
+// Mass: a batch at time t places particles while the inserted mass stays within half a
+// particle of W (min(t, t_end) - t_start): the rate is met to one particle over any window.
+// Sizes are drawn one by one from the number fractions n_k ~ f_k / d_k^3 (std::mt19937_64,
+// seeded); a particle that finds no place after 1000 tries stays first in line for the next
+// batch. Positions: uniform in the box shrunk by the radius, clear of the particles of the
+// system within the box (plus a diameter) and of the batch's own (InsertionGrid).
+#include "dem/scene/inlet.h"
+
+#include "dem/engine/insertion_grid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace wear::dem {
+
+namespace {
+constexpr double pi = 3.14159265358979323846;
+constexpr int max_tries = 1000;
+
+double sphere_mass(double d, double density) {
+  return density * pi / 6 * d * d * d;
+}
+} // namespace
+
+Inlet::Inlet(InletSpec spec) : spec_(std::move(spec)), rng_(spec_.seed) {
+  const std::string what = "Scene/Inlet " + spec_.name;
+  spec_.psd.validate();
+  const Vec3 n = meshes::cross(spec_.edge_u, spec_.edge_v);
+  const double area = meshes::norm(n);
+  if (!(area > 0))
+    throw std::invalid_argument(what + ": Edge u and Edge v span no area");
+  normal_ = n / area;
+  normal_speed_ = meshes::dot(spec_.velocity, normal_);
+  if (normal_speed_ < 0) {
+    normal_ = normal_ * -1.0;
+    normal_speed_ = -normal_speed_;
+  }
+  if (!(normal_speed_ > 1e-3 * meshes::norm(spec_.velocity)) || !(normal_speed_ > 0))
+    throw std::invalid_argument(what + ": Velocity must cross the inlet rectangle (it is " +
+                                "parallel to it or zero)");
+  if (!(spec_.mass_flow > 0) || !std::isfinite(spec_.mass_flow))
+    throw std::invalid_argument(what + ": Mass flow rate must be positive [kg/s]");
+  if (!(spec_.density > 0))
+    throw std::invalid_argument(what + ": the particle density must be positive");
+  if (!(spec_.end_time > spec_.start_time))
+    throw std::invalid_argument(what + ": End time must lie after Start time");
+  depth_ = 2 * spec_.psd.max_diameter();
+  const double edge = std::min(meshes::norm(spec_.edge_u), meshes::norm(spec_.edge_v));
+  if (edge < 2 * spec_.psd.max_diameter())
+    throw std::invalid_argument(what + ": the rectangle is narrower than two of the largest "
+                                       "particles");
+  const double phi = box_solid_fraction();
+  if (phi > 0.2) {
+    std::ostringstream s;
+    s << what << ": " << spec_.mass_flow << " kg/s through " << area << " m^2 at " << normal_speed_
+      << " m/s fills the insertion box to a solid fraction of " << phi
+      << "; random placement needs it below 0.2: raise the speed across the inlet or its "
+         "area";
+    throw std::invalid_argument(s.str());
+  }
+  const auto frac = spec_.psd.number_fractions();
+  double sum = 0;
+  for (double f : frac)
+    cumulative_.push_back(sum += f);
+}
+
+double Inlet::box_solid_fraction() const {
+  const double area = meshes::norm(meshes::cross(spec_.edge_u, spec_.edge_v));
+  return spec_.mass_flow / (spec_.density * area * normal_speed_);
+}
+
+double Inlet::owed_mass(double t) const {
+  const double running = std::max(0.0, std::min(t, spec_.end_time) - spec_.start_time);
+  return spec_.mass_flow * running - done_.inserted_mass;
+}
+
+double Inlet::next_diameter() {
+  if (done_.pending.empty()) {
+    const double u = std::uniform_real_distribution<double>(0, 1)(rng_);
+    std::size_t k = 0;
+    while (k + 1 < cumulative_.size() && u >= cumulative_[k])
+      ++k;
+    done_.pending.push_back(spec_.psd.diameters[k] * spec_.psd.scaling_factor);
+  }
+  return done_.pending.front();
+}
+
+std::vector<NewParticle> Inlet::batch(double t, const Particles& existing) {
+  std::vector<NewParticle> out;
+  if (t < spec_.start_time)
+    return out;
+  const double d_max = spec_.psd.max_diameter();
+  // The particles of the system that may touch the box, and the batch's own, in one set.
+  Particles near;
+  const Vec3 u = spec_.edge_u, v = spec_.edge_v, back = normal_ * -depth_;
+  const double uu = meshes::dot(u, u), vv = meshes::dot(v, v);
+  const auto in_box = [&](const Vec3& x, double margin) {
+    const Vec3 d = x - spec_.corner;
+    const double a = meshes::dot(d, u) / std::sqrt(uu), b = meshes::dot(d, v) / std::sqrt(vv),
+                 c = -meshes::dot(d, normal_);
+    return a >= -margin && a <= std::sqrt(uu) + margin && b >= -margin &&
+           b <= std::sqrt(vv) + margin && c >= -margin && c <= depth_ + margin;
+  };
+  for (std::size_t i = 0; i < existing.n_real; ++i)
+    if (in_box(existing.position[i], d_max))
+      near.add(existing.position[i], {}, existing.radius[i], 1, 0);
+  InsertionGrid grid(near, d_max);
+  std::uniform_real_distribution<double> unit(0, 1);
+  const double target = owed_mass(t) + done_.inserted_mass;
+  while (true) {
+    const double d = next_diameter(), r = 0.5 * d, m = sphere_mass(d, spec_.density);
+    if (done_.inserted_mass + m > target + 0.5 * m)
+      break;
+    bool placed = false;
+    for (int k = 0; k < max_tries && !placed; ++k) {
+      // Uniform over the box shrunk by r (the rectangle's edges and both faces of the box).
+      const double a = r + (1 - 2 * r / std::sqrt(uu)) * std::sqrt(uu) * unit(rng_);
+      const double b = r + (1 - 2 * r / std::sqrt(vv)) * std::sqrt(vv) * unit(rng_);
+      const double c = r + (depth_ - 2 * r) * unit(rng_);
+      const Vec3 x =
+          spec_.corner + u * (a / std::sqrt(uu)) + v * (b / std::sqrt(vv)) + back * (c / depth_);
+      if (grid.overlaps(near, x, r))
+        continue;
+      grid.add(x, std::uint32_t(near.n_real));
+      near.add(x, {}, r, 1, 0);
+      NewParticle q;
+      q.position = x;
+      q.velocity = spec_.velocity;
+      q.radius = r;
+      q.density = spec_.density;
+      q.material = spec_.material;
+      out.push_back(q);
+      placed = true;
+    }
+    if (!placed)
+      break; // it waits, first in line, for the next batch
+    done_.pending.erase(done_.pending.begin());
+    done_.inserted_mass += m;
+    ++done_.n_inserted;
+  }
+  return out;
+}
+
+InletState Inlet::state() const {
+  InletState s = done_;
+  std::ostringstream o;
+  o << rng_;
+  s.rng = o.str();
+  return s;
+}
+
+void Inlet::restore(const InletState& s) {
+  done_ = s;
+  std::istringstream in(s.rng);
+  in >> rng_;
+  if (!in)
+    throw std::invalid_argument("Scene/Inlet " + spec_.name + ": cannot read the saved state");
+}
+
+} // namespace wear::dem

@@ -1,0 +1,284 @@
+// A scene's DEM run (scene_run.h).
+//
+// Engine settings follow the DEM subsection's size distribution, not the particles present
+// at set-up, since inlets add particles later: time step = Time step fraction x the Rayleigh
+// time of the smallest particle, T_R = pi r sqrt(rho / G) / (0.1631 nu + 0.8766); skin =
+// half the smallest radius; list reach = the largest radius. Every wall accumulates its
+// per-face integrals (engine "wearing" walls), so each gets its force, moment and Archard
+// load-distance per window; `Wears` marks the FEM part only.
+//
+// Time: inlet batches and outlets act every exchange interval (the shortest inlet interval,
+// at most a tenth of the output interval), the engine stepping in between. A scene that
+// starts empty sets the engine up at its first particle, its clock starting there.
+//
+// The fill box is checked against every wall triangle (separating axes, exact) before any
+// particle exists: particles placed through a wall would start overlapping it.
+#include "dem/scene/scene_run.h"
+
+#include "dem/tester/wear_tester.h"
+
+#include "meshes/triangle_geometry.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace wear::dem {
+
+namespace {
+constexpr double pi = 3.14159265358979323846;
+
+Material material(const std::string& name, const DemMaterial& m) {
+  return {name, 2 * m.shear_modulus * (1 + m.poisson_ratio), m.poisson_ratio, m.density};
+}
+
+Vec3 vec(const std::vector<double>& v) {
+  return scene_vector(v);
+}
+
+/// The box the fill places particles in: the Fill box, or for a bed height the part of it
+/// up to 2.5 heights above its floor (loose, before settling).
+constexpr double loose_factor = 2.5;
+std::pair<Vec3, Vec3> fill_box(const SceneFillParameters& f) {
+  Vec3 lo = vec(f.minimum), hi = vec(f.maximum);
+  if (f.count == 0)
+    hi.z = lo.z + loose_factor * f.bed_height;
+  return {lo, hi};
+}
+
+/// Throws when a triangle of a wall cuts the box [lo, hi], naming the wall and its file.
+void require_clear_of_walls(const std::vector<SceneWall>& walls, const Vec3& lo, const Vec3& hi) {
+  for (const auto& w : walls) {
+    const auto& m = w.surface.mesh;
+    for (std::size_t f = 0; f < m.n_faces(); ++f) {
+      const auto& t = m.triangles[f];
+      const Vec3 a = m.vertices[t[0]], b = m.vertices[t[1]], c = m.vertices[t[2]];
+      if (!meshes::triangle_intersects_box(a, b, c, lo, hi))
+        continue;
+      const Vec3 at = (a + b + c) / 3.0;
+      std::ostringstream s;
+      s << "Scene/Fill: the box (" << lo.x << ", " << lo.y << ", " << lo.z << ") .. (" << hi.x
+        << ", " << hi.y << ", " << hi.z << ") m";
+      if (w.parameters.source == "file")
+        s << " intersects wall '" << w.parameters.name << "' ('" << w.parameters.file << "', unit "
+          << w.parameters.unit << ")";
+      else
+        s << " intersects wall '" << w.parameters.name << "' (" << w.parameters.source << ")";
+      s << " near (" << at.x << ", " << at.y << ", " << at.z
+        << ") m: particles would start inside it; move the box clear of the walls";
+      throw std::invalid_argument(s.str());
+    }
+  }
+}
+} // namespace
+
+SceneRun::SceneRun(const SceneParameters& scene, const TesterDemParameters& dem,
+                   std::vector<SceneWall> walls)
+    : scene_(scene), dem_(dem), walls_(std::move(walls)) {
+  validate(scene_);
+  validate(dem_);
+  if (scene_.fill.region == "box") {
+    const auto [lo, hi] = fill_box(scene_.fill);
+    if (hi.z > scene_.fill.maximum[2])
+      throw std::invalid_argument("Scene/Fill: a bed of " + std::to_string(scene_.fill.bed_height) +
+                                  " m is placed loosely up to 2.5 times its height above the "
+                                  "box's floor; raise Maximum z to at least " +
+                                  std::to_string(hi.z) + " m");
+    require_clear_of_walls(walls_, lo, hi);
+  }
+  // Materials first: the inlets need the particle material's index.
+  add_materials_and_walls();
+  exchange_ = 0.1 * scene_.output_interval;
+  for (std::size_t k = 0; k < scene_.inlets.size(); ++k) {
+    const auto& in = scene_.inlets[k];
+    InletSpec spec;
+    spec.name = in.name;
+    spec.corner = vec(in.corner);
+    spec.edge_u = vec(in.edge_u);
+    spec.edge_v = vec(in.edge_v);
+    spec.mass_flow = in.mass_flow;
+    spec.velocity = vec(in.velocity);
+    spec.start_time = in.start_time;
+    if (in.end_time > 0)
+      spec.end_time = in.end_time;
+    spec.psd = dem_.psd;
+    spec.density = dem_.particle.density;
+    spec.material = particle_material_;
+    spec.seed = dem_.seed + 1000003 * (k + 1); // one stream per inlet, apart from the fill's
+    inlets_.emplace_back(spec);
+    exchange_ = std::min(exchange_, inlets_.back().interval());
+  }
+  for (const auto& out : scene_.outlets)
+    outlets_.push_back({out.name, vec(out.minimum), vec(out.maximum), 0, 0});
+}
+
+void SceneRun::add_materials_and_walls() {
+  auto& m = system_.materials;
+  particle_material_ = m.add(material("particle", dem_.particle));
+  const int wall = m.add(material("walls", dem_.walls));
+  const int sample = m.add(material("sample", dem_.sample));
+  const int holder = m.add(material("holder", dem_.holder));
+  m.set_pair(particle_material_, particle_material_, dem_.particle_particle);
+  for (int w : {wall, sample, holder}) {
+    m.set_pair(particle_material_, w, dem_.particle_wall);
+    for (int other : {wall, sample, holder})
+      m.set_pair(w, other, dem_.particle_wall); // walls never meet
+  }
+  for (const auto& w : walls_) {
+    const std::string& name = w.parameters.material;
+    const int id = name == "sample" ? sample : name == "holder" ? holder : wall;
+    MeshWall mesh_wall(w.surface.mesh, id, WallMotion{}, true, w.parameters.name);
+    mesh_wall.set_rigid_motion(rigid_motion(w.parameters));
+    system_.add_wall(mesh_wall);
+  }
+  auto& s = system_.settings;
+  s.gravity = vec(scene_.gravity);
+  s.domain = {vec(scene_.domain_min), vec(scene_.domain_max)};
+  const double r_min = 0.5 * dem_.psd.min_diameter();
+  const Material particle = material("particle", dem_.particle);
+  const double rayleigh = pi * r_min * std::sqrt(particle.density / particle.shear_modulus()) /
+                          (0.1631 * particle.poisson_ratio + 0.8766);
+  s.time_step = dem_.time_step_fraction * rayleigh;
+  s.skin = 0.5 * r_min;
+  s.max_radius = 0.5 * dem_.psd.max_diameter();
+  s.max_speed = dem_.max_speed;
+}
+
+void SceneRun::setup(const std::function<void(const std::string&)>& progress) {
+  const auto say = [&](const std::string& text) {
+    if (progress)
+      progress(text);
+  };
+  if (dem_.n_threads > 0)
+    omp_set_num_threads(dem_.n_threads); // the engine takes OpenMP's count at its set-up
+  fill(progress);
+  if (system_.particles.n_real > 0 && !engine_ready()) {
+    system_.setup();
+    say("set up with " + std::to_string(system_.particles.n_real) + " particles");
+  }
+  time_ = engine_ready() ? system_.time() : 0.0;
+}
+
+void SceneRun::fill(const std::function<void(const std::string&)>& progress) {
+  const auto& f = scene_.fill;
+  if (f.region != "box")
+    return;
+  const auto [lo, hi] = fill_box(f);
+  const double r_max = 0.5 * dem_.psd.max_diameter();
+  if (f.count > 0) {
+    const std::size_t got =
+        insert_random(system_.particles, box_region(lo, hi, r_max), dem_.psd, std::size_t(f.count),
+                      dem_.particle.density, particle_material_, dem_.seed);
+    if (got < f.count)
+      throw std::runtime_error("Scene/Fill: only " + std::to_string(got) + " of " +
+                               std::to_string(f.count) +
+                               " particles fit into the box; enlarge it or lower Count");
+    return;
+  }
+  const double area = (hi.x - lo.x) * (hi.y - lo.y);
+  const auto report = fill_to_height(
+      system_,
+      [lo = lo, hi = hi, r_max](double z_top) {
+        return box_region(lo, {hi.x, hi.y, z_top}, r_max);
+      },
+      area, lo.z, f.bed_height, dem_.psd, dem_.particle.density, particle_material_, dem_.seed,
+      loose_factor, 0.01, 2.0,
+      [&](double t) {
+        if (progress)
+          progress("settling the fill: t = " + std::to_string(t) + " s");
+      },
+      dem_.assumed_packing);
+  if (progress)
+    progress("filled: " + std::to_string(report.n_particles) + " particles, bed " +
+             std::to_string(report.bed_height) + " m, settled in " +
+             std::to_string(report.settle_time) + " s");
+}
+
+void SceneRun::exchange() {
+  bool set_up = engine_ready();
+  for (auto& inlet : inlets_) {
+    auto batch = inlet.batch(time_, system_.particles);
+    if (batch.empty())
+      continue;
+    if (set_up) {
+      system_.insert_particles(batch);
+      continue;
+    }
+    for (const auto& q : batch) {
+      system_.particles.add(q.position, q.velocity, q.radius, q.density, q.material);
+      system_.particles.angular_velocity.back() = q.angular_velocity;
+    }
+  }
+  if (!set_up && system_.particles.n_real > 0) {
+    system_.settings.start_time = time_;
+    system_.setup();
+    set_up = true;
+  }
+  if (set_up)
+    n_removed_ += apply_outlets(system_, outlets_);
+}
+
+SceneWindow SceneRun::advance(double t_end) {
+  SceneWindow w;
+  w.t_begin = time_;
+  bool set_up = engine_ready();
+  if (set_up)
+    system_.reset_wear_integrals();
+  double accounted_from = time_;
+  while (time_ < t_end - 1e-9 * exchange_) {
+    const bool was_set_up = set_up;
+    exchange();
+    set_up = engine_ready();
+    if (set_up && !was_set_up) {
+      system_.reset_wear_integrals();
+      accounted_from = time_;
+    }
+    const double next = std::min(t_end, time_ + exchange_);
+    if (set_up) {
+      const auto steps = std::max<std::uint64_t>(
+          1, std::uint64_t(std::llround((next - time_) / system_.time_step())));
+      system_.run(steps);
+      time_ = system_.time();
+    } else {
+      time_ = next;
+    }
+  }
+  w.t_end = time_;
+  const auto& p = system_.particles;
+  w.n_particles = set_up ? p.n_real : 0;
+  for (const auto& in : inlets_) {
+    const auto s = in.state();
+    w.n_inserted += s.n_inserted;
+    w.inserted_mass += s.inserted_mass;
+  }
+  w.n_removed = n_removed_;
+  for (const auto& o : outlets_)
+    w.outlet_mass.push_back(o.removed_mass);
+  const double duration = time_ - accounted_from;
+  w.walls.resize(walls_.size());
+  if (set_up && duration > 0)
+    for (std::size_t k = 0; k < walls_.size(); ++k) {
+      const WearIntegrals wi = system_.wear_integrals(int(k));
+      auto& loads = w.walls[k];
+      loads.force = wi.total_impulse / duration;
+      loads.torque = wi.total_impulse_moment / duration;
+      loads.archard = wi.total_archard;
+      const auto& labels = system_.wall(int(k)).mesh().face_labels;
+      for (std::size_t f = 0; f < labels.size(); ++f)
+        loads.archard_label[labels[f]] += wi.archard[f];
+    }
+  if (set_up && p.n_real > 0) {
+    for (std::size_t i = 0; i < p.n_real; ++i) {
+      const double v = meshes::norm(p.velocity[i]);
+      w.mean_speed += v;
+      w.max_speed = std::max(w.max_speed, v);
+    }
+    w.mean_speed /= double(p.n_real);
+  }
+  return w;
+}
+
+} // namespace wear::dem

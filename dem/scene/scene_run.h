@@ -1,0 +1,81 @@
+#pragma once
+// A scene's DEM run: the user's walls with their motions, particles filled at the start, fed
+// by inlets and drained by outlets, advanced window by window with a record per window.
+#include "dem/engine/system.h"
+#include "dem/scene/inlet.h"
+#include "dem/scene/outlet.h"
+#include "dem/scene/scene_walls.h"
+#include "dem/tester/tester_parameters.h"
+
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace wear::dem {
+
+/// The loads on one wall over a window, in the wall's frame (a moving wall's body frame):
+/// window means of the force on it and of its moment about the origin, and the Archard
+/// load-distance per label (window integral).
+struct WallWindowLoads {
+  Vec3 force;                          ///< [N]
+  Vec3 torque;                         ///< [N m] about the origin
+  double archard = 0;                  ///< [N m] integral of F_n |v_t| dt
+  std::map<int, double> archard_label; ///< [N m] per face label
+};
+
+struct SceneWindow {
+  double t_begin = 0, t_end = 0;               ///< [s]
+  std::size_t n_particles = 0;                 ///< at the end
+  std::uint64_t n_inserted = 0, n_removed = 0; ///< since the start
+  double inserted_mass = 0;                    ///< [kg] since the start
+  std::vector<double> outlet_mass;             ///< [kg] since the start, per outlet
+  std::vector<WallWindowLoads> walls;          ///< per scene wall
+  double mean_speed = 0, max_speed = 0;        ///< [m/s] of the particles at the end
+};
+
+class SceneRun {
+public:
+  /// Takes the built walls (build_scene_walls) and checks what needs them: the fill box
+  /// may not cut a wall (message naming the wall and its file). Throws before any particle
+  /// exists.
+  SceneRun(const SceneParameters& scene, const TesterDemParameters& dem,
+           std::vector<SceneWall> walls);
+
+  /// Materials, walls with their motions, the fill (settled when filled to a bed height)
+  /// and the engine's set-up; `progress` hears what happens.
+  void setup(const std::function<void(const std::string&)>& progress = {});
+  /// Runs on to time t_end [s]: every exchange interval the inlets place their batches and
+  /// the outlets take their particles, then the engine steps. Returns the window's record.
+  SceneWindow advance(double t_end);
+
+  double time() const { return time_; } ///< [s]
+  /// [s] Inlet batches and outlets act this often (the shortest inlet interval).
+  double exchange_interval() const { return exchange_; }
+  const System& system() const { return system_; }
+  const std::vector<SceneWall>& walls() const { return walls_; }
+  const std::vector<Outlet>& outlets() const { return outlets_; }
+  const std::vector<Inlet>& inlets() const { return inlets_; }
+
+private:
+  SceneParameters scene_;
+  TesterDemParameters dem_;
+  std::vector<SceneWall> walls_;
+  std::vector<Inlet> inlets_;
+  std::vector<Outlet> outlets_;
+  System system_;
+  int particle_material_ = 0;
+  double time_ = 0;     ///< [s] scene time (the engine's clock once it is set up)
+  double exchange_ = 0; ///< [s]
+  std::uint64_t n_removed_ = 0;
+
+  /// True once the engine is set up (a set-up builds the lists once at least).
+  bool engine_ready() const { return system_.n_rebuilds() > 0; }
+  void add_materials_and_walls();
+  void fill(const std::function<void(const std::string&)>& progress);
+  /// Inlet batches and outlets at the current time; sets the engine up at the first
+  /// particle when it started empty.
+  void exchange();
+};
+
+} // namespace wear::dem

@@ -1,0 +1,35 @@
+#pragma once
+// Shared scenes of the scene tests.
+#include "dem/scene/scene_parameters.h"
+
+#include <string>
+
+namespace wear::dem::testing {
+
+/// A cylindrical bin (wall 0, its side) of radius R and height H standing on a flat floor
+/// (wall 1) with a central orifice of radius r_o, in a domain reaching 1.5 R around it and
+/// H below and above; below the floor, from z = -H to z = -outlet_gap, the outlet (outlet 0)
+/// takes what falls through. `walls` names the walls, the first two being the side and the
+/// floor (further walls are left at their defaults).
+inline SceneParameters flat_bottomed_bin(const std::string& walls, double R, double H, double r_o,
+                                         double outlet_gap) {
+  SceneParameters s = scene_with_names({walls, "", "below"});
+  s.domain_min = {-1.5 * R, -1.5 * R, -H};
+  s.domain_max = {1.5 * R, 1.5 * R, 1.25 * H};
+  auto& side = s.walls[0];
+  side.source = "cylinder";
+  side.axis = {0, 0, H};
+  side.radius = R;
+  side.mesh_size = R / 10;
+  auto& floor = s.walls[1];
+  floor.source = "disc";
+  floor.axis = {0, 0, 1};
+  floor.radius = R;
+  floor.radius_inner = r_o;
+  floor.mesh_size = std::min(R / 10, r_o / 8); // the orifice's rim a 50-gon
+  s.outlets[0].minimum = s.domain_min;
+  s.outlets[0].maximum = {1.5 * R, 1.5 * R, -outlet_gap};
+  return s;
+}
+
+} // namespace wear::dem::testing

@@ -1,0 +1,103 @@
+// A scene's DEM run (dem/scene/scene_run.h): a bin drains through its orifice with every
+// particle counted, an empty scene fed by an inlet starts at its first particle, and a fill
+// box through a wall is refused before any particle exists.
+#include "dem/scene/scene_run.h"
+#include "dem/tester/wear_tester.h"
+#include "scene_fixtures.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace wear::dem;
+
+namespace {
+
+/// Single-size 6 mm gravel, little rolling friction (a free-flowing bin), one thread.
+TesterDemParameters gravel() {
+  TesterDemParameters d;
+  d.psd = {{0.006}, {1.0}, 1.0};
+  d.particle = {1e7, 0.25, 2650};
+  d.particle_particle = {0.5, 0.5, 0.02};
+  d.particle_wall = {0.5, 0.5, 0.02};
+  d.n_threads = 1;
+  return d;
+}
+
+/// A bin of radius 60 mm on a flat floor with a central orifice; below it an outlet.
+SceneParameters bin(double orifice_radius) {
+  SceneParameters s = testing::flat_bottomed_bin("bin, floor", 0.06, 0.3, orifice_radius, 0.05);
+  s.fill.region = "box";
+  s.fill.minimum = {-0.04, -0.04, 0.005};
+  s.fill.maximum = {0.04, 0.04, 0.2};
+  s.fill.count = 400;
+  s.end_time = 0.4;
+  return s;
+}
+
+} // namespace
+
+TEST_CASE("scene run: a bin drains through its orifice and every particle is counted") {
+  const SceneParameters scene = bin(0.025);
+  SceneRun run(scene, gravel(), build_scene_walls(scene));
+  run.setup();
+  REQUIRE(run.system().particles.n_real == 400);
+  SceneWindow w;
+  while (run.time() < scene.end_time - 1e-9)
+    w = run.advance(std::min(scene.end_time, run.time() + 0.1));
+  INFO(w.n_removed << " removed by t = " << w.t_end << " s");
+  CHECK(w.n_removed > 40);
+  // Filled = in the bin + taken by the outlet, in count and (one size) in mass.
+  CHECK(w.n_particles + w.n_removed == 400);
+  const double m = 2650 * M_PI / 6 * 0.006 * 0.006 * 0.006;
+  CHECK(w.outlet_mass[0] == Approx(double(w.n_removed) * m).epsilon(1e-12));
+  // The floor carries what rests on it: a downward force on it, at most the bin's weight.
+  CHECK(w.walls[1].force.z < 0);
+  CHECK(-w.walls[1].force.z < 1.5 * 400 * m * 9.81);
+}
+
+TEST_CASE("scene run: an empty scene fed by an inlet starts at its first particle") {
+  SceneParameters s = scene_with_names({"plate", "feed", ""});
+  s.domain_min = {-0.3, -0.3, -0.1};
+  s.domain_max = {0.3, 0.3, 0.4};
+  auto& plate = s.walls[0];
+  plate.source = "plane";
+  plate.origin = {-0.2, -0.2, 0};
+  plate.edge_u = {0.4, 0, 0};
+  plate.edge_v = {0, 0.4, 0};
+  plate.mesh_size = 0.05;
+  auto& feed = s.inlets[0];
+  feed.corner = {-0.05, -0.05, 0.2};
+  feed.edge_u = {0.1, 0, 0};
+  feed.edge_v = {0, 0.1, 0};
+  feed.mass_flow = 0.2;
+  feed.velocity = {0, 0, -1};
+  feed.start_time = 0.05;
+  s.end_time = 0.25;
+  SceneRun run(s, gravel(), build_scene_walls(s));
+  run.setup();
+  CHECK(run.system().particles.n_real == 0);
+  const SceneWindow before = run.advance(0.04); // nothing yet
+  CHECK(before.n_particles == 0);
+  const SceneWindow w = run.advance(0.25);
+  const double m = 2650 * M_PI / 6 * 0.006 * 0.006 * 0.006;
+  CHECK(w.n_particles == w.n_inserted);
+  CHECK(w.inserted_mass == Approx(double(w.n_inserted) * m).epsilon(1e-12));
+  // The rate from the start time on, to one particle at the last batch (batches come at the
+  // exchange interval, so up to one interval's mass is still owed at the window's end).
+  const double expected = 0.2 * (w.t_end - 0.05);
+  CHECK(std::abs(w.inserted_mass - expected) <= 0.2 * run.exchange_interval() + m);
+  CHECK(run.system().time() == Approx(w.t_end));
+}
+
+TEST_CASE("scene run: a fill box through a wall is refused before any particle exists") {
+  SceneParameters scene = bin(0.025);
+  scene.fill.maximum = {0.07, 0.04, 0.2}; // through the bin's side at r = 0.06
+  CHECK_THROWS_WITH(SceneRun(scene, gravel(), build_scene_walls(scene)),
+                    Catch::Contains("Scene/Fill") && Catch::Contains("wall 'bin'") &&
+                        Catch::Contains("cylinder"));
+  scene = bin(0.025);
+  scene.fill.minimum = {-0.04, -0.04, -0.01}; // through the floor
+  CHECK_THROWS_WITH(SceneRun(scene, gravel(), build_scene_walls(scene)),
+                    Catch::Contains("wall 'floor'"));
+}
