@@ -3,8 +3,10 @@
 // The series table has one row per record: time, particles in the system, inserted and
 // removed so far (count and mass), the mass each outlet took so far, and per wall the
 // window-mean force and moment about the origin (in the wall's frame: a moving wall's body
-// frame) and the window's Archard load-distance. The mass flow through an outlet is the
-// difference of its column between rows over the interval.
+// frame) and the window's Archard load-distance; the net mass through each flux plane so
+// far. The mass flow through an outlet or a plane is the difference of its column between
+// rows over the interval. scene_wear.csv gives the window's Archard load-distance per wall
+// and label (per CAD surface), the wear per labelled surface group.
 #include "coupling/app/scene_run_command.h"
 
 #include "dem/engine/snapshot.h"
@@ -26,6 +28,8 @@ std::string series_header(const dem::SceneRun& run) {
   h << "time_s,n_particles,n_inserted,n_removed,inserted_mass_kg";
   for (const auto& o : run.outlets())
     h << ",outlet_" << o.name << "_mass_kg";
+  for (const auto& f : run.flux_planes())
+    h << ",flux_" << f.name() << "_mass_kg";
   for (const auto& w : run.walls()) {
     const std::string& n = w.parameters.name;
     h << ",wall_" << n << "_fx_N,wall_" << n << "_fy_N,wall_" << n << "_fz_N,wall_" << n
@@ -42,10 +46,24 @@ std::string series_row(const dem::SceneWindow& w) {
     << w.inserted_mass;
   for (double m : w.outlet_mass)
     r << "," << m;
+  for (double m : w.flux_mass)
+    r << "," << m;
   for (const auto& l : w.walls)
     r << "," << l.force.x << "," << l.force.y << "," << l.force.z << "," << l.torque.x << ","
       << l.torque.y << "," << l.torque.z << "," << l.archard;
   r << "," << w.mean_speed << "," << w.max_speed << "\n";
+  return r.str();
+}
+
+/// The window's Archard load-distance per wall and label (the wear per labelled surface
+/// group: a CAD file's surfaces, a primitive's faces).
+std::string wear_rows(const dem::SceneRun& run, const dem::SceneWindow& w) {
+  std::ostringstream r;
+  r.precision(9);
+  for (std::size_t k = 0; k < w.walls.size(); ++k)
+    for (const auto& [label, archard] : w.walls[k].archard_label)
+      r << w.t_end << "," << run.walls()[k].parameters.name << "," << label << "," << archard
+        << "\n";
   return r.str();
 }
 
@@ -75,7 +93,7 @@ void run_scene_run_command(const CaseParameters& p, std::ostream& log) {
       << run.outlets().size() << " outlets; batches and outlets every " << run.exchange_interval()
       << " s; time step " << (run.system().n_rebuilds() > 0 ? run.system().time_step() : 0.0)
       << " s\n";
-  std::string table = series_header(run);
+  std::string table = series_header(run), wear = "time_s,wall,label,archard_window_Nm\n";
   const double end = p.scene.end_time, every = p.scene.output_interval;
   int record = 0;
   char line[256];
@@ -84,6 +102,8 @@ void run_scene_run_command(const CaseParameters& p, std::ostream& log) {
     ++record;
     table += series_row(w);
     meshes::write_atomically(dir + "/scene_series.csv", [&](std::ostream& out) { out << table; });
+    wear += wear_rows(run, w);
+    meshes::write_atomically(dir + "/scene_wear.csv", [&](std::ostream& out) { out << wear; });
     if (w.n_particles > 0)
       dem::write_particles_vtu(run.system().particles,
                                dir + "/particles_" + std::to_string(record) + ".vtu");
@@ -99,7 +119,8 @@ void run_scene_run_command(const CaseParameters& p, std::ostream& log) {
                   w.mean_speed);
     log << line << std::flush;
   }
-  log << "written to " << dir << "/ (scene_series.csv, particles_<k>.vtu, walls_<k>/)\n";
+  log << "written to " << dir
+      << "/ (scene_series.csv, scene_wear.csv, particles_<k>.vtu, walls_<k>/)\n";
 }
 
 } // namespace wear::coupling

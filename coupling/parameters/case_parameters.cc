@@ -208,7 +208,8 @@ CaseParameters read_case(const std::string& path, std::ostream& warnings) {
     declare_parameters(first);
     first.parse_input(path, "", true);
     first.enter_subsection("Scene");
-    names = {first.get("Walls"), first.get("Inlets"), first.get("Outlets")};
+    names = {first.get("Walls"), first.get("Inlets"), first.get("Outlets"),
+             first.get("Flux planes")};
     first.leave_subsection();
   } catch (const std::exception& e) {
     throw std::runtime_error("case file '" + path + "': " + short_message(e));
@@ -258,7 +259,8 @@ CaseParameters read_case(const std::string& path) {
 
 std::string resolved_parameters(const CaseParameters& p) {
   ParameterHandler prm;
-  declare_parameters(prm, {p.scene.wall_names, p.scene.inlet_names, p.scene.outlet_names});
+  declare_parameters(prm, {p.scene.wall_names, p.scene.inlet_names, p.scene.outlet_names,
+                           p.scene.flux_plane_names});
   CaseParameters copy = p;
   Store store{prm};
   visit(copy, store);
@@ -280,7 +282,7 @@ void write_resolved_parameters(const CaseParameters& p, const std::string& path)
 
 void print_parameters(std::ostream& out) {
   ParameterHandler prm;
-  declare_parameters(prm, {"example", "example", "example"});
+  declare_parameters(prm, {"example", "example", "example", "example"});
   prm.print_parameters(out, ParameterHandler::Text);
 }
 

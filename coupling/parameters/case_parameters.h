@@ -54,8 +54,8 @@ struct CaseParameters {
 double stress_averaging_radius(const CaseParameters& p);
 
 /// Declares every subsection and parameter with its default and documentation; the Scene
-/// subsection with one `Wall <name>`, `Inlet <name>` and `Outlet <name>` subsection per name
-/// in `names` (Scene/Walls, Inlets, Outlets).
+/// subsection with one `Wall <name>`, `Inlet <name>`, `Outlet <name>` and `Flux plane <name>`
+/// subsection per name in `names` (Scene/Walls, Inlets, Outlets, Flux planes).
 void declare_parameters(dealii::ParameterHandler& prm, const dem::SceneNames& names = {});
 
 /// Reads a case file. Unknown or misspelled parameters, malformed values, physically
@@ -73,7 +73,7 @@ std::string resolved_parameters(const CaseParameters& p);
 void write_resolved_parameters(const CaseParameters& p, const std::string& path);
 
 /// Prints every parameter with its default and documentation (for --print-parameters); the
-/// Scene's wall, inlet and outlet subsections as for one of each named `example`.
+/// Scene's wall, inlet, outlet and flux-plane subsections as for one of each named `example`.
 void print_parameters(std::ostream& out);
 
 /// Throws std::invalid_argument for a case with scene walls: `command` runs the built-in

@@ -46,12 +46,15 @@ SceneParameters scene_with_names(const SceneNames& names) {
   s.wall_names = names.walls;
   s.inlet_names = names.inlets;
   s.outlet_names = names.outlets;
+  s.flux_plane_names = names.flux_planes;
   for (const auto& name : scene_names(names.walls, "Scene/Walls"))
     s.walls.emplace_back().name = name;
   for (const auto& name : scene_names(names.inlets, "Scene/Inlets"))
     s.inlets.emplace_back().name = name;
   for (const auto& name : scene_names(names.outlets, "Scene/Outlets"))
     s.outlets.emplace_back().name = name;
+  for (const auto& name : scene_names(names.flux_planes, "Scene/Flux planes"))
+    s.flux_planes.emplace_back().name = name;
   return s;
 }
 
@@ -139,6 +142,13 @@ void validate(const SceneParameters& s) {
       throw std::invalid_argument(p + "/Mass flow rate must be positive [kg/s]");
     if (in.start_time < 0 || in.end_time < 0)
       throw std::invalid_argument(p + ": Start time and End time must not be negative [s]");
+  }
+  for (const auto& f : s.flux_planes) {
+    const std::string p = "Scene/Flux plane " + f.name;
+    three(f.point, p + "/Point");
+    three(f.normal, p + "/Normal");
+    if (meshes::norm(scene_vector(f.normal)) == 0)
+      throw std::invalid_argument(p + "/Normal must not be zero");
   }
   for (const auto& out : s.outlets) {
     const std::string p = "Scene/Outlet " + out.name;

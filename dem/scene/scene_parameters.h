@@ -59,6 +59,13 @@ struct SceneOutletParameters {
   std::vector<double> maximum{0, 0, 0}; ///< [m]
 };
 
+/// A plane through which the run counts the net mass (flux_plane.h).
+struct SceneFluxPlaneParameters {
+  std::string name;                     ///< from Scene/Flux planes
+  std::vector<double> point{0, 0, 0};   ///< [m]
+  std::vector<double> normal{0, 0, -1}; ///< [-] forward
+};
+
 /// Particles in place at the start: none, or a box filled at random to a count, or to a
 /// bed height after settling.
 struct SceneFillParameters {
@@ -76,6 +83,8 @@ struct SceneParameters {
   std::vector<SceneInletParameters> inlets;   ///< one per name, in that order
   std::string outlet_names;                   ///< "Outlets"
   std::vector<SceneOutletParameters> outlets; ///< one per name, in that order
+  std::string flux_plane_names;               ///< "Flux planes"
+  std::vector<SceneFluxPlaneParameters> flux_planes; ///< one per name, in that order
   SceneFillParameters fill;
   std::vector<double> domain_min{-10, -10, -10}; ///< [m] particles and walls stay inside
   std::vector<double> domain_max{10, 10, 10};    ///< [m]
@@ -87,7 +96,7 @@ struct SceneParameters {
 /// The names a case file gives to its scene's walls, inlets and outlets: they decide which
 /// subsections exist (the case reader reads them first).
 struct SceneNames {
-  std::string walls, inlets, outlets;
+  std::string walls, inlets, outlets, flux_planes;
 };
 
 /// Default parameters with one entry per name, so that their subsections are declared.
@@ -110,6 +119,9 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
          "Names of the particle inlets, comma-separated; each has a subsection 'Inlet <name>'.");
   v.text("Outlets", s.outlet_names,
          "Names of the outlets, comma-separated; each has a subsection 'Outlet <name>'.");
+  v.text("Flux planes", s.flux_plane_names,
+         "Names of planes through which the run counts the net mass, comma-separated; each "
+         "has a subsection 'Flux plane <name>'.");
   v.real_list("Domain minimum", s.domain_min,
               "[m] x, y, z of the domain's lower corner: every wall vertex lies inside, and a "
               "particle that leaves the domain stops the run (put an outlet where they go).");
@@ -127,8 +139,10 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
   v.count("Count", s.fill.count,
           "Particles to place; 0: as many as settle to Bed height above the box's floor.");
   v.real("Bed height", s.fill.bed_height,
-         "[m] Settled bed height above the box's floor when Count is 0 (the particles are "
-         "placed loosely above and settle under gravity before the run starts).");
+         "[m] Settled bed height above the box's floor when Count is 0: the count is that of "
+         "a bed of the DEM subsection's Assumed packing over the box's footprint, placed "
+         "loosely above and settled under gravity before the run starts. A bed that spreads "
+         "wider than the box (a container larger than it) settles lower.");
   v.leave();
   for (auto& in : s.inlets) {
     v.enter("Inlet " + in.name);
@@ -142,6 +156,13 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
                 "[m/s] Velocity of each new particle; must cross the rectangle.");
     v.real("Start time", in.start_time, "[s] When the feed starts.");
     v.real("End time", in.end_time, "[s] When it stops; 0: at the end of the run.");
+    v.leave();
+  }
+  for (auto& f : s.flux_planes) {
+    v.enter("Flux plane " + f.name);
+    v.real_list("Point", f.point, "[m] A point of the plane.");
+    v.real_list("Normal", f.normal,
+                "[-] The plane's normal: particles crossing along it count +, against it -.");
     v.leave();
   }
   for (auto& out : s.outlets) {

@@ -7,9 +7,9 @@
 // per-face integrals (engine "wearing" walls), so each gets its force, moment and Archard
 // load-distance per window; `Wears` marks the FEM part only.
 //
-// Time: inlet batches and outlets act every exchange interval (the shortest inlet interval,
-// at most a tenth of the output interval), the engine stepping in between. A scene that
-// starts empty sets the engine up at its first particle, its clock starting there.
+// Time: inlet batches, flux-plane samples and outlets act every exchange interval (the shortest
+// inlet interval, at most a tenth of the output interval), the engine stepping in between. A scene
+// that starts empty sets the engine up at its first particle, its clock starting there.
 //
 // The fill box is checked against every wall triangle (separating axes, exact) before any
 // particle exists: particles placed through a wall would start overlapping it.
@@ -113,6 +113,8 @@ SceneRun::SceneRun(const SceneParameters& scene, const TesterDemParameters& dem,
   }
   for (const auto& out : scene_.outlets)
     outlets_.push_back({out.name, vec(out.minimum), vec(out.maximum), 0, 0});
+  for (const auto& f : scene_.flux_planes)
+    flux_planes_.emplace_back(f.name, vec(f.point), vec(f.normal));
 }
 
 void SceneRun::add_materials_and_walls() {
@@ -217,8 +219,11 @@ void SceneRun::exchange() {
     system_.setup();
     set_up = true;
   }
-  if (set_up)
-    n_removed_ += apply_outlets(system_, outlets_);
+  if (!set_up)
+    return;
+  for (auto& plane : flux_planes_) // before the outlets: a particle that crossed is counted
+    plane.sample(system_.particles);
+  n_removed_ += apply_outlets(system_, outlets_);
 }
 
 SceneWindow SceneRun::advance(double t_end) {
@@ -257,6 +262,8 @@ SceneWindow SceneRun::advance(double t_end) {
   w.n_removed = n_removed_;
   for (const auto& o : outlets_)
     w.outlet_mass.push_back(o.removed_mass);
+  for (const auto& f : flux_planes_)
+    w.flux_mass.push_back(f.net_mass());
   const double duration = time_ - accounted_from;
   w.walls.resize(walls_.size());
   if (set_up && duration > 0)

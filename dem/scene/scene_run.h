@@ -2,6 +2,7 @@
 // A scene's DEM run: the user's walls with their motions, particles filled at the start, fed
 // by inlets and drained by outlets, advanced window by window with a record per window.
 #include "dem/engine/system.h"
+#include "dem/scene/flux_plane.h"
 #include "dem/scene/inlet.h"
 #include "dem/scene/outlet.h"
 #include "dem/scene/scene_walls.h"
@@ -30,8 +31,9 @@ struct SceneWindow {
   std::uint64_t n_inserted = 0, n_removed = 0; ///< since the start
   double inserted_mass = 0;                    ///< [kg] since the start
   std::vector<double> outlet_mass;             ///< [kg] since the start, per outlet
-  std::vector<WallWindowLoads> walls;          ///< per scene wall
-  double mean_speed = 0, max_speed = 0;        ///< [m/s] of the particles at the end
+  std::vector<double> flux_mass;        ///< [kg] net mass through each flux plane since the start
+  std::vector<WallWindowLoads> walls;   ///< per scene wall
+  double mean_speed = 0, max_speed = 0; ///< [m/s] of the particles at the end
 };
 
 class SceneRun {
@@ -56,6 +58,7 @@ public:
   const std::vector<SceneWall>& walls() const { return walls_; }
   const std::vector<Outlet>& outlets() const { return outlets_; }
   const std::vector<Inlet>& inlets() const { return inlets_; }
+  const std::vector<FluxPlane>& flux_planes() const { return flux_planes_; }
 
 private:
   SceneParameters scene_;
@@ -63,6 +66,7 @@ private:
   std::vector<SceneWall> walls_;
   std::vector<Inlet> inlets_;
   std::vector<Outlet> outlets_;
+  std::vector<FluxPlane> flux_planes_;
   System system_;
   int particle_material_ = 0;
   double time_ = 0;     ///< [s] scene time (the engine's clock once it is set up)
@@ -73,8 +77,8 @@ private:
   bool engine_ready() const { return system_.n_rebuilds() > 0; }
   void add_materials_and_walls();
   void fill(const std::function<void(const std::string&)>& progress);
-  /// Inlet batches and outlets at the current time; sets the engine up at the first
-  /// particle when it started empty.
+  /// Inlet batches, flux-plane samples and outlets at the current time; sets the engine up
+  /// at the first particle when it started empty.
   void exchange();
 };
 

@@ -1,0 +1,33 @@
+#pragma once
+// The mass that crosses a plane of a scene (a chute's cross-section, below a hopper's
+// orifice), counted from the side each particle is on at successive samples.
+#include "dem/engine/particles.h"
+
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+
+namespace wear::dem {
+
+class FluxPlane {
+public:
+  /// The plane through `point` [m] with normal `normal` (any length; forward is along it).
+  /// Throws std::invalid_argument naming the plane for a zero normal.
+  FluxPlane(std::string name, const Vec3& point, const Vec3& normal);
+  const std::string& name() const { return name_; }
+  /// Books the real particles of p that changed side since their last sample: + their mass
+  /// forwards, - backwards. A particle's first sample only records its side.
+  void sample(const Particles& p);
+  double net_mass() const { return net_mass_; } ///< [kg] forwards minus backwards so far
+  std::uint64_t n_forward() const { return n_forward_; }
+  std::uint64_t n_backward() const { return n_backward_; }
+
+private:
+  std::string name_;
+  Vec3 point_, normal_;
+  std::unordered_map<std::int64_t, bool> ahead_; ///< by stable id: on the forward side
+  double net_mass_ = 0;
+  std::uint64_t n_forward_ = 0, n_backward_ = 0;
+};
+
+} // namespace wear::dem
