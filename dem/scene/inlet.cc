@@ -41,6 +41,9 @@ Inlet::Inlet(InletSpec spec) : spec_(std::move(spec)), rng_(spec_.seed) {
   if (!(area > 0))
     throw std::invalid_argument(what + ": Edge u and Edge v span no area");
   normal_ = n / area;
+  if (std::abs(meshes::dot(spec_.edge_u, spec_.edge_v)) >
+      1e-9 * meshes::norm(spec_.edge_u) * meshes::norm(spec_.edge_v))
+    throw std::invalid_argument(what + ": Edge u and Edge v must be perpendicular (a rectangle)");
   normal_speed_ = meshes::dot(spec_.velocity, normal_);
   if (normal_speed_ < 0) {
     normal_ = normal_ * -1.0;

@@ -43,10 +43,15 @@ struct InletState {
 class Inlet {
 public:
   /// Checks the spec; throws std::invalid_argument naming the inlet for a degenerate
-  /// rectangle, a velocity that does not cross it, a non-positive rate, or a rate that would
-  /// fill the insertion box above a solid fraction of 0.2 (too much for random placement).
+  /// rectangle or one whose edges are not perpendicular, a velocity that does not cross it, a
+  /// non-positive rate, or a rate that would fill the insertion box above a solid fraction of 0.2
+  /// (too much for random placement).
   explicit Inlet(InletSpec spec);
   const InletSpec& spec() const { return spec_; }
+  /// Unit normal of the rectangle along the flow; the insertion box lies behind it.
+  const Vec3& normal() const { return normal_; }
+  /// [m] Depth of the insertion box, upstream of the rectangle.
+  double depth() const { return depth_; }
   /// [s] Time a particle takes to cross the insertion box: the batch interval.
   double interval() const { return depth_ / normal_speed_; }
   /// [-] Solid fraction of the insertion box at the requested rate.

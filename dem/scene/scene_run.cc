@@ -73,6 +73,30 @@ void require_clear_of_walls(const std::vector<SceneWall>& walls, const Vec3& lo,
     }
   }
 }
+/// Throws when a triangle of a wall cuts the insertion box of `inlet` (shrunk by `margin`
+/// [m], so a wall flush with the box's side, where particles at most touch it, passes).
+void require_clear_of_walls(const std::vector<SceneWall>& walls, const Inlet& inlet,
+                            double margin) {
+  const InletSpec& in = inlet.spec();
+  const Vec3 e[3] = {meshes::normalized(in.edge_u), meshes::normalized(in.edge_v), inlet.normal()};
+  const Vec3 lo{margin, margin, -inlet.depth() + margin},
+      hi{meshes::norm(in.edge_u) - margin, meshes::norm(in.edge_v) - margin, -margin};
+  const auto local = [&](const Vec3& x) {
+    const Vec3 d = x - in.corner;
+    return Vec3{meshes::dot(d, e[0]), meshes::dot(d, e[1]), meshes::dot(d, e[2])};
+  };
+  for (const auto& w : walls) {
+    const auto& m = w.surface.mesh;
+    for (const auto& t : m.triangles)
+      if (meshes::triangle_intersects_box(local(m.vertices[t[0]]), local(m.vertices[t[1]]),
+                                          local(m.vertices[t[2]]), lo, hi))
+        throw std::invalid_argument("Scene/Inlet " + in.name + ": its insertion box (the " +
+                                    "rectangle swept " + std::to_string(inlet.depth()) +
+                                    " m upstream) intersects wall '" + w.parameters.name +
+                                    "': particles would appear inside it; move the inlet");
+  }
+}
+
 } // namespace
 
 SceneRun::SceneRun(const SceneParameters& scene, const TesterDemParameters& dem,
@@ -109,6 +133,7 @@ SceneRun::SceneRun(const SceneParameters& scene, const TesterDemParameters& dem,
     spec.material = particle_material_;
     spec.seed = dem_.seed + 1000003 * (k + 1); // one stream per inlet, apart from the fill's
     inlets_.emplace_back(spec);
+    require_clear_of_walls(walls_, inlets_.back(), 0.25 * dem_.psd.min_diameter());
     exchange_ = std::min(exchange_, inlets_.back().interval());
   }
   for (const auto& out : scene_.outlets)

@@ -113,6 +113,32 @@ TEST_CASE("scene run: a fill box through a wall is refused before any particle e
                     Catch::Contains("wall 'floor'"));
 }
 
+TEST_CASE("scene run: an inlet whose insertion box cuts a wall is refused") {
+  SceneParameters s = bin(0.025);
+  s.fill.region = "none";
+  s.inlet_names = "feed";
+  s.inlets.push_back({});
+  auto& feed = s.inlets.back();
+  feed.name = "feed";
+  feed.edge_u = {0.06, 0, 0};
+  feed.edge_v = {0, 0.06, 0};
+  feed.mass_flow = 0.1;
+  feed.velocity = {0, 0, -1};
+  feed.corner = {-0.03, -0.03, 0.2}; // inside the bin: clear
+  CHECK_NOTHROW(SceneRun(s, gravel(), build_scene_walls(s)));
+  feed.corner = {0.03, -0.03, 0.2}; // reaching through the bin's side at r = 0.06
+  CHECK_THROWS_WITH(SceneRun(s, gravel(), build_scene_walls(s)),
+                    Catch::Contains("Scene/Inlet feed") && Catch::Contains("wall 'bin'"));
+  // Feeding upwards from 8 mm over the floor: the box lies upstream, 12 mm deep, through it.
+  feed.corner = {-0.03, -0.03, 0.008};
+  feed.velocity = {0, 0, 1};
+  CHECK_THROWS_WITH(SceneRun(s, gravel(), build_scene_walls(s)), Catch::Contains("wall 'floor'"));
+  feed.corner = {-0.03, -0.03, 0.2};
+  feed.velocity = {0, 0, -1};
+  feed.edge_v = {0.01, 0.06, 0}; // not a rectangle
+  CHECK_THROWS_WITH(SceneRun(s, gravel(), build_scene_walls(s)), Catch::Contains("perpendicular"));
+}
+
 TEST_CASE("scene run: a fill to a bed height settles before the run starts") {
   SceneParameters scene = bin(0.025);
   scene.walls[1].radius_inner = 0.002; // a pinhole: nothing drains while the bed settles
