@@ -1,8 +1,9 @@
 // Linear elasticity on the sample (model.md section 6).
 //
 //   -div sigma(u) = 0,  sigma = lambda tr(eps) I + 2 mu eps,  eps = sym grad u
-//   u = 0 on the bottom face (label 1); sigma n = t_f = F_f / A_f on surface face f
-//   with the holder: u . n = 0 on the sides (label 2), tangential traction zero there
+//   u = 0 on the bottom face (label 1) or a part's clamped surfaces; sigma n = t_f = F_f / A_f on
+//   surface face f with the holder: u . n = 0 on the sides (label 2), tangential traction zero
+//   there
 // with F_f the extensive force field (window-averaged face loads), so the applied total
 // force equals sum_f F_f exactly (the traction is constant on each face and integrated
 // exactly). FE_SimplexP of degree 1 or 2 per component, Gauss simplex quadrature of
@@ -151,14 +152,16 @@ void ElasticitySolver::setup_system() {
   dof_handler_.distribute_dofs(fe_);
   constraints_.clear();
   DoFTools::make_hanging_node_constraints(dof_handler_, constraints_);
-  VectorTools::interpolate_boundary_values(mapping_, dof_handler_,
-                                           types::boundary_id(meshes::label::bottom),
-                                           Functions::ZeroFunction<3>(3), constraints_);
+  const Functions::ZeroFunction<3> zero(3);
+  for (const auto id : tria_.get_boundary_ids())
+    if (meshes::label::clamped(int(id)))
+      VectorTools::interpolate_boundary_values(mapping_, dof_handler_, id, zero, constraints_);
   if (p_.holder_support)
     constrain_held_sides();
   constraints_.close();
   if (constraints_.n_constraints() == 0)
-    throw std::runtime_error("FEM: no degree of freedom lies on the clamped bottom face (id 1)");
+    throw std::runtime_error("FEM: no degree of freedom lies on a clamped face (the sample's "
+                             "bottom, id 1, or a part's clamped surfaces, ids 3001 ...)");
   DynamicSparsityPattern dsp(dof_handler_.n_dofs());
   DoFTools::make_sparsity_pattern(dof_handler_, dsp, constraints_, false);
   matrix_.reinit(dsp);
@@ -353,7 +356,7 @@ StressSamples ElasticitySolver::compute_stresses(ElasticityResult& r) {
         const int id = int(cell->face(f)->boundary_id());
         auto& m = r.max_von_mises_per_label[id];
         m = std::max(m, cell_max[cell->active_cell_index()]);
-        clamped = clamped || id == meshes::label::bottom;
+        clamped = clamped || meshes::label::clamped(id);
       }
     // Vertices on the clamped face may belong to cells without a clamped face.
     cell->get_dof_indices(dofs);

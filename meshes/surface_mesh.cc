@@ -36,6 +36,10 @@ std::string name(int id) {
   default:
     if (is_convex_element(id))
       return "C" + std::to_string(column_of(id)) + std::to_string(element_of(id));
+    if (is_part_surface(id)) {
+      const std::string n = "S" + std::to_string(part_surface_number(id));
+      return id < 2000 ? n : id < 3000 ? n + "-free" : n + "-clamped";
+    }
     return "L" + std::to_string(id);
   }
 }
@@ -46,6 +50,20 @@ int from_name(const std::string& n) {
       return id;
   if (n.size() == 3 && n[0] == 'C' && n[1] >= '1' && n[1] <= '9' && n[2] >= '1' && n[2] <= '9')
     return convex_element(n[1] - '0', n[2] - '0');
+  if (n.size() > 1 && n[0] == 'S') {
+    const auto dash = n.find('-');
+    const std::string suffix = dash == std::string::npos ? "" : n.substr(dash);
+    const PartRole role = suffix.empty()         ? PartRole::wearing
+                          : suffix == "-free"    ? PartRole::free
+                          : suffix == "-clamped" ? PartRole::clamped
+                                                 : PartRole{};
+    try {
+      const int number = std::stoi(n.substr(1, dash == std::string::npos ? n.npos : dash - 1));
+      if (int(role) != 0 && number >= 1 && number <= max_part_surfaces)
+        return part_surface(role, number);
+    } catch (const std::exception&) {
+    }
+  }
   if (n.size() > 1 && n[0] == 'L') {
     try {
       return std::stoi(n.substr(1));

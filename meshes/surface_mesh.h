@@ -37,11 +37,31 @@ inline int column_of(int id) {
 inline int element_of(int id) {
   return id % 10;
 }
-/// Faces of the wear face of a sample: the base top and the convex elements.
-inline bool wears(int id) {
-  return id == base || is_convex_element(id);
+/// A wearing part of a scene (dem/scene, issue 33): surface n of its CAD file (1 ... 999)
+/// keeps its number under the role the case file gives it: wearing 1000 + n, free (neither
+/// wearing nor held) 2000 + n, clamped 3000 + n.
+enum class PartRole { wearing = 1, free = 2, clamped = 3 };
+constexpr int max_part_surfaces = 999;
+inline int part_surface(PartRole role, int n) {
+  return 1000 * int(role) + n;
 }
-/// "bottom", "side", "base", "wall", "pocket", "C<j><k>" or "L<id>".
+inline bool is_part_surface(int id) {
+  return id > 1000 && id < 4000 && id % 1000 != 0;
+}
+inline int part_surface_number(int id) {
+  return id % 1000;
+}
+/// Faces that wear: the sample's base top and convex elements, a part's wearing surfaces.
+inline bool wears(int id) {
+  return id == base || is_convex_element(id) || (id > 1000 && id < 2000);
+}
+/// Faces held fixed in the FEM (zero displacement): the sample's bottom, a part's clamped
+/// surfaces.
+inline bool clamped(int id) {
+  return id == bottom || (id > 3000 && id < 4000);
+}
+/// "bottom", "side", "base", "wall", "pocket", "C<j><k>", a part's "S<n>" (wearing),
+/// "S<n>-free", "S<n>-clamped", or "L<id>".
 std::string name(int id);
 /// Inverse of name(); throws std::invalid_argument for an unknown name.
 int from_name(const std::string& name);

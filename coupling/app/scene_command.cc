@@ -4,8 +4,9 @@
 // Per wall it prints the source, triangle count, area, extent and, per label (each CAD
 // surface), the triangles' area against the CAD kernel's exact one (their ratio shows the
 // meshing error, and the labels' areas and centroids tell which surface is which, since
-// gmsh reads no face names from STEP). Every wall goes to scene/<name>.stl (ASCII, one solid
-// per label) and scene/<name>.vtu for ParaView.
+// gmsh reads no face names from STEP). A wearing part's surfaces show the label their role
+// gives them (S<n> wearing, S<n>-free, S<n>-clamped). Every wall goes to scene/<name>.stl (ASCII,
+// one solid per label) and scene/<name>.vtu for ParaView.
 #include "coupling/app/scene_command.h"
 
 #include "dem/scene/scene_walls.h"
@@ -61,8 +62,12 @@ void run_scene_command(const CaseParameters& p, std::ostream& log) {
         }
       if (a > 0)
         c = c * (1 / a);
+      // A wearing part's surfaces by their CAD number, with the label their role gives.
+      const bool part = meshes::label::is_part_surface(label);
       std::snprintf(line, sizeof line,
-                    "  label %3d: area %.6g m^2 (CAD %.6g), centroid (%.4g, %.4g, %.4g) m\n", label,
+                    "  surface %3d%s%s: area %.6g m^2 (CAD %.6g), centroid (%.4g, %.4g, %.4g) m\n",
+                    part ? meshes::label::part_surface_number(label) : label, part ? " " : "",
+                    part ? meshes::label::name(label).c_str() : "",
                     area.count(label) ? area.at(label) : 0.0, w.surface.surface_areas[k], c.x, c.y,
                     c.z);
       log << line;

@@ -122,8 +122,7 @@ int main(int argc, char** argv) {
         std::cerr << "wearsim scene-run: expected one case file\n";
         return 2;
       }
-      run_scene_run_command(read_case(argv[2]), std::cout);
-      return 0;
+      return run_scene_run_command(read_case(argv[2]), std::cout);
     }
     if (cmd == "run")
       return run_run_command({argv + 2, argv + argc}, std::cout);

@@ -25,9 +25,6 @@
 #include "coupling/loop/coupled_run.h"
 
 #include "coupling/output/progress_line.h"
-#include "fem/elasticity.h"
-#include "fem/volume_output.h"
-#include "meshes/face_transfer.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -177,10 +174,9 @@ std::string CoupledRun::progress_text(const StageRecord& r, const dem::TesterPro
 
 WearIncrement CoupledRun::compute_wear(const dem::WallLoads& loads, StageRecord& r) {
   const meshes::Stopwatch clock;
-  const auto& surface = sample_surface();
   const bool staged = r.scheme == Scheme::staged;
   const WearIncrement w =
-      wear_increment(surface, loads.wear_volume, previous_stress_, p_.coupling, staged);
+      wear_increment(sample_surface(), loads.wear_volume, previous_stress_, p_.coupling, staged);
   if (w.lowered)
     log_ << format("stage %d: amplification %g -> %.4g: at %g it would recede vertex %ld (%s) "
                    "by %.3g mm, %.3g of its longest edge (Maximum depth fraction %g)\n",
@@ -188,92 +184,27 @@ WearIncrement CoupledRun::compute_wear(const dem::WallLoads& loads, StageRecord&
                    w.declared_depth.vertex, meshes::label::name(w.declared_depth.label).c_str(),
                    1e3 * w.declared_depth.depth_there, w.declared_depth.max_fraction,
                    p_.coupling.max_depth_fraction);
-  r.amplification = w.amplification;
-  r.dem_wear_volume = w.dem_wear_volume;
-  r.max_depth = w.depth.max_depth;
-  r.max_depth_fraction = w.depth.max_fraction;
-  r.mean_stress_factor = w.mean_stress_factor;
-  if (staged) {
-    r.applied_volume = w.removed.sum();
-    r.cumulative_applied = totals_.cumulative_applied + r.applied_volume;
-    check_depth_cap(w, p_.coupling, r.stage);
-  } else if (r.scheme == Scheme::dem_only) {
-    r.cumulative_applied = totals_.cumulative_applied;
-  }
+  record_increment(w, totals_.cumulative_applied, p_.coupling, r);
   r.wear_seconds = clock.seconds();
   return w;
 }
 
 StageStress CoupledRun::solve_stress(const dem::WallLoads& loads, StageRecord& r) {
-  meshes::Stopwatch clock;
-  const auto& surface = sample_->surface();
-  meshes::FaceField<meshes::Vec3> forces("force", "N", meshes::Extensivity::extensive, surface);
-  for (std::size_t f = 0; f < surface.n_faces(); ++f) {
-    forces[f] = loads.traction_impulse[f] / loads.duration;
-    // The contacts' own loads on the wear faces, whichever way the FEM's traction is laid.
-    if (meshes::label::wears(surface.face_labels[f])) {
-      r.wear_face_force_z += loads.impulse[f].z / loads.duration;
-      r.wear_face_normal_force += loads.normal_impulse[f] / loads.duration;
-    }
-  }
-  r.mean_force_z = forces.sum().z;
   fem::ElasticityParameters ep = p_.fem.elasticity;
   ep.averaging_radius = stress_averaging_radius(p_);
   ep.holder_support = p_.geometry.tester.holder;
-  fem::ElasticitySolver solver(sample_->triangulation(), sample_->face_map(), ep);
-  const auto result = solver.run(forces);
-  r.max_von_mises_ball = result.max_von_mises_ball;
-  r.von_mises_p99 = result.von_mises_p99;
-  r.von_mises_p999 = result.von_mises_p999;
-  r.max_von_mises_qp = result.max_von_mises_qp;
-  r.stress_averaging_radius = ep.averaging_radius;
-  r.safety_factor = result.safety_factor;
-  r.max_displacement = result.max_displacement;
-  // The wear law reads the ball-averaged stress at each face: the cell's own value would grow
-  // with refinement under the particles' contacts.
-  StageStress stress{
-      meshes::FaceField<double>("von Mises", "Pa", meshes::Extensivity::intensive, surface)};
-  for (std::size_t f = 0; f < surface.n_faces(); ++f)
-    stress.von_mises[f] = result.face_von_mises_ball[f];
-  r.fem_solve_seconds = clock.seconds();
-  clock.restart();
-  const auto grid = fem::volume_grid(sample_->triangulation(), &solver);
-  r.volume_points = int(grid.points.size());
-  r.volume_cells = int(grid.connectivity.size() / 4);
-  output_->add_volume(r.stage, r.time, grid);
+  StageStress stress = solve_stage_stress(*sample_, loads, ep, r);
+  const meshes::Stopwatch clock;
+  output_->add_volume(r.stage, r.time, stress.grid);
   r.output_seconds += clock.seconds();
   return stress;
 }
 
 GeometryUpdate CoupledRun::update_geometry(const WearIncrement& increment,
                                            const StageStress& stress, StageRecord& r) {
-  const meshes::SurfaceMesh before = sample_->surface();
-  const auto report = sample_->apply_wear(increment.removed);
-  r.geometry_volume_change = report.volume_change;
-  r.increments = report.increments;
-  r.n_remeshes = report.n_remeshes;
-  r.n_first_attempt_remeshes = report.n_first_attempt_remeshes;
-  r.total_remeshes = sample_->n_remeshes();
-  r.spread_volume = report.spread_volume;
-  r.worn_through_volume = report.worn_through_volume;
-  r.n_worn_through = report.n_worn_through;
-  r.min_scaled_jacobian = report.quality.min_scaled_jacobian;
-  r.motion_seconds = report.motion_seconds;
-  r.remesh_seconds = report.remesh_seconds;
-  print_geometry_notes(r, report);
-  const auto& after = sample_->surface();
-  r.n_tetrahedra = int(sample_->triangulation().n_active_cells());
-  r.n_surface_faces = int(after.n_faces());
-  GeometryUpdate update{increment.removed, stress.von_mises};
-  if (report.n_remeshes > 0) {
-    const meshes::FaceTransfer transfer(before, after);
-    update.von_mises = transfer.apply(update.von_mises);
-    update.applied = transfer.apply(update.applied);
-  } else {
-    update.von_mises.follow(after);
-    update.applied.follow(after);
-  }
-  const auto pushed = tester_->set_sample_surface(after, p_.coupling.push_tolerance);
+  GeometryUpdate update = apply_stage_wear(*sample_, increment, stress, r);
+  print_geometry_notes(r, update.report);
+  const auto pushed = tester_->set_sample_surface(sample_->surface(), p_.coupling.push_tolerance);
   r.n_pushed = pushed.n_pushed;
   r.max_push = pushed.max_distance;
   return update;

@@ -6,6 +6,7 @@
 // run can stop between two steps (a signal) and checkpoint itself (a signal, or every
 // Output/Checkpoint interval), and a resume continues there bit for bit.
 #include "coupling/loop/stage_record.h"
+#include "coupling/loop/stage_steps.h"
 #include "coupling/loop/stop_signals.h"
 #include "coupling/loop/wear_increment.h"
 #include "coupling/output/checkpoint.h"
@@ -49,18 +50,6 @@ struct RunTotals {
   void add_dem_wear(const meshes::FaceField<double>& removed);
   /// [s] mean wall time of this invocation's stages, 0 before the first.
   double mean_stage_seconds() const;
-};
-
-/// The FEM's answer to a stage's loads, on the surface before the geometry update.
-struct StageStress {
-  /// [Pa] ball-averaged at each surface face's centroid (intensive; fem/stress_measures.h)
-  meshes::FaceField<double> von_mises;
-};
-
-/// A staged stage's fields carried onto the surface after the geometry update.
-struct GeometryUpdate {
-  meshes::FaceField<double> applied;   ///< [m^3] the stage's removed volume (extensive)
-  meshes::FaceField<double> von_mises; ///< [Pa] the stage's stress (intensive)
 };
 
 class CoupledRun {

@@ -1,6 +1,9 @@
 // The Scene subsection's own checks (scene_parameters.h): names, list lengths, signs.
 #include "dem/scene/scene_parameters.h"
 
+#include "meshes/surface_mesh.h"
+
+#include <algorithm>
 #include <cctype>
 #include <set>
 #include <sstream>
@@ -58,6 +61,32 @@ SceneParameters scene_with_names(const SceneNames& names) {
   return s;
 }
 
+std::vector<int> surface_numbers(const std::string& text, const std::string& what) {
+  std::vector<int> numbers;
+  std::string item;
+  std::stringstream in(text);
+  while (std::getline(in, item, ',')) {
+    const auto b = item.find_first_not_of(" \t"), e = item.find_last_not_of(" \t");
+    const std::string word = b == std::string::npos ? "" : item.substr(b, e - b + 1);
+    std::size_t used = 0;
+    int n = 0;
+    try {
+      n = std::stoi(word, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (word.empty() || used != word.size() || n < 1 || n > meshes::label::max_part_surfaces)
+      throw std::invalid_argument(what + ": '" + word +
+                                  "' is not a surface number (1 ... 999, as `wearsim scene` "
+                                  "lists them)");
+    if (std::find(numbers.begin(), numbers.end(), n) != numbers.end())
+      throw std::invalid_argument(what + ": surface " + word + " is listed twice");
+    numbers.push_back(n);
+  }
+  std::sort(numbers.begin(), numbers.end());
+  return numbers;
+}
+
 RigidMotion rigid_motion(const SceneWallParameters& w) {
   RigidMotion m;
   m.start_time = w.start_time;
@@ -109,7 +138,12 @@ void validate(const SceneParameters& s) {
     if (w.motion == "oscillation" && !(w.frequency > 0))
       throw std::invalid_argument(p + "/Frequency must be positive [Hz] for an oscillation");
     validate(rigid_motion(w), p);
+    if (w.wearing_surfaces != "all")
+      surface_numbers(w.wearing_surfaces, p + "/Wearing surfaces");
+    surface_numbers(w.clamped_surfaces, p + "/Clamped surfaces");
   }
+  if (s.stage_duration < 0)
+    throw std::invalid_argument("Scene/Stage duration must not be negative [s]");
   three(s.gravity, "Scene/Gravity");
   if (!(s.end_time > 0))
     throw std::invalid_argument("Scene/End time must be positive [s]");

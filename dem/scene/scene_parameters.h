@@ -14,22 +14,24 @@
 namespace wear::dem {
 
 struct SceneWallParameters {
-  std::string name;                    ///< from Scene/Walls
-  std::string source = "file";         ///< file | plane | disc | cylinder | cone | box
-  std::string file;                    ///< STEP, IGES, BREP or STL (source = file)
-  std::string unit = "m";              ///< m | mm, the file's length unit
-  double mesh_size = 5e-3;             ///< [m] triangle size for CAD files and primitives
-  std::vector<double> origin{0, 0, 0}; ///< [m] plane corner, disc centre, base centre, box corner
-  std::vector<double> edge_u{1, 0, 0}; ///< [m] plane: first edge
-  std::vector<double> edge_v{0, 1, 0}; ///< [m] plane: second edge
-  std::vector<double> axis{0, 0, 1};   ///< [m] disc normal; cylinder/cone axis; box size
-  double radius = 0;                   ///< [m] disc, cylinder; cone base
-  double radius_top = 0;               ///< [m] cone top
-  double radius_inner = 0;             ///< [m] disc: central hole (an annulus)
-  bool caps = false;                   ///< cylinder, cone: with end discs
-  std::string material = "wall";       ///< wall | sample | holder (the DEM subsection's)
-  bool wears = false;                  ///< its faces accumulate wear (a closed solid)
-  std::string motion = "fixed";        ///< fixed | rotation | translation | oscillation
+  std::string name;                     ///< from Scene/Walls
+  std::string source = "file";          ///< file | plane | disc | cylinder | cone | box
+  std::string file;                     ///< STEP, IGES, BREP or STL (source = file)
+  std::string unit = "m";               ///< m | mm, the file's length unit
+  double mesh_size = 5e-3;              ///< [m] triangle size for CAD files and primitives
+  std::vector<double> origin{0, 0, 0};  ///< [m] plane corner, disc centre, base centre, box corner
+  std::vector<double> edge_u{1, 0, 0};  ///< [m] plane: first edge
+  std::vector<double> edge_v{0, 1, 0};  ///< [m] plane: second edge
+  std::vector<double> axis{0, 0, 1};    ///< [m] disc normal; cylinder/cone axis; box size
+  double radius = 0;                    ///< [m] disc, cylinder; cone base
+  double radius_top = 0;                ///< [m] cone top
+  double radius_inner = 0;              ///< [m] disc: central hole (an annulus)
+  bool caps = false;                    ///< cylinder, cone: with end discs
+  std::string material = "wall";        ///< wall | sample | holder (the DEM subsection's)
+  bool wears = false;                   ///< its faces accumulate wear (a closed solid)
+  std::string wearing_surfaces = "all"; ///< a wearing wall's surfaces that wear: numbers or all
+  std::string clamped_surfaces;         ///< a wearing wall's surfaces held fixed in the FEM
+  std::string motion = "fixed";         ///< fixed | rotation | translation | oscillation
   std::vector<double> axis_point{0, 0, 0};    ///< [m] rotation
   std::vector<double> rotation_axis{0, 0, 1}; ///< [-] rotation, right-handed
   double angular_velocity = 0;                ///< [rad/s] rotation
@@ -91,6 +93,9 @@ struct SceneParameters {
   std::vector<double> gravity{0, 0, -9.81};      ///< [m/s^2]
   double end_time = 1;                           ///< [s] simulated
   double output_interval = 0.05;                 ///< [s] between records
+  /// [s] DEM time of a stage of the wear loop (Coupling/Schedule) when a wall wears; 0: no
+  /// stages, the scene runs to End time
+  double stage_duration = 0;
 };
 
 /// The names a case file gives to its scene's walls, inlets and outlets: they decide which
@@ -130,6 +135,11 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
   v.real("End time", s.end_time, "[s] Simulated time of `wearsim scene-run`.");
   v.real("Output interval", s.output_interval,
          "[s] Simulated time between records of the run's series (and progress lines).");
+  v.real("Stage duration", s.stage_duration,
+         "[s] Simulated DEM time of each stage of the wear loop when a wall wears (the FEM "
+         "part): the stages and their schemes are Coupling/Schedule's (staged, dem-only), "
+         "End time is then their sum. 0: no stages; the scene runs to End time and only "
+         "accumulates wear.");
   v.enter("Fill");
   v.selection("Region", s.fill.region, "none|box",
               "Particles in place at the start: none, or random in an axis-aligned box (the "
@@ -200,8 +210,17 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
                 "The DEM material of the wall: one of the DEM subsection's Wall, Sample and "
                 "Holder materials.");
     v.boolean("Wears", w.wears,
-              "Its faces accumulate Archard load-distance and impulse; a wearing wall must be a "
-              "closed solid (the FEM part).");
+              "The wall is the wearing part: a closed solid whose wearing surfaces accumulate "
+              "wear and, with Scene/Stage duration, recede stage by stage while the FEM "
+              "computes its stress (clamped at Clamped surfaces). Its CAD surfaces keep their "
+              "numbers n as labels S<n> (wearing), S<n>-free and S<n>-clamped.");
+    v.text("Wearing surfaces", w.wearing_surfaces,
+           "A wearing wall's surfaces that wear, by number (`wearsim scene` lists them), "
+           "comma-separated, or 'all' for every surface not clamped; the others are free "
+           "(traction from particles, no wear).");
+    v.text("Clamped surfaces", w.clamped_surfaces,
+           "A wearing wall's surfaces held fixed in the FEM (zero displacement: bolted to "
+           "the structure), by number, comma-separated; a wear loop needs at least one.");
     v.selection("Motion", w.motion, "fixed|rotation|translation|oscillation",
                 "fixed; rotation about Axis point and Rotation axis at Angular velocity; "
                 "translation at Velocity; oscillation A sin(2 pi f (t - t0)) of Amplitude and "
@@ -231,6 +250,10 @@ meshes::Vec3 scene_vector(const std::vector<double>& v);
 /// The wall's motion for the engine (dem/engine/rigid_motion.h): only the parameters of the
 /// chosen Motion enter; a fixed wall gets the motion that does not move.
 RigidMotion rigid_motion(const SceneWallParameters& w);
+
+/// The surface numbers listed in `text` ("1, 4, 7"), ascending; throws
+/// std::invalid_argument naming `what` for anything but numbers 1 ... 999, or a repeat.
+std::vector<int> surface_numbers(const std::string& text, const std::string& what);
 
 /// Checks the values on their own (list lengths, signs, a file given where needed); throws
 /// std::invalid_argument naming the parameter by its case-file path.

@@ -290,6 +290,7 @@ SceneWindow SceneRun::advance(double t_end) {
   for (const auto& f : flux_planes_)
     w.flux_mass.push_back(f.net_mass());
   const double duration = time_ - accounted_from;
+  w.integrated = duration;
   w.walls.resize(walls_.size());
   if (set_up && duration > 0)
     for (std::size_t k = 0; k < walls_.size(); ++k) {
@@ -311,6 +312,25 @@ SceneWindow SceneRun::advance(double t_end) {
     w.mean_speed /= double(p.n_real);
   }
   return w;
+}
+
+WallLoads SceneRun::wall_loads(std::size_t k, const WearLaw& law, double duration) const {
+  const auto& psd = dem_.psd;
+  double mean_d = 0;
+  const auto fractions = psd.number_fractions();
+  for (std::size_t j = 0; j < fractions.size(); ++j)
+    mean_d += fractions[j] * psd.diameters[j] * psd.scaling_factor;
+  const LoadSpreading spreading{dem_.coarse_graining_width > 0 ? dem_.coarse_graining_width
+                                                               : mean_d / 2,
+                                dem_.coarse_grained_traction, dem_.coarse_grained_wear};
+  const WearIntegrals integrals = system_.wear_integrals(int(k));
+  return dem::wall_loads(integrals, law.removed_volume(integrals), walls_.at(k).surface.mesh,
+                         duration, spreading);
+}
+
+void SceneRun::replace_wall_surface(std::size_t k, const meshes::SurfaceMesh& mesh) {
+  system_.replace_wall_mesh(int(k), mesh);
+  walls_.at(k).surface.mesh = mesh;
 }
 
 } // namespace wear::dem

@@ -7,6 +7,8 @@
 #include "dem/scene/outlet.h"
 #include "dem/scene/scene_walls.h"
 #include "dem/tester/tester_parameters.h"
+#include "dem/tester/wall_loads.h"
+#include "dem/tester/wear_law.h"
 
 #include <functional>
 #include <map>
@@ -34,6 +36,8 @@ struct SceneWindow {
   std::vector<double> flux_mass;        ///< [kg] net mass through each flux plane since the start
   std::vector<WallWindowLoads> walls;   ///< per scene wall
   double mean_speed = 0, max_speed = 0; ///< [m/s] of the particles at the end
+  /// [s] time the walls' integrals cover: the window, from the engine's set-up on
+  double integrated = 0;
 };
 
 class SceneRun {
@@ -50,6 +54,15 @@ public:
   /// Runs on to time t_end [s]: every exchange interval the inlets place their batches and
   /// the outlets take their particles, then the engine steps. Returns the window's record.
   SceneWindow advance(double t_end);
+
+  /// The last window's loads on wall k (a wearing wall of the engine; every scene wall is),
+  /// the wear law applied, in the wall's frame, the traction and the wear volume laid on the
+  /// faces as the DEM subsection's coarse-graining says.
+  WallLoads wall_loads(std::size_t k, const WearLaw& law, double duration) const;
+  /// Gives wall k a new surface (e.g. the worn part after a stage), same frame, motion and
+  /// material. The particles keep their state; the new surface lies inside the old one where
+  /// it wore, so no particle starts overlapping it beyond a remesh's chord offset.
+  void replace_wall_surface(std::size_t k, const meshes::SurfaceMesh& mesh);
 
   double time() const { return time_; } ///< [s]
   /// [s] Inlet batches and outlets act this often (the shortest inlet interval).

@@ -5,9 +5,12 @@
 // (no boundary or non-manifold edge, check_closed). Every wall must lie inside Scene/Domain:
 // a file drawn in millimetres and read as metres is 1000 times too large; the reader checks
 // it (CadImportOptions::bounds, before meshing a CAD file) and the message names the wall,
-// its file and its unit.
+// its file and its unit. A wearing wall's CAD surfaces are relabelled by their role
+// (wearing, free, clamped; meshes::label::part_surface), keeping their numbers.
 #include "dem/scene/scene_walls.h"
 
+#include <algorithm>
+#include <map>
 #include <stdexcept>
 
 namespace wear::dem {
@@ -43,6 +46,51 @@ meshes::CadSurface surface_of(const SceneWallParameters& w, const meshes::Boundi
   return meshes::primitive_surface(p, w.mesh_size, what + " (" + w.source + ")", domain);
 }
 
+/// The wearing part's labels: each CAD surface n becomes S<n> (wearing), S<n>-free or
+/// S<n>-clamped (meshes::label::part_surface) as the wall's lists say.
+void label_part_surfaces(SceneWall& wall, const std::string& what) {
+  const auto& w = wall.parameters;
+  auto& surface = wall.surface;
+  const auto clamped = surface_numbers(w.clamped_surfaces, what + "/Clamped surfaces");
+  const bool all = w.wearing_surfaces == "all";
+  const auto wearing =
+      all ? std::vector<int>{} : surface_numbers(w.wearing_surfaces, what + "/Wearing surfaces");
+  const auto& present = surface.surface_labels;
+  const auto has = [](const std::vector<int>& list, int n) {
+    return std::find(list.begin(), list.end(), n) != list.end();
+  };
+  std::string numbers;
+  for (int n : present)
+    numbers += (numbers.empty() ? "" : ", ") + std::to_string(n);
+  for (const auto& [list, name] :
+       {std::pair{&clamped, "Clamped surfaces"}, {&wearing, "Wearing surfaces"}})
+    for (int n : *list)
+      if (!has(present, n))
+        throw std::invalid_argument(what + "/" + name + ": the part has no surface " +
+                                    std::to_string(n) + " (its surfaces: " + numbers + ")");
+  for (int n : wearing)
+    if (has(clamped, n))
+      throw std::invalid_argument(what + ": surface " + std::to_string(n) +
+                                  " is listed both as wearing and as clamped");
+  for (int n : present)
+    if (n < 1 || n > meshes::label::max_part_surfaces)
+      throw std::invalid_argument(what + ": a wearing part's surfaces must be numbered 1 ... " +
+                                  std::to_string(meshes::label::max_part_surfaces) +
+                                  ", the file has label " + std::to_string(n));
+  std::map<int, int> label_of;
+  for (int n : present) {
+    using meshes::label::PartRole;
+    const PartRole role = has(clamped, n)          ? PartRole::clamped
+                          : all || has(wearing, n) ? PartRole::wearing
+                                                   : PartRole::free;
+    label_of[n] = meshes::label::part_surface(role, n);
+  }
+  for (auto& l : surface.mesh.face_labels)
+    l = label_of.at(l);
+  for (auto& l : surface.surface_labels)
+    l = label_of.at(l);
+}
+
 } // namespace
 
 std::vector<SceneWall> build_scene_walls(const SceneParameters& scene) {
@@ -60,6 +108,7 @@ std::vector<SceneWall> build_scene_walls(const SceneParameters& scene) {
             what + ": a wearing wall must be a closed solid; its surface has " +
             std::to_string(report.n_boundary_edges) + " boundary and " +
             std::to_string(report.n_nonmanifold_edges) + " non-manifold edges");
+      label_part_surfaces(wall, scene_wall_path(w));
     }
     walls.push_back(std::move(wall));
   }

@@ -100,7 +100,9 @@ TEST_CASE("wearsim scene: walls from STEP and primitives by name, with their siz
   CHECK(wear::meshes::total_area(drum) == Approx(2 * M_PI * 0.5 * 0.4).epsilon(2e-3));
   CHECK(std::filesystem::exists("scene_out/scene/floor.vtu"));
   CHECK(std::filesystem::exists("scene_out/parameters.prm"));
-  CHECK(log.str().find("label   1") != std::string::npos);
+  // The wearing liner's surfaces by CAD number and role: all wear, none is clamped.
+  CHECK(log.str().find("surface   1 S1:") != std::string::npos);
+  CHECK(log.str().find("surface   6 S6:") != std::string::npos);
 }
 
 TEST_CASE("wearsim scene: bad scenes are refused naming the wall, before anything is written",

@@ -1,0 +1,116 @@
+// A scene run's records (scene_series.h).
+//
+// The mass flow through an outlet or a plane is the difference of its column between rows
+// over the interval; the force and moment columns are window means (impulse / duration).
+#include "coupling/output/scene_series.h"
+
+#include "dem/engine/snapshot.h"
+#include "meshes/atomic_file.h"
+#include "meshes/vtu_writer.h"
+
+#include <cstdio>
+#include <sstream>
+
+namespace wear::coupling {
+
+namespace {
+
+std::string series_header(const dem::SceneRun& run) {
+  std::ostringstream h;
+  h << "time_s,n_particles,n_inserted,n_removed,inserted_mass_kg";
+  for (const auto& o : run.outlets())
+    h << ",outlet_" << o.name << "_mass_kg";
+  for (const auto& f : run.flux_planes())
+    h << ",flux_" << f.name() << "_mass_kg";
+  for (const auto& w : run.walls()) {
+    const std::string& n = w.parameters.name;
+    h << ",wall_" << n << "_fx_N,wall_" << n << "_fy_N,wall_" << n << "_fz_N,wall_" << n
+      << "_mx_Nm,wall_" << n << "_my_Nm,wall_" << n << "_mz_Nm,wall_" << n << "_archard_Nm";
+  }
+  h << ",mean_speed_m_s,max_speed_m_s\n";
+  return h.str();
+}
+
+std::string series_row(const dem::SceneWindow& w) {
+  std::ostringstream r;
+  r.precision(9);
+  r << w.t_end << "," << w.n_particles << "," << w.n_inserted << "," << w.n_removed << ","
+    << w.inserted_mass;
+  for (double m : w.outlet_mass)
+    r << "," << m;
+  for (double m : w.flux_mass)
+    r << "," << m;
+  for (const auto& l : w.walls)
+    r << "," << l.force.x << "," << l.force.y << "," << l.force.z << "," << l.torque.x << ","
+      << l.torque.y << "," << l.torque.z << "," << l.archard;
+  r << "," << w.mean_speed << "," << w.max_speed << "\n";
+  return r.str();
+}
+
+std::string wear_rows(const dem::SceneRun& run, const dem::SceneWindow& w) {
+  std::ostringstream r;
+  r.precision(9);
+  for (std::size_t k = 0; k < w.walls.size(); ++k)
+    for (const auto& [label, archard] : w.walls[k].archard_label)
+      r << w.t_end << "," << run.walls()[k].parameters.name << "," << meshes::label::name(label)
+        << "," << archard << "\n";
+  return r.str();
+}
+
+/// Wall k where it is now (a moving wall at its current pose).
+void write_wall(const dem::SceneRun& run, int k, const std::string& dir) {
+  const auto& wall = run.system().wall(k);
+  meshes::SurfaceMesh m = wall.mesh();
+  m.vertices = wall.world_vertices();
+  meshes::write_vtu(m, dir + "/" + wall.name() + ".vtu");
+}
+
+} // namespace
+
+SceneSeries::SceneSeries(std::string directory, const dem::SceneRun& run)
+    : directory_(std::move(directory)), series_(series_header(run)),
+      wear_("time_s,wall,label,archard_window_Nm\n") {
+  meshes::ensure_directory(directory_ + "/walls");
+  for (std::size_t k = 0; k < run.walls().size(); ++k) {
+    const auto& p = run.walls()[k].parameters;
+    changing_.push_back(p.motion != "fixed" || p.wears);
+    if (!changing_.back())
+      write_wall(run, int(k), directory_ + "/walls");
+  }
+}
+
+void SceneSeries::add(int k, const dem::SceneWindow& w, const dem::SceneRun& run) {
+  series_ += series_row(w);
+  meshes::write_atomically(directory_ + "/scene_series.csv",
+                           [&](std::ostream& out) { out << series_; });
+  wear_ += wear_rows(run, w);
+  meshes::write_atomically(directory_ + "/scene_wear.csv",
+                           [&](std::ostream& out) { out << wear_; });
+  if (w.n_particles > 0)
+    dem::write_particles_vtu(run.system().particles,
+                             directory_ + "/particles_" + std::to_string(k) + ".vtu");
+  const std::string dir = directory_ + "/walls_" + std::to_string(k);
+  bool made = false;
+  for (std::size_t j = 0; j < changing_.size(); ++j)
+    if (changing_[j]) {
+      if (!std::exchange(made, true))
+        meshes::ensure_directory(dir);
+      write_wall(run, int(j), dir);
+    }
+}
+
+std::string window_summary(const dem::SceneWindow& w) {
+  double out_mass = 0;
+  for (double m : w.outlet_mass)
+    out_mass += m;
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "t = %.4f s: %zu particles, %llu in (%.4g kg), %llu out (%.4g kg), mean speed "
+                "%.3g m/s",
+                w.t_end, w.n_particles, static_cast<unsigned long long>(w.n_inserted),
+                w.inserted_mass, static_cast<unsigned long long>(w.n_removed), out_mass,
+                w.mean_speed);
+  return line;
+}
+
+} // namespace wear::coupling

@@ -1,0 +1,32 @@
+#pragma once
+// The records of a scene's run (`wearsim scene-run`), one per window, each file rewritten
+// atomically at every record: scene_series.csv (time, particles, inserted and removed, the
+// mass each outlet took and the net mass through each flux plane so far, per wall the
+// window-mean force and moment about the origin in the wall's frame and the window's Archard
+// load-distance, the particles' mean and largest speed), scene_wear.csv (the window's Archard
+// load-distance per wall and label: the wear per labelled surface group), particles_<k>.vtu,
+// and the walls: walls/<name>.vtu once for a wall that never changes, walls_<k>/<name>.vtu
+// at every record for one that moves or wears.
+#include "dem/scene/scene_run.h"
+
+#include <string>
+
+namespace wear::coupling {
+
+class SceneSeries {
+public:
+  /// Writes the fixed walls into `directory`/walls/ and starts the tables.
+  SceneSeries(std::string directory, const dem::SceneRun& run);
+  /// Record k (1-based) of window w, with the run as it stands at the window's end.
+  void add(int k, const dem::SceneWindow& w, const dem::SceneRun& run);
+
+private:
+  std::string directory_;
+  std::string series_, wear_;  ///< the tables so far
+  std::vector<bool> changing_; ///< per wall: written at every record
+};
+
+/// "t = 0.1234 s: 512 particles, 600 in (1.2 kg), 88 out (0.2 kg), mean speed 0.81 m/s".
+std::string window_summary(const dem::SceneWindow& w);
+
+} // namespace wear::coupling

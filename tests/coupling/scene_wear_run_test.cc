@@ -1,0 +1,239 @@
+// The wear loop on a scene's wearing part (issue 33, item 3): a plate read from STEP slides
+// under a bed of particles held by a fixed frame. Checked: the CAD surfaces keep their
+// numbers under their roles in both the DEM and the FEM meshes, the part's volume and
+// surface areas are the CAD solid's, the stage's removed volume is the amplified Archard
+// law of the DEM's own per-label records, the FEM receives the DEM's force on the part, the
+// geometry loses exactly the removed volume, only the wearing surface wears, and the DEM wall
+// carries the worn surface afterwards. Bad wear-loop set-ups are refused naming the parameter.
+#include "coupling/loop/scene_wear_run.h"
+#include "error_of.h"
+#include "fem/sample_triangulation.h"
+#include "meshes/gmsh_session.h"
+
+#include <catch2/catch.hpp>
+
+#include <gmsh.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <vector>
+
+using namespace wear;
+using namespace wear::coupling;
+
+namespace {
+
+// A 120 x 60 x 10 mm plate written by OpenCASCADE as STEP in millimetres: its surfaces are
+// numbered x = 0 (1), x = 120 (2), y = 0 (3), y = 60 (4), z = 0 (5), z = 10 (6).
+void write_plate(const std::string& path) {
+  meshes::GmshSession session("plate");
+  gmsh::model::occ::addBox(0, 0, 0, 120, 60, 10);
+  gmsh::model::occ::synchronize();
+  gmsh::write(path);
+}
+
+// One side of the frame: a vertical plane from (x0, y0) to (x1, y1), 0.5 mm above the plate
+// (a 4 mm particle cannot pass under it) up to 60 mm.
+std::string frame_side(const std::string& name, double x0, double y0, double x1, double y1) {
+  std::ostringstream s;
+  s << "  subsection Wall " << name << "\n    set Source = plane\n    set Origin = " << x0 << ", "
+    << y0 << ", 0.0105\n    set Edge u = " << x1 - x0 << ", " << y1 - y0
+    << ", 0\n    set Edge v = 0, 0, 0.05\n    set Mesh size = 0.01\n  end\n";
+  return s.str();
+}
+
+std::string plate_case(const std::string& dir, const std::string& plate_extra = "",
+                       const std::string& schedule = "1 dem-only, 1 staged") {
+  return "subsection Scene\n"
+         "  set Walls = plate, west, east, south, north\n"
+         "  set Domain minimum = -0.1, -0.1, -0.1\n"
+         "  set Domain maximum = 0.3, 0.2, 0.2\n"
+         "  set Stage duration = 0.1\n"
+         "  set Output interval = 0.05\n"
+         "  subsection Wall plate\n"
+         "    set File = wear_plate.step\n"
+         "    set Unit = mm\n"
+         "    set Mesh size = 0.004\n"
+         "    set Material = sample\n"
+         "    set Wears = true\n"
+         "    set Wearing surfaces = 6\n"
+         "    set Clamped surfaces = 5\n"
+         "    set Motion = translation\n"
+         "    set Velocity = 0.1, 0, 0\n"
+         "    set Start time = 0.1\n" +
+         plate_extra + "  end\n" + frame_side("west", 0.005, 0.005, 0.005, 0.055) +
+         frame_side("east", 0.055, 0.005, 0.055, 0.055) +
+         frame_side("south", 0.005, 0.005, 0.055, 0.005) +
+         frame_side("north", 0.005, 0.055, 0.055, 0.055) +
+         "  subsection Fill\n"
+         "    set Region = box\n"
+         "    set Minimum = 0.008, 0.008, 0.013\n"
+         "    set Maximum = 0.052, 0.052, 0.058\n"
+         "    set Count = 150\n"
+         "  end\n"
+         "end\n"
+         "subsection DEM\n"
+         "  set PSD diameters = 0.004\n"
+         "  set PSD mass fractions = 1\n"
+         "  set Scaling factor = 1\n"
+         "  set Particle shear modulus = 1e7\n"
+         "  set Threads = 2\n"
+         "end\n"
+         "subsection Wear law\n"
+         "  set Archard coefficient = 1e-7\n"
+         "end\n"
+         "subsection Coupling\n"
+         "  set Schedule = " +
+         schedule +
+         "\n"
+         "  set Amplification = 100\n"
+         "end\n"
+         "subsection Output\n"
+         "  set Directory = " +
+         dir + "\nend\n";
+}
+
+CaseParameters read_text(const std::string& name, const std::string& text) {
+  std::ofstream(name) << text;
+  std::ostringstream warnings;
+  return read_case(name, warnings);
+}
+
+// The Archard load-distance per label of wall `wall` in scene_wear.csv's windows ending
+// after `after` [s].
+std::map<std::string, double> archard_after(const std::string& path, const std::string& wall,
+                                            double after) {
+  std::map<std::string, double> sum;
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  while (std::getline(in, line)) {
+    std::stringstream s(line);
+    std::string t, w, label, a;
+    std::getline(s, t, ',');
+    std::getline(s, w, ',');
+    std::getline(s, label, ',');
+    std::getline(s, a, ',');
+    if (w == wall && std::stod(t) > after + 1e-9)
+      sum[label] += std::stod(a);
+  }
+  return sum;
+}
+
+// Column `name` of scene_series.csv in the rows after time `after` [s].
+std::vector<double> series_after(const std::string& path, const std::string& name, double after) {
+  std::ifstream in(path);
+  std::string line, cell;
+  std::getline(in, line);
+  std::stringstream header(line);
+  std::size_t column = 0;
+  for (std::size_t k = 0; std::getline(header, cell, ','); ++k)
+    if (cell == name)
+      column = k;
+  std::vector<double> values;
+  while (std::getline(in, line)) {
+    std::stringstream row(line);
+    std::vector<double> cells;
+    while (std::getline(row, cell, ','))
+      cells.push_back(std::stod(cell));
+    if (cells.at(0) > after + 1e-9)
+      values.push_back(cells.at(column));
+  }
+  return values;
+}
+
+} // namespace
+
+TEST_CASE("scene wear loop: a STEP plate worn by a bed it slides under", "[coupling][scene]") {
+  write_plate("wear_plate.step");
+  std::filesystem::remove_all("scene_wear_out");
+  const auto p = read_text("scene_wear.prm", plate_case("scene_wear_out"));
+  std::ostringstream log;
+  SceneWearRun run(p, log);
+  REQUIRE(run.run() == 0);
+  INFO(log.str());
+  const auto& part = run.part();
+  const auto& surface = part.surface();
+
+  // Labels: each CAD surface by number under its role, in the FEM and the DEM alike.
+  std::map<int, double> area;
+  const auto areas = meshes::face_areas(surface);
+  for (std::size_t f = 0; f < surface.n_faces(); ++f)
+    area[surface.face_labels[f]] += areas[f];
+  using meshes::label::part_surface;
+  using meshes::label::PartRole;
+  REQUIRE(area.size() == 6);
+  CHECK(area.at(part_surface(PartRole::clamped, 5)) == Approx(120e-3 * 60e-3).epsilon(1e-9));
+  // A side loses the strip its top edge receded by (the wear depth, below 0.1 mm here).
+  CHECK(area.at(part_surface(PartRole::free, 1)) == Approx(60e-3 * 10e-3).epsilon(1e-2));
+  // The worn top keeps its area to the recession's tilt of the faces (second order).
+  CHECK(area.at(part_surface(PartRole::wearing, 6)) == Approx(120e-3 * 60e-3).epsilon(1e-5));
+  const auto boundary_ids = part.triangulation().get_boundary_ids();
+  CHECK(boundary_ids.size() == 6);
+  const auto& wall_mesh = run.scene().walls()[0].surface.mesh;
+  CHECK(wall_mesh.revision() == surface.revision());
+  CHECK(run.scene().system().wall(0).mesh().n_faces() == surface.n_faces());
+
+  // Stages: the first settles the bed on the resting plate and wears nothing.
+  REQUIRE(run.stages().size() == 2);
+  const auto& settle = run.stages()[0];
+  const auto& staged = run.stages()[1];
+  CHECK(settle.applied_volume == 0);
+  REQUIRE(staged.applied_volume > 0);
+  // The removed volume is A alpha times the Archard load-distance the DEM recorded on the
+  // wearing surface over the stage's windows (scene_wear.csv, 9 digits).
+  const auto archard = archard_after("scene_wear_out/scene_wear.csv", "plate", settle.time);
+  REQUIRE(archard.count("S6") == 1);
+  CHECK(staged.dem_wear_volume == Approx(1e-7 * archard.at("S6")).epsilon(1e-7));
+  CHECK(staged.applied_volume == Approx(100 * staged.dem_wear_volume).epsilon(1e-12));
+  // The geometry lost what was asked, and the mesh's volume is the CAD plate's less that.
+  CHECK(staged.geometry_volume_change == Approx(staged.applied_volume).epsilon(2e-3));
+  CHECK(fem::mesh_volume(part.triangulation()) ==
+        Approx(120e-3 * 60e-3 * 10e-3 - staged.geometry_volume_change).epsilon(1e-9));
+  // Only the wearing surface wears.
+  for (std::size_t f = 0; f < surface.n_faces(); ++f)
+    if (surface.face_labels[f] != part_surface(PartRole::wearing, 6))
+      REQUIRE(part.removed_volume()[f] == 0);
+  CHECK(run.removed_per_label().at(part_surface(PartRole::wearing, 6)) ==
+        Approx(staged.applied_volume).epsilon(1e-12));
+  // The FEM took the bed's weight on the plate: the DEM's force, downwards, and the plate
+  // bends under it.
+  const auto fz = series_after("scene_wear_out/scene_series.csv", "wall_plate_fz_N", settle.time);
+  REQUIRE(fz.size() == 2); // two windows of equal length
+  CHECK(staged.mean_force_z == Approx(0.5 * (fz[0] + fz[1])).epsilon(1e-6));
+  CHECK(staged.mean_force_z < 0);
+  CHECK(staged.max_displacement > 0);
+  CHECK(staged.max_von_mises_ball > 0);
+  CHECK(std::filesystem::exists("scene_wear_out/history.xdmf"));
+  CHECK(std::filesystem::exists("scene_wear_out/part_wear.csv"));
+  CHECK(std::filesystem::exists("scene_wear_out/walls_4/plate.vtu"));
+}
+
+TEST_CASE("scene wear loop: set-ups that cannot run are refused naming the parameter",
+          "[coupling][scene]") {
+  write_plate("wear_plate.step");
+  const auto refused = [](const std::string& name, const std::string& text) {
+    return error_of([&] {
+      std::ostringstream log;
+      SceneWearRun run(read_text(name, text), log);
+      run.run();
+    });
+  };
+  CHECK(refused("wear_noclamp.prm", plate_case("scene_wear_bad", "    set Clamped surfaces =\n"))
+            .find("Scene/Wall plate/Clamped surfaces: the wearing part needs at least one") !=
+        std::string::npos);
+  CHECK(refused("wear_nosurface.prm",
+                plate_case("scene_wear_bad", "    set Clamped surfaces = 5, 9\n"))
+            .find("Scene/Wall plate/Clamped surfaces: the part has no surface 9 (its surfaces: "
+                  "1, 2, 3, 4, 5, 6)") != std::string::npos);
+  CHECK(refused("wear_both.prm", plate_case("scene_wear_bad", "    set Wearing surfaces = 5, 6\n"))
+            .find("surface 5 is listed both as wearing and as clamped") != std::string::npos);
+  CHECK(refused("wear_reference.prm", plate_case("scene_wear_bad", "", "2 reference"))
+            .find("Coupling/Schedule: the reference (node-moving) scheme runs on the built-in "
+                  "tester only") != std::string::npos);
+  CHECK(refused("wear_word.prm", plate_case("scene_wear_bad", "    set Clamped surfaces = top\n"))
+            .find("Scene/Wall plate/Clamped surfaces: 'top' is not a surface number") !=
+        std::string::npos);
+}
