@@ -4,11 +4,13 @@
 // over the interval; the force and moment columns are window means (impulse / duration).
 #include "coupling/output/scene_series.h"
 
+#include "coupling/output/hdf5_file.h"
 #include "dem/engine/snapshot.h"
 #include "meshes/atomic_file.h"
 #include "meshes/vtu_writer.h"
 
 #include <cstdio>
+#include <iomanip>
 #include <sstream>
 
 namespace wear::coupling {
@@ -52,7 +54,11 @@ std::string wear_rows(const dem::SceneRun& run, const dem::SceneWindow& w) {
   r.precision(9);
   for (std::size_t k = 0; k < w.walls.size(); ++k)
     for (const auto& [label, archard] : w.walls[k].archard_label)
-      r << w.t_end << "," << run.walls()[k].parameters.name << "," << meshes::label::name(label)
+      // A part's surfaces by role (S6, S5-clamped); other walls' labels are their CAD
+      // surface numbers as they are.
+      r << w.t_end << "," << run.walls()[k].parameters.name << ","
+        << (meshes::label::is_part_surface(label) ? meshes::label::name(label)
+                                                  : std::to_string(label))
         << "," << archard << "\n";
   return r.str();
 }
@@ -73,7 +79,8 @@ SceneSeries::SceneSeries(std::string directory, const dem::SceneRun& run)
   meshes::ensure_directory(directory_ + "/walls");
   for (std::size_t k = 0; k < run.walls().size(); ++k) {
     const auto& p = run.walls()[k].parameters;
-    changing_.push_back(p.motion != "fixed" || p.wears);
+    // A wearing part changes at stage ends only: the wear loop's surface series has it.
+    changing_.push_back(p.motion != "fixed");
     if (!changing_.back())
       write_wall(run, int(k), directory_ + "/walls");
   }
@@ -89,6 +96,8 @@ void SceneSeries::add(int k, const dem::SceneWindow& w, const dem::SceneRun& run
   if (w.n_particles > 0)
     dem::write_particles_vtu(run.system().particles,
                              directory_ + "/particles_" + std::to_string(k) + ".vtu");
+  if (run.fields())
+    write_fields(k, w, run.fields()->grid());
   const std::string dir = directory_ + "/walls_" + std::to_string(k);
   bool made = false;
   for (std::size_t j = 0; j < changing_.size(); ++j)
@@ -97,6 +106,64 @@ void SceneSeries::add(int k, const dem::SceneWindow& w, const dem::SceneRun& run
         meshes::ensure_directory(dir);
       write_wall(run, int(j), dir);
     }
+}
+
+void SceneSeries::write_fields(int k, const dem::SceneWindow& w, const dem::FieldGrid& grid) {
+  const std::size_t nx = std::size_t(grid.cells[0]), ny = std::size_t(grid.cells[1]),
+                    nz = std::size_t(grid.cells[2]);
+  char name[64];
+  std::snprintf(name, sizeof name, "fields/record_%04d.h5", k);
+  meshes::ensure_directory(directory_ + "/fields");
+  Hdf5File h5(directory_ + "/" + name);
+  std::vector<double> velocity;
+  velocity.reserve(3 * w.fields.velocity.size());
+  for (const auto& v : w.fields.velocity)
+    velocity.insert(velocity.end(), {v.x, v.y, v.z});
+  h5.write("solid_fraction", w.fields.solid_fraction, {nz, ny, nx});
+  h5.write("velocity", velocity, {nz, ny, nx, 3});
+  h5.write("occupancy", w.fields.occupancy, {nz, ny, nx});
+  h5.attribute("/", "time", w.t_end);
+  h5.attribute("/", "samples", double(w.fields.n_samples));
+  const char* axis[3] = {"x", "y", "z"};
+  for (int d = 0; d < 3; ++d) { // the grid, so that the file describes itself [m]
+    h5.attribute("/", std::string(axis[d]) + "_minimum", grid.minimum[d]);
+    h5.attribute("/", std::string(axis[d]) + "_maximum", grid.maximum[d]);
+  }
+  h5.commit();
+  field_records_.emplace_back(k, w.t_end);
+  // XDMF orders a co-rectilinear grid's dimensions, origin and spacing z, y, x.
+  const dem::Vec3 h = grid.spacing();
+  meshes::write_atomically(directory_ + "/fields.xdmf", [&](std::ostream& x) {
+    x << std::setprecision(12);
+    x << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n<Domain>\n"
+      << "<Grid Name=\"fields\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+    for (const auto& [record, time] : field_records_) {
+      char file[64];
+      std::snprintf(file, sizeof file, "fields/record_%04d.h5", record);
+      x << "<Grid Name=\"record " << record << "\" GridType=\"Uniform\">\n"
+        << "<Time Value=\"" << time << "\"/>\n"
+        << "<Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"" << nz + 1 << " " << ny + 1 << " "
+        << nx + 1 << "\"/>\n"
+        << "<Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n"
+        << "<DataItem Format=\"XML\" Dimensions=\"3\">" << grid.minimum.z << " " << grid.minimum.y
+        << " " << grid.minimum.x << "</DataItem>\n"
+        << "<DataItem Format=\"XML\" Dimensions=\"3\">" << h.z << " " << h.y << " " << h.x
+        << "</DataItem>\n</Geometry>\n";
+      const auto attribute = [&](const char* n, const char* type, const std::string& dims) {
+        x << "<Attribute Name=\"" << n << "\" AttributeType=\"" << type
+          << "\" Center=\"Cell\">\n<DataItem Format=\"HDF\" NumberType=\"Float\" "
+             "Precision=\"8\" Dimensions=\""
+          << dims << "\">" << file << ":/" << n << "</DataItem>\n</Attribute>\n";
+      };
+      const std::string cells =
+          std::to_string(nz) + " " + std::to_string(ny) + " " + std::to_string(nx);
+      attribute("solid_fraction", "Scalar", cells);
+      attribute("velocity", "Vector", cells + " 3");
+      attribute("occupancy", "Scalar", cells);
+      x << "</Grid>\n";
+    }
+    x << "</Grid>\n</Domain>\n</Xdmf>\n";
+  });
 }
 
 std::string window_summary(const dem::SceneWindow& w) {

@@ -5,8 +5,12 @@
 // window-mean force and moment about the origin in the wall's frame and the window's Archard
 // load-distance, the particles' mean and largest speed), scene_wear.csv (the window's Archard
 // load-distance per wall and label: the wear per labelled surface group), particles_<k>.vtu,
-// and the walls: walls/<name>.vtu once for a wall that never changes, walls_<k>/<name>.vtu
-// at every record for one that moves or wears.
+// and the walls: walls/<name>.vtu once for a wall that does not move, walls_<k>/<name>.vtu
+// at every record for one that moves (a wearing part's worn surfaces: the wear loop's
+// surface/ series); with Scene/Fields, the window's binned solid fraction, velocity and
+// occupancy per cell in fields/record_<k>.h5 (datasets nz x ny x nx; attributes time,
+// samples and the grid's x_minimum ... z_maximum), indexed by fields.xdmf (a time series of
+// rectilinear grids with cell data, for ParaView).
 #include "dem/scene/scene_run.h"
 
 #include <string>
@@ -22,8 +26,11 @@ public:
 
 private:
   std::string directory_;
-  std::string series_, wear_;  ///< the tables so far
-  std::vector<bool> changing_; ///< per wall: written at every record
+  std::string series_, wear_;                         ///< the tables so far
+  std::vector<bool> changing_;                        ///< per wall: written at every record
+  std::vector<std::pair<int, double>> field_records_; ///< record and time of each fields file
+
+  void write_fields(int k, const dem::SceneWindow& w, const dem::FieldGrid& grid);
 };
 
 /// "t = 0.1234 s: 512 particles, 600 in (1.2 kg), 88 out (0.2 kg), mean speed 0.81 m/s".

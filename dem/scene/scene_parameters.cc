@@ -166,6 +166,21 @@ void validate(const SceneParameters& s) {
     if (s.fill.count == 0 && !(s.fill.bed_height > 0))
       throw std::invalid_argument("Scene/Fill: give a Count or a positive Bed height [m]");
   }
+  if (s.fields.cells.size() != 3)
+    throw std::invalid_argument("Scene/Fields/Cells: needs 3 counts (nx, ny, nz), got " +
+                                std::to_string(s.fields.cells.size()));
+  if (s.fields.cells != std::vector<int>{0, 0, 0}) {
+    three(s.fields.minimum, "Scene/Fields/Minimum");
+    three(s.fields.maximum, "Scene/Fields/Maximum");
+    for (int d = 0; d < 3; ++d) {
+      if (s.fields.cells[d] < 1)
+        throw std::invalid_argument("Scene/Fields/Cells: every count must be at least 1 (or "
+                                    "all 0 for no fields)");
+      if (!(s.fields.minimum[d] < s.fields.maximum[d]))
+        throw std::invalid_argument("Scene/Fields: Minimum must lie below Maximum in every "
+                                    "direction");
+    }
+  }
   for (const auto& in : s.inlets) {
     const std::string p = "Scene/Inlet " + in.name;
     three(in.corner, p + "/Corner");

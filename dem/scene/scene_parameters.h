@@ -78,6 +78,13 @@ struct SceneFillParameters {
   double bed_height = 0;                ///< [m] above the box's floor, settled
 };
 
+/// A grid of boxes on which the run bins the particles' solid fraction and velocity.
+struct SceneFieldParameters {
+  std::vector<int> cells{0, 0, 0};      ///< nx, ny, nz; 0: no fields
+  std::vector<double> minimum{0, 0, 0}; ///< [m]
+  std::vector<double> maximum{0, 0, 0}; ///< [m]
+};
+
 struct SceneParameters {
   std::string wall_names;                     ///< "Walls": comma-separated names, "" for none
   std::vector<SceneWallParameters> walls;     ///< one per name, in that order
@@ -88,6 +95,7 @@ struct SceneParameters {
   std::string flux_plane_names;               ///< "Flux planes"
   std::vector<SceneFluxPlaneParameters> flux_planes; ///< one per name, in that order
   SceneFillParameters fill;
+  SceneFieldParameters fields;
   std::vector<double> domain_min{-10, -10, -10}; ///< [m] particles and walls stay inside
   std::vector<double> domain_max{10, 10, 10};    ///< [m]
   std::vector<double> gravity{0, 0, -9.81};      ///< [m/s^2]
@@ -153,6 +161,15 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
          "a bed of the DEM subsection's Assumed packing over the box's footprint, placed "
          "loosely above and settled under gravity before the run starts. A bed that spreads "
          "wider than the box (a container larger than it) settles lower.");
+  v.leave();
+  v.enter("Fields");
+  v.int_list("Cells", s.fields.cells,
+             "Cells of the grid the run bins the particles on, nx, ny, nz (0, 0, 0: none): per "
+             "record the window's mean solid fraction and mass-weighted velocity per cell "
+             "(fields.xdmf); each particle counts in the cell of its centre, so make cells "
+             "several particle diameters wide.");
+  v.real_list("Minimum", s.fields.minimum, "[m] The grid's lower corner.");
+  v.real_list("Maximum", s.fields.maximum, "[m] The grid's upper corner.");
   v.leave();
   for (auto& in : s.inlets) {
     v.enter("Inlet " + in.name);

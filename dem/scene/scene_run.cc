@@ -7,9 +7,9 @@
 // per-face integrals (engine "wearing" walls), so each gets its force, moment and Archard
 // load-distance per window; `Wears` marks the FEM part only.
 //
-// Time: inlet batches, flux-plane samples and outlets act every exchange interval (the shortest
-// inlet interval, at most a tenth of the output interval), the engine stepping in between. A scene
-// that starts empty sets the engine up at its first particle, its clock starting there.
+// Time: inlet batches, flux-plane and field samples and outlets act every exchange interval (the
+// shortest inlet interval, at most a tenth of the output interval), the engine stepping in between.
+// A scene that starts empty sets the engine up at its first particle, its clock starting there.
 //
 // The fill box is checked against every wall triangle (separating axes, exact) before any
 // particle exists: particles placed through a wall would start overlapping it.
@@ -140,6 +140,10 @@ SceneRun::SceneRun(const SceneParameters& scene, const TesterDemParameters& dem,
     outlets_.push_back({out.name, vec(out.minimum), vec(out.maximum), 0, 0});
   for (const auto& f : scene_.flux_planes)
     flux_planes_.emplace_back(f.name, vec(f.point), vec(f.normal));
+  const auto& g = scene_.fields;
+  if (g.cells != std::vector<int>{0, 0, 0})
+    fields_.emplace(
+        FieldGrid{vec(g.minimum), vec(g.maximum), {g.cells[0], g.cells[1], g.cells[2]}});
 }
 
 void SceneRun::add_materials_and_walls() {
@@ -248,6 +252,8 @@ void SceneRun::exchange() {
     return;
   for (auto& plane : flux_planes_) // before the outlets: a particle that crossed is counted
     plane.sample(system_.particles);
+  if (fields_)
+    fields_->sample(system_.particles);
   n_removed_ += apply_outlets(system_, outlets_);
 }
 
@@ -291,6 +297,10 @@ SceneWindow SceneRun::advance(double t_end) {
     w.flux_mass.push_back(f.net_mass());
   const double duration = time_ - accounted_from;
   w.integrated = duration;
+  if (fields_) {
+    w.fields = fields_->window();
+    fields_->reset();
+  }
   w.walls.resize(walls_.size());
   if (set_up && duration > 0)
     for (std::size_t k = 0; k < walls_.size(); ++k) {

@@ -2,6 +2,7 @@
 // A scene's DEM run: the user's walls with their motions, particles filled at the start, fed
 // by inlets and drained by outlets, advanced window by window with a record per window.
 #include "dem/engine/system.h"
+#include "dem/scene/binned_fields.h"
 #include "dem/scene/flux_plane.h"
 #include "dem/scene/inlet.h"
 #include "dem/scene/outlet.h"
@@ -12,6 +13,7 @@
 
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,6 +40,7 @@ struct SceneWindow {
   double mean_speed = 0, max_speed = 0; ///< [m/s] of the particles at the end
   /// [s] time the walls' integrals cover: the window, from the engine's set-up on
   double integrated = 0;
+  BinnedWindow fields; ///< on the grid of Scene/Fields (empty without one)
 };
 
 class SceneRun {
@@ -72,6 +75,8 @@ public:
   const std::vector<Outlet>& outlets() const { return outlets_; }
   const std::vector<Inlet>& inlets() const { return inlets_; }
   const std::vector<FluxPlane>& flux_planes() const { return flux_planes_; }
+  /// The grid of Scene/Fields, or none.
+  const std::optional<BinnedFields>& fields() const { return fields_; }
 
 private:
   SceneParameters scene_;
@@ -80,6 +85,7 @@ private:
   std::vector<Inlet> inlets_;
   std::vector<Outlet> outlets_;
   std::vector<FluxPlane> flux_planes_;
+  std::optional<BinnedFields> fields_;
   System system_;
   int particle_material_ = 0;
   double time_ = 0;     ///< [s] scene time (the engine's clock once it is set up)

@@ -6,6 +6,7 @@
 // geometry loses exactly the removed volume, only the wearing surface wears, and the DEM wall
 // carries the worn surface afterwards. Bad wear-loop set-ups are refused naming the parameter.
 #include "coupling/loop/scene_wear_run.h"
+#include "coupling/output/hdf5_file.h"
 #include "error_of.h"
 #include "fem/sample_triangulation.h"
 #include "meshes/gmsh_session.h"
@@ -67,6 +68,11 @@ std::string plate_case(const std::string& dir, const std::string& plate_extra = 
          frame_side("east", 0.055, 0.005, 0.055, 0.055) +
          frame_side("south", 0.005, 0.005, 0.055, 0.005) +
          frame_side("north", 0.005, 0.055, 0.055, 0.055) +
+         "  subsection Fields\n"
+         "    set Cells = 2, 2, 3\n"
+         "    set Minimum = 0.005, 0.005, 0.0105\n"
+         "    set Maximum = 0.055, 0.055, 0.0605\n"
+         "  end\n"
          "  subsection Fill\n"
          "    set Region = box\n"
          "    set Minimum = 0.008, 0.008, 0.013\n"
@@ -209,6 +215,15 @@ TEST_CASE("scene wear loop: a STEP plate worn by a bed it slides under", "[coupl
   CHECK(std::filesystem::exists("scene_wear_out/history.xdmf"));
   CHECK(std::filesystem::exists("scene_wear_out/part_wear.csv"));
   CHECK(std::filesystem::exists("scene_wear_out/walls_4/plate.vtu"));
+  // The binned fields of the last window: every particle is inside the frame's grid.
+  const Hdf5Reader fields("scene_wear_out/fields/record_0004.h5");
+  CHECK(fields.dims("solid_fraction") == std::vector<std::size_t>{3, 2, 2});
+  CHECK(fields.dims("velocity") == std::vector<std::size_t>{3, 2, 2, 3});
+  double count = 0;
+  for (double n : fields.doubles("occupancy"))
+    count += n;
+  CHECK(count == Approx(150).epsilon(1e-12));
+  CHECK(std::filesystem::exists("scene_wear_out/fields.xdmf"));
 }
 
 TEST_CASE("scene wear loop: set-ups that cannot run are refused naming the parameter",

@@ -165,4 +165,23 @@ TEST_CASE("scene run: a fill to a bed height settles before the run starts") {
   CHECK(top > 0.01);
   REQUIRE(!said.empty());
   CHECK_THAT(said.back(), Catch::Contains("filled"));
+
+  // Binned over a window, the settled bed keeps its volume on the grid (nothing drains
+  // through the pinhole) and barely moves.
+  SceneParameters with_fields = scene;
+  with_fields.fields = {{3, 3, 4}, {-0.07, -0.07, 0}, {0.07, 0.07, 0.08}};
+  SceneRun binned(with_fields, gravel(), build_scene_walls(with_fields));
+  binned.setup();
+  const std::size_t n = binned.system().particles.n_real;
+  const SceneWindow w = binned.advance(binned.time() + 0.02);
+  REQUIRE(binned.system().particles.n_real == n);
+  REQUIRE(w.fields.n_samples >= 2);
+  const Vec3 h = binned.fields()->grid().spacing();
+  double grid_volume = 0, speed = 0;
+  for (std::size_t c = 0; c < w.fields.solid_fraction.size(); ++c) {
+    grid_volume += w.fields.solid_fraction[c] * h.x * h.y * h.z;
+    speed = std::max(speed, wear::meshes::norm(w.fields.velocity[c]));
+  }
+  CHECK(grid_volume == Approx(double(n) * 4.0 / 3.0 * M_PI * std::pow(0.003, 3)).epsilon(1e-12));
+  CHECK(speed < 0.01);
 }
