@@ -7,8 +7,9 @@
 
 namespace wear::coupling {
 
-int run_run_command(const std::vector<std::string>& args, std::ostream& log) {
-  RunOptions options;
+std::string parse_run_arguments(const std::vector<std::string>& args, const std::string& command,
+                                RunOptions& options) {
+  const std::string name = "wearsim " + command;
   std::string case_file;
   for (const auto& a : args) {
     if (a == "--resume")
@@ -16,16 +17,24 @@ int run_run_command(const std::vector<std::string>& args, std::ostream& log) {
     else if (a == "--overwrite")
       options.overwrite = true;
     else if (a.rfind("--", 0) == 0)
-      throw std::invalid_argument("wearsim run: unknown option '" + a + "'");
+      throw std::invalid_argument(name + ": unknown option '" + a + "'");
     else if (case_file.empty())
       case_file = a;
     else
-      throw std::invalid_argument("wearsim run: expected one case file, got '" + case_file +
-                                  "' and '" + a + "'");
+      throw std::invalid_argument(name + ": expected one case file, got '" + case_file + "' and '" +
+                                  a + "'");
   }
   if (case_file.empty())
-    throw std::invalid_argument("wearsim run: expected a case file: wearsim run [--resume | "
-                                "--overwrite] <case.prm>");
+    throw std::invalid_argument(name + ": expected a case file: " + name +
+                                " [--resume | --overwrite] <case.prm>");
+  if (options.resume && options.overwrite)
+    throw std::invalid_argument(name + ": --resume and --overwrite exclude each other");
+  return case_file;
+}
+
+int run_run_command(const std::vector<std::string>& args, std::ostream& log) {
+  RunOptions options;
+  const std::string case_file = parse_run_arguments(args, "run", options);
   CaseParameters p = read_case(case_file);
   require_no_scene(p, "run");
   CoupledRun run(p, log, options);

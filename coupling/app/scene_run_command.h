@@ -2,13 +2,17 @@
 #include "coupling/parameters/case_parameters.h"
 
 #include <iosfwd>
+#include <string>
+#include <vector>
 
 namespace wear::coupling {
 
 /// `wearsim scene-run`: the case's scene. Without Scene/Stage duration, the DEM run
 /// (dem/scene/scene_run.h) to Scene/End time with a record every Scene/Output interval
 /// (coupling/output/scene_series.h) and the resolved parameters beside; with it, the wear loop
-/// of the scene's wearing part (coupling/loop/scene_wear_run.h). Returns the exit status.
-int run_scene_run_command(const CaseParameters& p, std::ostream& log);
+/// of the scene's wearing part; checkpoints and --resume (coupling/loop/scene_coupled_run.h).
+/// Returns the exit status.
+/// `args`: the options (--resume, --overwrite) and the case file.
+int run_scene_run_command(const std::vector<std::string>& args, std::ostream& log);
 
 } // namespace wear::coupling

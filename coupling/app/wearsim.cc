@@ -26,9 +26,12 @@ void usage(std::ostream& out) {
          "  mesh <case.prm>          generate the sample (.msh/.stl/.vtu) and the tester walls\n"
          "  scene <case.prm>         build and check the walls of the case's Scene (CAD files,\n"
          "                           primitives): a table per wall and label, <name>.stl each\n"
-         "  scene-run <case.prm>     the DEM run of the case's Scene: walls and their motions,\n"
-         "                           fill, inlets, outlets, to Scene/End time; writes\n"
-         "                           scene_series.csv, particles_<k>.vtu, walls_<k>/\n"
+         "  scene-run [--resume | --overwrite] <case.prm>\n"
+         "                           the case's Scene: walls and their motions, fill, inlets,\n"
+         "                           outlets, to Scene/End time, or with a wearing part and\n"
+         "                           Scene/Stage duration the staged wear loop on it; writes\n"
+         "                           scene_series.csv, particles_<k>.vtu, walls/ (stages.csv,\n"
+         "                           part_wear.csv, surface.xdmf); checkpoints for --resume\n"
          "  dem <case.prm>           the wear tester in DEM: fill, settle, revolutions with wear\n"
          "                           evaluations; writes history.h5/.xdmf and summary.csv\n"
          "  run [--resume | --overwrite] <case.prm>\n"
@@ -117,13 +120,8 @@ int main(int argc, char** argv) {
       run_scene_command(read_case(argv[2]), std::cout);
       return 0;
     }
-    if (cmd == "scene-run") {
-      if (argc != 3) {
-        std::cerr << "wearsim scene-run: expected one case file\n";
-        return 2;
-      }
-      return run_scene_run_command(read_case(argv[2]), std::cout);
-    }
+    if (cmd == "scene-run")
+      return run_scene_run_command({argv + 2, argv + argc}, std::cout);
     if (cmd == "run")
       return run_run_command({argv + 2, argv + argc}, std::cout);
     if (cmd == "compare")

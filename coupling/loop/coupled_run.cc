@@ -193,11 +193,7 @@ StageStress CoupledRun::solve_stress(const dem::WallLoads& loads, StageRecord& r
   fem::ElasticityParameters ep = p_.fem.elasticity;
   ep.averaging_radius = stress_averaging_radius(p_);
   ep.holder_support = p_.geometry.tester.holder;
-  StageStress stress = solve_stage_stress(*sample_, loads, ep, r);
-  const meshes::Stopwatch clock;
-  output_->add_volume(r.stage, r.time, stress.grid);
-  r.output_seconds += clock.seconds();
-  return stress;
+  return solve_stage_stress(*sample_, loads, ep, *output_, r);
 }
 
 GeometryUpdate CoupledRun::update_geometry(const WearIncrement& increment,

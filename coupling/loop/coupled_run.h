@@ -33,6 +33,13 @@ struct RunOptions {
   bool overwrite = false; ///< replace a run in the output folder (kept until the first checkpoint)
 };
 
+/// Readies Output/Directory for a run and writes its resolved parameters: a folder holding a
+/// run (stages.csv, summary.csv or a checkpoint) is refused unless resuming, or moved aside to
+/// `<folder>.replaced` with --overwrite (returned, to be deleted after the new run's first
+/// checkpoint; empty if none). Throws naming Output/Directory and the options.
+std::string prepare_run_folder(const CaseParameters& p, const RunOptions& options,
+                               std::ostream& log);
+
 /// What a run accumulates over its stages; rebuilt from the stage records on resume.
 struct RunTotals {
   double cumulative_applied = 0; ///< [m^3] asked of the geometry so far

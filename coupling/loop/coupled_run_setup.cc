@@ -97,10 +97,15 @@ std::optional<OpenStage> CoupledRun::setup() {
 }
 
 std::string CoupledRun::prepare_output_folder() const {
-  const std::string& dir = p_.output.directory;
+  return prepare_run_folder(p_, options_, log_);
+}
+
+std::string prepare_run_folder(const CaseParameters& p, const RunOptions& options,
+                               std::ostream& log) {
+  const std::string& dir = p.output.directory;
   std::string aside;
-  if (!options_.resume && holds_run(dir)) {
-    if (!options_.overwrite)
+  if (!options.resume && holds_run(dir)) {
+    if (!options.overwrite)
       throw std::runtime_error(
           "Output/Directory: '" + dir +
           "' holds a run (stages.csv or a checkpoint); continue "
@@ -116,12 +121,12 @@ std::string CoupledRun::prepare_output_folder() const {
     if (ec)
       throw std::runtime_error("--overwrite: cannot move the run in '" + dir + "' to '" + aside +
                                "' (" + ec.message() + ")");
-    log_ << "the run in '" << dir << "' is moved to '" << aside
-         << "'; it is deleted when this run has written its first checkpoint" << std::endl;
+    log << "the run in '" << dir << "' is moved to '" << aside
+        << "'; it is deleted when this run has written its first checkpoint" << std::endl;
   }
   try {
     meshes::ensure_directory(dir);
-    write_resolved_parameters(p_, dir + "/parameters.prm");
+    write_resolved_parameters(p, dir + "/parameters.prm");
   } catch (const std::exception& e) {
     throw std::runtime_error("Output/Directory: cannot write into '" + dir + "' (" + e.what() +
                              ")");
@@ -149,11 +154,7 @@ meshes::SurfaceMesh CoupledRun::generate_initial_surface() const {
 
 std::optional<OpenStage> CoupledRun::resume() {
   const Checkpoint c = read_latest_checkpoint(checkpoint_path(), log_);
-  if (c.parameters != parameters_text_)
-    throw std::runtime_error("--resume: the case differs from the one checkpoint '" +
-                             checkpoint_path() +
-                             "' was written with; resume with the same case file (the run's "
-                             "parameters.prm holds it)");
+  require_same_case(c, parameters_text_, checkpoint_path());
   restore(c);
   output_->reload(stages_);
   log_ << "resumed after stage " << stages_.size() << " of " << plan_.size();

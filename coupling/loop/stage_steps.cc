@@ -17,7 +17,8 @@
 namespace wear::coupling {
 
 StageStress solve_stage_stress(const fem::WornSample& sample, const dem::WallLoads& loads,
-                               const fem::ElasticityParameters& ep, StageRecord& r) {
+                               const fem::ElasticityParameters& ep, RunOutput& output,
+                               StageRecord& r) {
   meshes::Stopwatch clock;
   const auto& surface = sample.surface();
   meshes::FaceField<meshes::Vec3> forces("force", "N", meshes::Extensivity::extensive, surface);
@@ -41,14 +42,15 @@ StageStress solve_stage_stress(const fem::WornSample& sample, const dem::WallLoa
   r.safety_factor = result.safety_factor;
   r.max_displacement = result.max_displacement;
   StageStress stress{
-      meshes::FaceField<double>("von Mises", "Pa", meshes::Extensivity::intensive, surface), {}};
+      meshes::FaceField<double>("von Mises", "Pa", meshes::Extensivity::intensive, surface)};
   for (std::size_t f = 0; f < surface.n_faces(); ++f)
     stress.von_mises[f] = result.face_von_mises_ball[f];
   r.fem_solve_seconds = clock.seconds();
   clock.restart();
-  stress.grid = fem::volume_grid(sample.triangulation(), &solver);
-  r.volume_points = int(stress.grid.points.size());
-  r.volume_cells = int(stress.grid.connectivity.size() / 4);
+  const auto grid = fem::volume_grid(sample.triangulation(), &solver);
+  r.volume_points = int(grid.points.size());
+  r.volume_cells = int(grid.connectivity.size() / 4);
+  output.add_volume(r.stage, r.time, grid);
   r.output_seconds += clock.seconds();
   return stress;
 }

@@ -1,10 +1,11 @@
 #pragma once
 // The FEM steps of a staged stage, shared by the wear tester's run (coupled_run.h) and a
-// scene's wearing part (scene_wear_run.h): the stress of the part under the stage-averaged
+// scene's wearing part (scene_coupled_run.h): the stress of the part under the stage-averaged
 // face loads, and the geometry update that applies the stage's removed volume. Each takes
 // the values it needs, fills the stage's record and returns what it made.
 #include "coupling/loop/stage_record.h"
 #include "coupling/loop/wear_increment.h"
+#include "coupling/output/run_output.h"
 #include "dem/tester/wall_loads.h"
 #include "fem/elasticity.h"
 #include "fem/worn_sample.h"
@@ -17,7 +18,6 @@ namespace wear::coupling {
 struct StageStress {
   /// [Pa] ball-averaged at each surface face's centroid (intensive; fem/stress_measures.h)
   meshes::FaceField<double> von_mises;
-  meshes::VtuGrid grid; ///< the volume with its displacement and stress, for output
 };
 
 /// A staged stage's fields carried onto the surface after the geometry update.
@@ -28,10 +28,12 @@ struct GeometryUpdate {
 };
 
 /// Elastic stress of `sample` under the forces F_f = I_f / T of the loads' traction impulse
-/// (zero when the window is empty), with `ep`. Fills the record's stress, force and
+/// (zero when the window is empty), with `ep`; the volume with its displacement and stress
+/// goes to `output` as stage r.stage at r.time. Fills the record's stress, force and
 /// displacement figures (mean_force_z, wear_face_*: in the sample's frame) and times.
 StageStress solve_stage_stress(const fem::WornSample& sample, const dem::WallLoads& loads,
-                               const fem::ElasticityParameters& ep, StageRecord& r);
+                               const fem::ElasticityParameters& ep, RunOutput& output,
+                               StageRecord& r);
 
 /// Applies the increment to `sample` (recession, mesh motion, remeshing) and carries the
 /// stage's removed volume and stress onto the new surface (FaceTransfer after a remesh).

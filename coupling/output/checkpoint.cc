@@ -357,6 +357,71 @@ OpenStage read_open_stage(const Hdf5Reader& h5) {
   return o;
 }
 
+void write_scene(Hdf5File& h5, const SceneCheckpoint& s) {
+  write_doubles(h5, "/scene/progress",
+                {s.time, s.stage_end, double(s.n_records), double(s.n_removed)});
+  write_doubles(h5, "/scene/outlet_mass", s.outlet_mass);
+  h5.write("/scene/outlet_counts", wide(s.outlet_counts), {s.outlet_counts.size()});
+  h5.write("/scene/labels", s.labels, {s.labels.size()});
+  write_doubles(h5, "/scene/removed_per_label", s.removed_per_label);
+  h5.write("/scene/n_inlets", std::vector<int>{int(s.inlets.size())}, {1});
+  for (std::size_t k = 0; k < s.inlets.size(); ++k) {
+    const auto& in = s.inlets[k];
+    const std::string g = "/scene/inlet_" + std::to_string(k);
+    write_doubles(h5, g + "/pending", in.pending);
+    write_doubles(h5, g + "/inserted", {in.inserted_mass, double(in.n_inserted)});
+    h5.attribute(g, "rng", in.rng);
+  }
+  h5.write("/scene/n_flux_planes", std::vector<int>{int(s.flux_planes.size())}, {1});
+  for (std::size_t k = 0; k < s.flux_planes.size(); ++k) {
+    const auto& f = s.flux_planes[k];
+    const std::string g = "/scene/flux_plane_" + std::to_string(k);
+    h5.write(g + "/ids", f.ids, {f.ids.size()});
+    h5.write(g + "/ahead", f.ahead, {f.ahead.size()});
+    write_doubles(h5, g + "/counts", {f.net_mass, double(f.n_forward), double(f.n_backward)});
+  }
+}
+
+SceneCheckpoint read_scene(const Hdf5Reader& h5) {
+  SceneCheckpoint s;
+  const auto x = h5.doubles("/scene/progress");
+  if (x.size() != 4)
+    throw std::runtime_error("'/scene/progress' does not hold the scene's progress");
+  s.time = x[0], s.stage_end = x[1], s.n_records = int(x[2]), s.n_removed = std::uint64_t(x[3]);
+  s.outlet_mass = h5.doubles("/scene/outlet_mass");
+  s.outlet_counts = narrow<std::uint64_t>(h5.int64s("/scene/outlet_counts"));
+  s.labels = h5.ints("/scene/labels");
+  s.removed_per_label = h5.doubles("/scene/removed_per_label");
+  if (s.labels.size() != s.removed_per_label.size() ||
+      s.outlet_mass.size() != s.outlet_counts.size())
+    throw std::runtime_error("the scene's per-label or per-outlet records differ in length");
+  const auto n_inlets = h5.ints("/scene/n_inlets");
+  for (int k = 0; k < n_inlets.at(0); ++k) {
+    const std::string g = "/scene/inlet_" + std::to_string(k);
+    dem::InletState in;
+    in.pending = h5.doubles(g + "/pending");
+    const auto inserted = h5.doubles(g + "/inserted");
+    if (inserted.size() != 2)
+      throw std::runtime_error("'" + g + "/inserted' does not hold the inserted mass and count");
+    in.inserted_mass = inserted[0], in.n_inserted = std::uint64_t(inserted[1]);
+    in.rng = h5.text_attribute(g, "rng");
+    s.inlets.push_back(in);
+  }
+  const auto n_planes = h5.ints("/scene/n_flux_planes");
+  for (int k = 0; k < n_planes.at(0); ++k) {
+    const std::string g = "/scene/flux_plane_" + std::to_string(k);
+    dem::FluxPlaneState f;
+    f.ids = h5.int64s(g + "/ids");
+    f.ahead = h5.ints(g + "/ahead");
+    const auto c = h5.doubles(g + "/counts");
+    if (c.size() != 3 || f.ids.size() != f.ahead.size())
+      throw std::runtime_error("'" + g + "' does not hold a flux plane's state");
+    f.net_mass = c[0], f.n_forward = std::uint64_t(c[1]), f.n_backward = std::uint64_t(c[2]);
+    s.flux_planes.push_back(f);
+  }
+  return s;
+}
+
 } // namespace
 
 std::vector<double> pack(const dem::RevolutionRecord& r) {
@@ -441,6 +506,9 @@ void write_checkpoint(const std::string& path, const Checkpoint& c) {
     write_continuation(h5, c.dem);
     write_open_stage(h5, *c.open_stage);
   }
+  h5.attribute("/", "has_scene", c.scene ? 1.0 : 0.0);
+  if (c.scene)
+    write_scene(h5, *c.scene);
   h5.commit(previous_checkpoint_path(path));
 }
 
@@ -476,6 +544,14 @@ dem::WallLoads loads_of(const OpenStage& o, const meshes::SurfaceMesh& surface) 
   l.wear_volume.values() = o.wear_volume;
   l.duration = o.duration;
   return l;
+}
+
+void require_same_case(const Checkpoint& c, const std::string& parameters,
+                       const std::string& path) {
+  if (c.parameters != parameters)
+    throw std::runtime_error("--resume: the case differs from the one checkpoint '" + path +
+                             "' was written with; resume with the same case file (the run's "
+                             "parameters.prm holds it)");
 }
 
 std::string previous_checkpoint_path(const std::string& path) {
@@ -565,6 +641,8 @@ Checkpoint read_checkpoint(const std::string& path) {
       read_continuation(h5, d);
       c.open_stage = read_open_stage(h5);
     }
+    if (h5.has_attribute("/", "has_scene") && h5.attribute("/", "has_scene") != 0)
+      c.scene = read_scene(h5);
     if (int(c.stages.size()) != c.stages_done || int(c.revolutions.size()) != c.revolutions_done)
       throw std::runtime_error("the record counts do not match the stage and revolution counts");
   } catch (const std::exception& e) {

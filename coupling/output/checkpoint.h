@@ -7,6 +7,8 @@
 // every size checked.
 #include "coupling/loop/stage_record.h"
 #include "dem/engine/system.h"
+#include "dem/scene/flux_plane.h"
+#include "dem/scene/inlet.h"
 #include "dem/tester/tester_evaluation.h"
 #include "dem/tester/wall_loads.h"
 #include "dem/tester/wear_tester.h"
@@ -39,6 +41,21 @@ OpenStage open_stage(const dem::WallLoads& loads, int revolutions_done, double d
 /// counts differ.
 dem::WallLoads loads_of(const OpenStage& o, const meshes::SurfaceMesh& surface);
 
+/// A scene run's own part (`wearsim scene-run`, coupling/loop/scene_coupled_run.h), between
+/// two of its windows: where the scene stands beside the engine's state.
+struct SceneCheckpoint {
+  double time = 0;             ///< [s] scene time
+  double stage_end = 0;        ///< [s] where the open stage (or the run) ends
+  int n_records = 0;           ///< windows recorded so far
+  std::uint64_t n_removed = 0; ///< particles the outlets took
+  std::vector<dem::InletState> inlets;
+  std::vector<double> outlet_mass;          ///< [kg] per outlet
+  std::vector<std::uint64_t> outlet_counts; ///< per outlet
+  std::vector<dem::FluxPlaneState> flux_planes;
+  std::vector<int> labels;               ///< the part's labels with removed volume so far
+  std::vector<double> removed_per_label; ///< [m^3] per label above (staged stages)
+};
+
 struct Checkpoint {
   int stages_done = 0;
   std::string parameters; ///< fully resolved case of the run (resume refuses another)
@@ -52,6 +69,8 @@ struct Checkpoint {
   std::vector<StageRecord> stages;
   /// Present in an in-stage checkpoint (the DEM state then carries its continuation part).
   std::optional<OpenStage> open_stage;
+  /// Present in a scene run's checkpoint (which always carries the DEM's continuation).
+  std::optional<SceneCheckpoint> scene;
 };
 
 /// Where the checkpoint before the latest one is kept: "<path without .h5>.previous.h5".
@@ -67,6 +86,9 @@ Checkpoint read_checkpoint(const std::string& path);
 /// it, with a warning on `warnings` naming both. Throws naming `path` when neither reads.
 Checkpoint read_latest_checkpoint(const std::string& path, std::ostream& warnings);
 
+/// Throws naming `path` when checkpoint c was written for another case than the one whose
+/// resolved parameters are `parameters` (a resume must continue the same case).
+void require_same_case(const Checkpoint& c, const std::string& parameters, const std::string& path);
 /// Flat numeric forms of the records (also used by the run's history.h5).
 std::vector<double> pack(const dem::RevolutionRecord& r);
 std::vector<double> pack(const StageRecord& r);

@@ -10,8 +10,10 @@
 #include "meshes/vtu_writer.h"
 
 #include <cstdio>
+#include <fstream>
 #include <iomanip>
 #include <sstream>
+#include <stdexcept>
 
 namespace wear::coupling {
 
@@ -86,7 +88,52 @@ SceneSeries::SceneSeries(std::string directory, const dem::SceneRun& run)
   }
 }
 
-void SceneSeries::add(int k, const dem::SceneWindow& w, const dem::SceneRun& run) {
+namespace {
+/// The lines of `path` (without their line ends).
+std::vector<std::string> lines_of(const std::string& path) {
+  std::ifstream in(path);
+  if (!in)
+    throw std::runtime_error("--resume: the run's table '" + path + "' is missing");
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);)
+    lines.push_back(line);
+  return lines;
+}
+} // namespace
+
+SceneSeries::SceneSeries(std::string directory, const dem::SceneRun& run, int n_records)
+    : SceneSeries(std::move(directory), run) {
+  const auto series = lines_of(directory_ + "/scene_series.csv");
+  if (int(series.size()) < n_records + 1)
+    throw std::runtime_error("--resume: '" + directory_ + "/scene_series.csv' holds " +
+                             std::to_string(series.size() - 1) + " records, the checkpoint " +
+                             std::to_string(n_records));
+  series_.clear();
+  for (int k = 0; k <= n_records; ++k)
+    series_ += series[std::size_t(k)] + "\n";
+  // scene_wear.csv: a record's rows share its time (the first column).
+  const auto wear = lines_of(directory_ + "/scene_wear.csv");
+  wear_ = wear.at(0) + "\n";
+  std::string time;
+  int records = 0;
+  for (std::size_t k = 1; k < wear.size(); ++k) {
+    const std::string t = wear[k].substr(0, wear[k].find(','));
+    if (t != time && ++records > n_records)
+      break;
+    time = t;
+    wear_ += wear[k] + "\n";
+  }
+  n_records_ = n_records;
+  for (int k = 1; run.fields() && k <= n_records; ++k) {
+    char name[64];
+    std::snprintf(name, sizeof name, "/fields/record_%04d.h5", k);
+    const Hdf5Reader h5(directory_ + name);
+    field_records_.emplace_back(k, h5.attribute("/", "time"));
+  }
+}
+
+void SceneSeries::add(const dem::SceneWindow& w, const dem::SceneRun& run) {
+  const int k = ++n_records_;
   series_ += series_row(w);
   meshes::write_atomically(directory_ + "/scene_series.csv",
                            [&](std::ostream& out) { out << series_; });

@@ -21,12 +21,18 @@ class SceneSeries {
 public:
   /// Writes the fixed walls into `directory`/walls/ and starts the tables.
   SceneSeries(std::string directory, const dem::SceneRun& run);
-  /// Record k (1-based) of window w, with the run as it stands at the window's end.
-  void add(int k, const dem::SceneWindow& w, const dem::SceneRun& run);
+  /// Continues the records of a resumed run: the tables as they stood after its first
+  /// `n_records` records (later rows, written after the checkpoint, are dropped) and the
+  /// fields files up to that record. Throws naming a table that holds fewer.
+  SceneSeries(std::string directory, const dem::SceneRun& run, int n_records);
+  /// The next record, of window w, with the run as it stands at the window's end.
+  void add(const dem::SceneWindow& w, const dem::SceneRun& run);
+  int n_records() const { return n_records_; }
 
 private:
   std::string directory_;
   std::string series_, wear_;                         ///< the tables so far
+  int n_records_ = 0;
   std::vector<bool> changing_;                        ///< per wall: written at every record
   std::vector<std::pair<int, double>> field_records_; ///< record and time of each fields file
 

@@ -5,7 +5,9 @@
 // counted.
 #include "dem/scene/flux_plane.h"
 
+#include <algorithm>
 #include <stdexcept>
+#include <string>
 
 namespace wear::dem {
 
@@ -30,6 +32,29 @@ void FluxPlane::sample(const Particles& p) {
       ++n_backward_;
     }
   }
+}
+
+FluxPlaneState FluxPlane::state() const {
+  FluxPlaneState s{net_mass_, n_forward_, n_backward_, {}, {}};
+  for (const auto& [id, ahead] : ahead_)
+    s.ids.push_back(id);
+  std::sort(s.ids.begin(), s.ids.end());
+  for (const auto id : s.ids)
+    s.ahead.push_back(ahead_.at(id) ? 1 : 0);
+  return s;
+}
+
+void FluxPlane::restore(const FluxPlaneState& s) {
+  if (s.ids.size() != s.ahead.size())
+    throw std::invalid_argument("flux plane '" + name_ + "': a state with " +
+                                std::to_string(s.ids.size()) + " ids and " +
+                                std::to_string(s.ahead.size()) + " sides");
+  net_mass_ = s.net_mass;
+  n_forward_ = s.n_forward;
+  n_backward_ = s.n_backward;
+  ahead_.clear();
+  for (std::size_t k = 0; k < s.ids.size(); ++k)
+    ahead_[s.ids[k]] = s.ahead[k] != 0;
 }
 
 } // namespace wear::dem

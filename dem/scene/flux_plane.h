@@ -6,8 +6,17 @@
 #include <cstdint>
 #include <string>
 #include <unordered_map>
+#include <vector>
 
 namespace wear::dem {
+
+/// What a flux plane has counted, for checkpoints.
+struct FluxPlaneState {
+  double net_mass = 0; ///< [kg]
+  std::uint64_t n_forward = 0, n_backward = 0;
+  std::vector<std::int64_t> ids; ///< particles sampled, ascending
+  std::vector<int> ahead;        ///< 1: on the forward side at the last sample
+};
 
 class FluxPlane {
 public:
@@ -21,6 +30,8 @@ public:
   double net_mass() const { return net_mass_; } ///< [kg] forwards minus backwards so far
   std::uint64_t n_forward() const { return n_forward_; }
   std::uint64_t n_backward() const { return n_backward_; }
+  FluxPlaneState state() const;
+  void restore(const FluxPlaneState& s);
 
 private:
   std::string name_;

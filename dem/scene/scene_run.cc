@@ -193,6 +193,60 @@ void SceneRun::setup(const std::function<void(const std::string&)>& progress) {
   time_ = engine_ready() ? system_.time() : 0.0;
 }
 
+SceneRunState SceneRun::state() const {
+  SceneRunState s;
+  s.time = time_;
+  s.engine_ready = engine_ready();
+  if (s.engine_ready)
+    s.system = system_.export_state();
+  s.n_removed = n_removed_;
+  for (const auto& in : inlets_)
+    s.inlets.push_back(in.state());
+  for (const auto& o : outlets_) {
+    s.outlet_mass.push_back(o.removed_mass);
+    s.outlet_counts.push_back(o.n_removed);
+  }
+  for (const auto& f : flux_planes_)
+    s.flux_planes.push_back(f.state());
+  return s;
+}
+
+void SceneRun::resume(const SceneRunState& s) {
+  if (s.inlets.size() != inlets_.size() || s.outlet_mass.size() != outlets_.size() ||
+      s.outlet_counts.size() != outlets_.size() || s.flux_planes.size() != flux_planes_.size())
+    throw std::invalid_argument("scene run: the state has " + std::to_string(s.inlets.size()) +
+                                " inlets, " + std::to_string(s.outlet_mass.size()) +
+                                " outlets and " + std::to_string(s.flux_planes.size()) +
+                                " flux planes; the scene has " + std::to_string(inlets_.size()) +
+                                ", " + std::to_string(outlets_.size()) + " and " +
+                                std::to_string(flux_planes_.size()));
+  if (dem_.n_threads > 0)
+    omp_set_num_threads(dem_.n_threads);
+  if (s.engine_ready) {
+    auto& p = system_.particles;
+    for (std::size_t i = 0; i < s.system.position.size(); ++i) {
+      p.add(s.system.position[i], s.system.velocity[i], s.system.radius[i], dem_.particle.density,
+            s.system.material[i]);
+      p.mass.back() = s.system.mass[i];
+      p.inertia.back() = s.system.inertia[i];
+      p.id.back() = s.system.id[i];
+    }
+    system_.settings.start_time = s.system.time;
+    system_.setup();
+    system_.resume_state(s.system);
+  }
+  time_ = s.time;
+  n_removed_ = s.n_removed;
+  for (std::size_t k = 0; k < inlets_.size(); ++k)
+    inlets_[k].restore(s.inlets[k]);
+  for (std::size_t k = 0; k < outlets_.size(); ++k) {
+    outlets_[k].removed_mass = s.outlet_mass[k];
+    outlets_[k].n_removed = s.outlet_counts[k];
+  }
+  for (std::size_t k = 0; k < flux_planes_.size(); ++k)
+    flux_planes_[k].restore(s.flux_planes[k]);
+}
+
 void SceneRun::fill(const std::function<void(const std::string&)>& progress) {
   const auto& f = scene_.fill;
   if (f.region != "box")

@@ -43,6 +43,18 @@ struct SceneWindow {
   BinnedWindow fields; ///< on the grid of Scene/Fields (empty without one)
 };
 
+/// What a scene run needs to continue between two windows, bit for bit (same thread count).
+struct SceneRunState {
+  double time = 0;             ///< [s] scene time
+  bool engine_ready = false;   ///< the engine was set up (there were particles)
+  SystemState system;          ///< with its continuation part (System::resume_state)
+  std::uint64_t n_removed = 0; ///< by the outlets so far
+  std::vector<InletState> inlets;
+  std::vector<double> outlet_mass;          ///< [kg] per outlet so far
+  std::vector<std::uint64_t> outlet_counts; ///< per outlet so far
+  std::vector<FluxPlaneState> flux_planes;
+};
+
 class SceneRun {
 public:
   /// Takes the built walls (build_scene_walls) and checks what needs them: the fill box
@@ -54,6 +66,11 @@ public:
   /// Materials, walls with their motions, the fill (settled when filled to a bed height)
   /// and the engine's set-up; `progress` hears what happens.
   void setup(const std::function<void(const std::string&)>& progress = {});
+  /// Instead of setup(): continues from a state() taken between two windows of a run of the
+  /// same scene (same walls, in particular a worn part's surface of that moment).
+  void resume(const SceneRunState& state);
+  /// The state between two windows (after advance()).
+  SceneRunState state() const;
   /// Runs on to time t_end [s]: every exchange interval the inlets place their batches and
   /// the outlets take their particles, then the engine steps. Returns the window's record.
   SceneWindow advance(double t_end);

@@ -11,6 +11,7 @@
 // it with a warning; a folder holding a run is refused without --resume or --overwrite, and
 // --overwrite deletes the old run only after the new run's first checkpoint.
 #include "coupling/output/checkpoint.h"
+#include "wearsim_process.h"
 
 #include <catch2/catch.hpp>
 
@@ -69,40 +70,6 @@ end
 )";
 }
 
-std::string file_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
-
-// `wearsim run [option] <case>` in the background, its output into `log`.
-pid_t start_wearsim(const std::string& case_file, const std::string& option,
-                    const std::string& log) {
-  std::ofstream(log, std::ios::trunc).flush(); // no earlier run's log is read while it starts
-  const pid_t pid = fork();
-  if (pid == 0) {
-    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    dup2(fd, 1);
-    dup2(fd, 2);
-    if (option.empty())
-      execl(WEARSIM_BINARY, "wearsim", "run", case_file.c_str(), (char*)nullptr);
-    else
-      execl(WEARSIM_BINARY, "wearsim", "run", option.c_str(), case_file.c_str(), (char*)nullptr);
-    _exit(127);
-  }
-  return pid;
-}
-
-// The exit status, or 128 + the signal that ended it.
-int wait_for(pid_t pid) {
-  int status = 0;
-  waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-}
-
-int run_wearsim(const std::string& case_file, const std::string& option, const std::string& log) {
-  return wait_for(start_wearsim(case_file, option, log));
-}
-
 // Waits until the run's latest checkpoint lies inside stage `stage` (at least one in-stage
 // checkpoint written there); false if the run ended first.
 bool wait_inside_stage(pid_t pid, const std::string& dir, int stage) {
@@ -117,30 +84,6 @@ bool wait_inside_stage(pid_t pid, const std::string& dir, int stage) {
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
-}
-
-// A CSV as rows of cells, leaving out the wall-clock columns (seconds of work, speeds).
-std::vector<std::vector<std::string>> physical_columns(const std::string& path) {
-  std::istringstream in(file_text(path));
-  std::vector<std::vector<std::string>> rows;
-  const std::set<std::string> wall_clock{
-      "wall_seconds", "particle_steps_per_s", "dem_s",    "wear_s",
-      "fem_solve_s",  "mesh_motion_s",        "remesh_s", "output_s"};
-  std::vector<bool> keep;
-  for (std::string line; std::getline(in, line);) {
-    std::vector<std::string> cells, kept;
-    std::istringstream l(line);
-    for (std::string cell; std::getline(l, cell, ',');)
-      cells.push_back(cell);
-    if (keep.empty())
-      for (const auto& name : cells)
-        keep.push_back(wall_clock.count(name) == 0);
-    for (std::size_t k = 0; k < cells.size() && k < keep.size(); ++k)
-      if (keep[k])
-        kept.push_back(cells[k]);
-    rows.push_back(kept);
-  }
-  return rows;
 }
 
 void check_same_run(const std::string& a, const std::string& b) {

@@ -5,20 +5,25 @@
 // law of the DEM's own per-label records, the FEM receives the DEM's force on the part, the
 // geometry loses exactly the removed volume, only the wearing surface wears, and the DEM wall
 // carries the worn surface afterwards. Bad wear-loop set-ups are refused naming the parameter.
-#include "coupling/loop/scene_wear_run.h"
+#include "coupling/loop/scene_coupled_run.h"
 #include "coupling/output/hdf5_file.h"
 #include "error_of.h"
 #include "fem/sample_triangulation.h"
 #include "meshes/gmsh_session.h"
+#include "wearsim_process.h"
 
 #include <catch2/catch.hpp>
 
 #include <gmsh.h>
 
+#include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <random>
 #include <sstream>
+#include <thread>
 #include <vector>
 
 using namespace wear;
@@ -101,6 +106,13 @@ std::string plate_case(const std::string& dir, const std::string& plate_extra = 
          dir + "\nend\n";
 }
 
+std::string plate_case(const std::string& dir, const std::string& plate_extra,
+                       const std::string& schedule, const std::string& output_extra) {
+  std::string text = plate_case(dir, plate_extra, schedule);
+  const auto at = text.rfind("end\n");
+  return text.substr(0, at) + output_extra + "end\n";
+}
+
 CaseParameters read_text(const std::string& name, const std::string& text) {
   std::ofstream(name) << text;
   std::ostringstream warnings;
@@ -157,10 +169,11 @@ TEST_CASE("scene wear loop: a STEP plate worn by a bed it slides under", "[coupl
   std::filesystem::remove_all("scene_wear_out");
   const auto p = read_text("scene_wear.prm", plate_case("scene_wear_out"));
   std::ostringstream log;
-  SceneWearRun run(p, log);
+  SceneCoupledRun run(p, log);
   REQUIRE(run.run() == 0);
   INFO(log.str());
-  const auto& part = run.part();
+  REQUIRE(run.part() != nullptr);
+  const auto& part = *run.part();
   const auto& surface = part.surface();
 
   // Labels: each CAD surface by number under its role, in the FEM and the DEM alike.
@@ -232,7 +245,7 @@ TEST_CASE("scene wear loop: set-ups that cannot run are refused naming the param
   const auto refused = [](const std::string& name, const std::string& text) {
     return error_of([&] {
       std::ostringstream log;
-      SceneWearRun run(read_text(name, text), log);
+      SceneCoupledRun run(read_text(name, text), log);
       run.run();
     });
   };
@@ -251,4 +264,66 @@ TEST_CASE("scene wear loop: set-ups that cannot run are refused naming the param
   CHECK(refused("wear_word.prm", plate_case("scene_wear_bad", "    set Clamped surfaces = top\n"))
             .find("Scene/Wall plate/Clamped surfaces: 'top' is not a surface number") !=
         std::string::npos);
+}
+
+TEST_CASE("scene wear loop: stopped by a signal or killed inside a stage, resumed bit for bit",
+          "[coupling][scene]") {
+  write_plate("wear_plate.step");
+  // Windows of 0.02 s, a checkpoint after each (the interval is shorter than a window's work).
+  const auto case_of = [](const std::string& dir) {
+    std::string text =
+        plate_case(dir, "", "1 dem-only, 2 staged", "  set Checkpoint interval = 1e-6\n");
+    const auto at = text.find("  set Output interval = 0.05\n");
+    return text.replace(at, 29, "  set Output interval = 0.02\n");
+  };
+  const std::string a = "scene_resume_a";
+  std::filesystem::remove_all(a);
+  std::ofstream(a + ".prm") << case_of(a);
+  REQUIRE(run_wearsim(a + ".prm", "", a + ".log", "scene-run") == 0);
+  INFO(file_text(a + ".log"));
+  std::mt19937 rng(Catch::rngSeed());
+  for (const int signal : {SIGTERM, SIGKILL}) {
+    const std::string b = std::string("scene_resume_") + (signal == SIGTERM ? "term" : "kill");
+    std::filesystem::remove_all(b);
+    std::ofstream(b + ".prm") << case_of(b);
+    const pid_t pid = start_wearsim(b + ".prm", "", b + ".log", "scene-run");
+    // Inside stage 2: its first checkpoint is there, then a random moment.
+    bool inside = false;
+    while (!inside && waitpid(pid, nullptr, WNOHANG) == 0) {
+      try {
+        const Checkpoint c = read_checkpoint(b + "/checkpoint.h5");
+        inside = c.stages_done == 1 && c.scene && c.scene->n_records > 5;
+      } catch (const std::exception&) {
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    REQUIRE(inside);
+    std::this_thread::sleep_for(std::chrono::milliseconds(rng() % 200));
+    kill(pid, signal);
+    const int status = wait_for(pid);
+    INFO(file_text(b + ".log"));
+    if (signal == SIGTERM && status == 128 + SIGTERM)
+      CHECK_THAT(file_text(b + ".log"),
+                 Catch::Contains("continue with wearsim scene-run --resume"));
+    else if (status == 0)
+      WARN("the run ended before the signal came; its resume below has nothing left to do");
+    REQUIRE(run_wearsim(b + ".prm", "--resume", b + ".resumed.log", "scene-run") == 0);
+    INFO(file_text(b + ".resumed.log"));
+    for (const char* table : {"/stages.csv", "/scene_series.csv", "/scene_wear.csv"}) {
+      INFO(table);
+      CHECK(physical_columns(b + table) == physical_columns(a + table));
+    }
+    CHECK(file_text(b + "/part_wear.csv") == file_text(a + "/part_wear.csv"));
+    const auto ca = read_checkpoint(a + "/checkpoint.h5"),
+               cb = read_checkpoint(b + "/checkpoint.h5");
+    CHECK(cb.stages_done == 3);
+    CHECK(cb.sample.surface.vertices == ca.sample.surface.vertices);
+    CHECK(cb.sample.removed_volume == ca.sample.removed_volume);
+    CHECK(cb.dem.position == ca.dem.position);
+    CHECK(cb.dem.pair_history == ca.dem.pair_history);
+  }
+  // A folder holding a run is refused without --resume or --overwrite.
+  CHECK(run_wearsim(a + ".prm", "", a + ".again.log", "scene-run") == 1);
+  CHECK_THAT(file_text(a + ".again.log"),
+             Catch::Contains("--resume") && Catch::Contains("--overwrite"));
 }
