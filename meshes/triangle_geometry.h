@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 namespace wear::meshes {
 
@@ -73,6 +74,56 @@ inline bool triangle_intersects_box(Vec3 a, Vec3 b, Vec3 c, const Vec3& lo, cons
       if (separated(cross(u, e)))
         return false;
   return true;
+}
+
+/// True when triangle abc and the solid cylinder of radius r around the segment from `base`
+/// along the unit vector `u` for `length` share a point. The triangle is clipped to the slab
+/// 0 <= (x - base) . u <= length; the clipped polygon meets the cylinder when its projection
+/// onto the plane normal to u comes within r of the axis (or covers it).
+inline bool triangle_intersects_cylinder(const Vec3& a, const Vec3& b, const Vec3& c,
+                                         const Vec3& base, const Vec3& u, double length, double r) {
+  // Sutherland-Hodgman against s >= 0 and s <= length; at most 5 vertices remain.
+  Vec3 poly[8] = {a - base, b - base, c - base};
+  int n = 3;
+  const auto clip = [&](double sign, double offset) { // keep sign * s <= offset
+    Vec3 out[8];
+    int m = 0;
+    for (int i = 0; i < n; ++i) {
+      const Vec3 &p = poly[i], &q = poly[(i + 1) % n];
+      const double dp = sign * dot(p, u) - offset, dq = sign * dot(q, u) - offset;
+      if (dp <= 0)
+        out[m++] = p;
+      if ((dp < 0 && dq > 0) || (dp > 0 && dq < 0))
+        out[m++] = p + (q - p) * (dp / (dp - dq));
+    }
+    n = m;
+    for (int i = 0; i < m; ++i)
+      poly[i] = out[i];
+  };
+  clip(-1, 0);
+  clip(1, length);
+  if (n == 0)
+    return false;
+  // Projections onto the plane normal to u; the axis is the origin there.
+  Vec3 q[8];
+  for (int i = 0; i < n; ++i)
+    q[i] = poly[i] - u * dot(poly[i], u);
+  double nearest = std::numeric_limits<double>::infinity(), area = 0, scale = 0;
+  bool all_left = true, all_right = true;
+  for (int i = 0; i < n; ++i) {
+    area += dot(cross(q[i], q[(i + 1) % n]), u);
+    scale = std::fmax(scale, dot(q[i], q[i]));
+    const Vec3 &p = q[i], &e = q[(i + 1) % n] - q[i];
+    const double ee = dot(e, e);
+    const double t = ee > 0 ? std::fmin(1.0, std::fmax(0.0, -dot(p, e) / ee)) : 0.0;
+    nearest = std::fmin(nearest, norm(p + e * t));
+    const double side = dot(cross(p, e), u); // the origin's side of the edge
+    all_left = all_left && side >= 0;
+    all_right = all_right && side <= 0;
+  }
+  // A polygon parallel to the axis projects to a segment: no area, nothing to cover.
+  const bool covers = std::fabs(area) > 1e-12 * scale && (all_left || all_right);
+  return nearest <= r || covers;
 }
 
 } // namespace wear::meshes

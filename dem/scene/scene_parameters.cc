@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -155,17 +156,38 @@ void validate(const SceneParameters& s) {
       if (!(lo[d] < hi[d]))
         throw std::invalid_argument(what + "/Minimum must lie below Maximum in every direction");
       if (lo[d] < s.domain_min[d] || hi[d] > s.domain_max[d])
-        throw std::invalid_argument(what + ": the box reaches outside Scene/Domain (check the "
-                                           "unit: metres)");
+        throw std::invalid_argument(what + ": the region reaches outside Scene/Domain (check "
+                                           "the unit: metres)");
     }
   };
   if (s.fill.region == "box") {
     three(s.fill.minimum, "Scene/Fill/Minimum");
     three(s.fill.maximum, "Scene/Fill/Maximum");
     inside_domain(s.fill.minimum, s.fill.maximum, "Scene/Fill");
-    if (s.fill.count == 0 && !(s.fill.bed_height > 0))
-      throw std::invalid_argument("Scene/Fill: give a Count or a positive Bed height [m]");
   }
+  if (s.fill.region == "cylinder") {
+    three(s.fill.origin, "Scene/Fill/Origin");
+    three(s.fill.axis, "Scene/Fill/Axis");
+    const meshes::Vec3 o = scene_vector(s.fill.origin), a = scene_vector(s.fill.axis);
+    const double length = meshes::norm(a);
+    if (!(length > 0))
+      throw std::invalid_argument("Scene/Fill/Axis must not be zero");
+    if (!(s.fill.radius > 0))
+      throw std::invalid_argument("Scene/Fill/Radius must be positive [m] for a cylinder");
+    if (s.fill.count == 0 && !(a.z > 0 && std::hypot(a.x, a.y) <= 1e-9 * length))
+      throw std::invalid_argument("Scene/Fill/Axis: a fill to a Bed height needs the "
+                                  "cylinder's axis along +z (its base the floor)");
+    std::vector<double> lo(3), hi(3);
+    for (int d = 0; d < 3; ++d) { // the bounding box of the two end discs
+      const double e =
+          s.fill.radius * std::sqrt(std::fmax(0.0, 1 - a[d] * a[d] / (length * length)));
+      lo[d] = std::fmin(o[d], o[d] + a[d]) - e;
+      hi[d] = std::fmax(o[d], o[d] + a[d]) + e;
+    }
+    inside_domain(lo, hi, "Scene/Fill");
+  }
+  if (s.fill.region != "none" && s.fill.count == 0 && !(s.fill.bed_height > 0))
+    throw std::invalid_argument("Scene/Fill: give a Count or a positive Bed height [m]");
   if (s.fields.cells.size() != 3)
     throw std::invalid_argument("Scene/Fields/Cells: needs 3 counts (nx, ny, nz), got " +
                                 std::to_string(s.fields.cells.size()));

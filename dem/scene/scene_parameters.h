@@ -71,9 +71,12 @@ struct SceneFluxPlaneParameters {
 /// Particles in place at the start: none, or a box filled at random to a count, or to a
 /// bed height after settling.
 struct SceneFillParameters {
-  std::string region = "none";          ///< none | box
+  std::string region = "none";          ///< none | box | cylinder
   std::vector<double> minimum{0, 0, 0}; ///< [m] the box
   std::vector<double> maximum{0, 0, 0}; ///< [m]
+  std::vector<double> origin{0, 0, 0};  ///< [m] the cylinder's base centre
+  std::vector<double> axis{0, 0, 1};    ///< [m] the cylinder's axis, base to top
+  double radius = 0;                    ///< [m] the cylinder's radius
   std::uint64_t count = 0;              ///< particles; 0: fill to Bed height
   double bed_height = 0;                ///< [m] above the box's floor, settled
 };
@@ -149,18 +152,24 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
          "End time is then their sum. 0: no stages; the scene runs to End time and only "
          "accumulates wear.");
   v.enter("Fill");
-  v.selection("Region", s.fill.region, "none|box",
-              "Particles in place at the start: none, or random in an axis-aligned box (the "
-              "DEM subsection's size distribution and particle material).");
+  v.selection("Region", s.fill.region, "none|box|cylinder",
+              "Particles in place at the start: none, or random in an axis-aligned box or in a "
+              "cylinder (the DEM subsection's size distribution and particle material). The "
+              "region may not cut or touch a wall.");
   v.real_list("Minimum", s.fill.minimum, "[m] The box's lower corner.");
   v.real_list("Maximum", s.fill.maximum, "[m] The box's upper corner.");
+  v.real_list("Origin", s.fill.origin, "[m] The cylinder's base centre.");
+  v.real_list("Axis", s.fill.axis,
+              "[m] The cylinder's axis from its base to its top (along +z for a Bed height).");
+  v.real("Radius", s.fill.radius, "[m] The cylinder's radius.");
   v.count("Count", s.fill.count,
-          "Particles to place; 0: as many as settle to Bed height above the box's floor.");
+          "Particles to place; 0: as many as settle to Bed height above the region's floor.");
   v.real("Bed height", s.fill.bed_height,
-         "[m] Settled bed height above the box's floor when Count is 0: the count is that of "
-         "a bed of the DEM subsection's Assumed packing over the box's footprint, placed "
-         "loosely above and settled under gravity before the run starts. A bed that spreads "
-         "wider than the box (a container larger than it) settles lower.");
+         "[m] Settled bed height above the region's floor (the box's bottom, the cylinder's "
+         "base) when Count is 0: the count is that of a bed of the DEM subsection's Assumed "
+         "packing over the region's footprint, placed loosely above and settled under gravity "
+         "before the run starts. A bed that spreads wider than the region (a container larger "
+         "than it) settles lower.");
   v.leave();
   v.enter("Fields");
   v.int_list("Cells", s.fields.cells,

@@ -11,8 +11,9 @@
 // shortest inlet interval, at most a tenth of the output interval), the engine stepping in between.
 // A scene that starts empty sets the engine up at its first particle, its clock starting there.
 //
-// The fill box is checked against every wall triangle (separating axes, exact) before any
-// particle exists: particles placed through a wall would start overlapping it.
+// The fill region is checked against every wall triangle (a box by separating axes, a cylinder
+// by clipping the triangle to its slab; both exact) before any particle exists: particles
+// placed through a wall would start overlapping it.
 #include "dem/scene/scene_run.h"
 
 #include "dem/tester/wear_tester.h"
@@ -39,36 +40,98 @@ Vec3 vec(const std::vector<double>& v) {
   return scene_vector(v);
 }
 
-/// The box the fill places particles in: the Fill box, or for a bed height the part of it
-/// up to 2.5 heights above its floor (loose, before settling).
+/// Where the fill places particles: the Fill box or cylinder, or for a bed height its part up
+/// to 2.5 heights above its floor (loose, before settling).
 constexpr double loose_factor = 2.5;
-std::pair<Vec3, Vec3> fill_box(const SceneFillParameters& f) {
-  Vec3 lo = vec(f.minimum), hi = vec(f.maximum);
-  if (f.count == 0)
-    hi.z = lo.z + loose_factor * f.bed_height;
-  return {lo, hi};
+struct FillShape {
+  bool cylinder = false;
+  Vec3 lo, hi;          ///< [m] the box; the cylinder's bounding box
+  Vec3 base, axis;      ///< [m], [-] the cylinder's base centre and unit axis
+  double length = 0;    ///< [m] the cylinder's
+  double radius = 0;    ///< [m] the cylinder's
+  double floor_z = 0;   ///< [m] the bed's floor
+  double footprint = 0; ///< [m^2] horizontal area of a bed
+  double full_top = 0;  ///< [m] the region's top before a bed height cuts it
+  std::string describe() const {
+    std::ostringstream s;
+    if (cylinder)
+      s << "the cylinder of radius " << radius << " m from (" << base.x << ", " << base.y << ", "
+        << base.z << ") m, " << length << " m long";
+    else
+      s << "the box (" << lo.x << ", " << lo.y << ", " << lo.z << ") .. (" << hi.x << ", " << hi.y
+        << ", " << hi.z << ") m";
+    return s.str();
+  }
+  bool cuts(const Vec3& a, const Vec3& b, const Vec3& c) const {
+    return cylinder ? meshes::triangle_intersects_cylinder(a, b, c, base, axis, length, radius)
+                    : meshes::triangle_intersects_box(a, b, c, lo, hi);
+  }
+  /// Centres admissible for spheres of radius `margin`, below z_top.
+  FillRegion region(double margin, double z_top) const {
+    if (!cylinder)
+      return box_region(lo, {hi.x, hi.y, z_top}, margin);
+    const double top = std::fmin(length, z_top - base.z);
+    FillRegion r{lo + Vec3{margin, margin, margin}, hi - Vec3{margin, margin, margin}, {}};
+    r.hi.z = std::fmin(r.hi.z, z_top - margin);
+    r.inside = [b = base, u = axis, top, R = radius, margin](const Vec3& x) {
+      const Vec3 d = x - b;
+      const double s = meshes::dot(d, u);
+      return s >= margin && s <= top - margin && meshes::norm(d - u * s) <= R - margin;
+    };
+    return r;
+  }
+};
+
+FillShape fill_shape(const SceneFillParameters& f) {
+  FillShape shape;
+  if (f.region == "cylinder") {
+    shape.cylinder = true;
+    shape.base = vec(f.origin);
+    const Vec3 a = vec(f.axis);
+    shape.length = meshes::norm(a);
+    shape.axis = a / shape.length;
+    shape.radius = f.radius;
+    for (int d = 0; d < 3; ++d) {
+      const double e = f.radius * std::sqrt(std::fmax(0.0, 1 - shape.axis[d] * shape.axis[d]));
+      shape.lo[d] = std::fmin(shape.base[d], shape.base[d] + a[d]) - e;
+      shape.hi[d] = std::fmax(shape.base[d], shape.base[d] + a[d]) + e;
+    }
+    shape.floor_z = shape.base.z;
+    shape.footprint = pi * f.radius * f.radius;
+  } else {
+    shape.lo = vec(f.minimum);
+    shape.hi = vec(f.maximum);
+    shape.floor_z = shape.lo.z;
+    shape.footprint = (shape.hi.x - shape.lo.x) * (shape.hi.y - shape.lo.y);
+  }
+  shape.full_top = shape.hi.z;
+  if (f.count == 0) { // a bed height: the loose bed's part only
+    shape.hi.z = shape.floor_z + loose_factor * f.bed_height;
+    if (shape.cylinder)
+      shape.length = std::fmin(shape.length, loose_factor * f.bed_height);
+  }
+  return shape;
 }
 
-/// Throws when a triangle of a wall cuts the box [lo, hi], naming the wall and its file.
-void require_clear_of_walls(const std::vector<SceneWall>& walls, const Vec3& lo, const Vec3& hi) {
+/// Throws when a triangle of a wall cuts the fill region, naming the wall and its file.
+void require_clear_of_walls(const std::vector<SceneWall>& walls, const FillShape& shape) {
   for (const auto& w : walls) {
     const auto& m = w.surface.mesh;
     for (std::size_t f = 0; f < m.n_faces(); ++f) {
       const auto& t = m.triangles[f];
       const Vec3 a = m.vertices[t[0]], b = m.vertices[t[1]], c = m.vertices[t[2]];
-      if (!meshes::triangle_intersects_box(a, b, c, lo, hi))
+      if (!shape.cuts(a, b, c))
         continue;
       const Vec3 at = (a + b + c) / 3.0;
       std::ostringstream s;
-      s << "Scene/Fill: the box (" << lo.x << ", " << lo.y << ", " << lo.z << ") .. (" << hi.x
-        << ", " << hi.y << ", " << hi.z << ") m";
+      s << "Scene/Fill: " << shape.describe();
       if (w.parameters.source == "file")
         s << " intersects wall '" << w.parameters.name << "' ('" << w.parameters.file << "', unit "
           << w.parameters.unit << ")";
       else
         s << " intersects wall '" << w.parameters.name << "' (" << w.parameters.source << ")";
       s << " near (" << at.x << ", " << at.y << ", " << at.z
-        << ") m: particles would start inside it; move the box clear of the walls";
+        << ") m: particles would start inside it; move the region clear of the walls";
       throw std::invalid_argument(s.str());
     }
   }
@@ -104,14 +167,16 @@ SceneRun::SceneRun(const SceneParameters& scene, const TesterDemParameters& dem,
     : scene_(scene), dem_(dem), walls_(std::move(walls)) {
   validate(scene_);
   validate(dem_);
-  if (scene_.fill.region == "box") {
-    const auto [lo, hi] = fill_box(scene_.fill);
-    if (hi.z > scene_.fill.maximum[2])
-      throw std::invalid_argument("Scene/Fill: a bed of " + std::to_string(scene_.fill.bed_height) +
-                                  " m is placed loosely up to 2.5 times its height above the "
-                                  "box's floor; raise Maximum z to at least " +
-                                  std::to_string(hi.z) + " m");
-    require_clear_of_walls(walls_, lo, hi);
+  if (scene_.fill.region != "none") {
+    const FillShape shape = fill_shape(scene_.fill);
+    if (shape.hi.z > shape.full_top + 1e-12)
+      throw std::invalid_argument(
+          "Scene/Fill: a bed of " + std::to_string(scene_.fill.bed_height) +
+          " m is placed loosely up to 2.5 times its height above the region's floor; " +
+          (shape.cylinder
+               ? "lengthen Axis to at least " + std::to_string(shape.hi.z - shape.floor_z) + " m"
+               : "raise Maximum z to at least " + std::to_string(shape.hi.z) + " m"));
+    require_clear_of_walls(walls_, shape);
   }
   // Materials first: the inlets need the particle material's index.
   add_materials_and_walls();
@@ -249,28 +314,24 @@ void SceneRun::resume(const SceneRunState& s) {
 
 void SceneRun::fill(const std::function<void(const std::string&)>& progress) {
   const auto& f = scene_.fill;
-  if (f.region != "box")
+  if (f.region == "none")
     return;
-  const auto [lo, hi] = fill_box(f);
+  const FillShape shape = fill_shape(f);
   const double r_max = 0.5 * dem_.psd.max_diameter();
   if (f.count > 0) {
     const std::size_t got =
-        insert_random(system_.particles, box_region(lo, hi, r_max), dem_.psd, std::size_t(f.count),
-                      dem_.particle.density, particle_material_, dem_.seed);
+        insert_random(system_.particles, shape.region(r_max, shape.hi.z), dem_.psd,
+                      std::size_t(f.count), dem_.particle.density, particle_material_, dem_.seed);
     if (got < f.count)
       throw std::runtime_error("Scene/Fill: only " + std::to_string(got) + " of " +
-                               std::to_string(f.count) +
-                               " particles fit into the box; enlarge it or lower Count");
+                               std::to_string(f.count) + " particles fit into " + shape.describe() +
+                               "; enlarge it or lower Count");
     return;
   }
-  const double area = (hi.x - lo.x) * (hi.y - lo.y);
   const auto report = fill_to_height(
-      system_,
-      [lo = lo, hi = hi, r_max](double z_top) {
-        return box_region(lo, {hi.x, hi.y, z_top}, r_max);
-      },
-      area, lo.z, f.bed_height, dem_.psd, dem_.particle.density, particle_material_, dem_.seed,
-      loose_factor, 0.01, 2.0,
+      system_, [&shape, r_max](double z_top) { return shape.region(r_max, z_top); },
+      shape.footprint, shape.floor_z, f.bed_height, dem_.psd, dem_.particle.density,
+      particle_material_, dem_.seed, loose_factor, 0.01, 2.0,
       [&](double t) {
         if (progress)
           progress("settling the fill: t = " + std::to_string(t) + " s");

@@ -7,7 +7,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 using namespace wear::dem;
 
@@ -184,4 +186,44 @@ TEST_CASE("scene run: a fill to a bed height settles before the run starts") {
   }
   CHECK(grid_volume == Approx(double(n) * 4.0 / 3.0 * M_PI * std::pow(0.003, 3)).epsilon(1e-12));
   CHECK(speed < 0.01);
+}
+
+TEST_CASE("scene run: a cylinder fills the bin to a count or a bed height, clear of its wall") {
+  SceneParameters scene = bin(0.025);
+  scene.walls[1].radius_inner = 0.002; // a pinhole: nothing drains
+  scene.walls[1].mesh_size = 0.006;
+  scene.fill.region = "cylinder";
+  scene.fill.origin = {0, 0, 0.001};
+  scene.fill.axis = {0, 0, 0.2};
+  scene.fill.radius = 0.058; // 2 mm inside the bin's wall, which a box could not fill
+  scene.fill.count = 600;
+  SceneRun counted(scene, gravel(), build_scene_walls(scene));
+  counted.setup();
+  const auto& p = counted.system().particles;
+  REQUIRE(p.n_real == 600);
+  for (std::size_t i = 0; i < p.n_real; ++i) {
+    const auto& x = p.position[i];
+    REQUIRE(std::hypot(x.x, x.y) <= 0.058 - p.radius[i] + 1e-12);
+    REQUIRE(x.z >= 0.001 + p.radius[i] - 1e-12);
+  }
+  // To a bed height over the bin's whole floor: the bed settles to about the height asked.
+  scene.fill.count = 0;
+  scene.fill.bed_height = 0.03;
+  SceneRun bed(scene, gravel(), build_scene_walls(scene));
+  bed.setup();
+  const auto& q = bed.system().particles;
+  std::vector<double> z;
+  for (std::size_t i = 0; i < q.n_real; ++i)
+    z.push_back(q.position[i].z + q.radius[i]);
+  std::sort(z.begin(), z.end());
+  const double top = z[std::size_t(0.98 * double(z.size()))]; // the surface, not a stray grain
+  CHECK(top == Approx(0.001 + 0.03).margin(0.006));           // within a particle diameter
+  // A cylinder wider than the bin cuts its wall: refused, naming it.
+  scene.fill.radius = 0.061;
+  CHECK_THROWS_WITH(SceneRun(scene, gravel(), build_scene_walls(scene)),
+                    Catch::Contains("Scene/Fill: the cylinder of radius 0.061 m") &&
+                        Catch::Contains("intersects wall 'bin' (cylinder)"));
+  scene.fill.radius = 0.05;
+  scene.fill.axis = {0.01, 0, 0.2};
+  CHECK_THROWS_WITH(validate(scene), Catch::Contains("Scene/Fill/Axis: a fill to a Bed height"));
 }

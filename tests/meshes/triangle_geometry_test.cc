@@ -1,0 +1,86 @@
+// Exact triangle-region tests (meshes/triangle_geometry.h) that decide whether a scene's fill
+// region cuts a wall: set cases on either side of the boundary, and random triangles against
+// dense point sampling (a sampled point inside the region must make the test true; a test
+// that says false must have every sample outside).
+#include "meshes/triangle_geometry.h"
+
+#include <catch2/catch.hpp>
+
+#include <random>
+
+using namespace wear::meshes;
+
+namespace {
+
+bool in_cylinder(const Vec3& x, const Vec3& base, const Vec3& u, double length, double r) {
+  const Vec3 d = x - base;
+  const double s = dot(d, u);
+  return s >= 0 && s <= length && norm(d - u * s) <= r;
+}
+
+bool in_box(const Vec3& x, const Vec3& lo, const Vec3& hi) {
+  return x.x >= lo.x && x.y >= lo.y && x.z >= lo.z && x.x <= hi.x && x.y <= hi.y && x.z <= hi.z;
+}
+
+// Whether any of the triangle's 861 barycentric grid points lies in the region.
+template <typename Inside>
+bool sampled(const Vec3& a, const Vec3& b, const Vec3& c, const Inside& inside) {
+  const int n = 40;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; i + j <= n; ++j)
+      if (inside(a + (b - a) * (double(i) / n) + (c - a) * (double(j) / n)))
+        return true;
+  return false;
+}
+
+} // namespace
+
+TEST_CASE("triangle and cylinder: either side of the mantle, the caps, parallel faces",
+          "[meshes]") {
+  const Vec3 base{0, 0, 0}, u{0, 0, 1};
+  const double L = 1, r = 0.5, e = 1e-9;
+  const auto cuts = [&](const Vec3& a, const Vec3& b, const Vec3& c) {
+    return triangle_intersects_cylinder(a, b, c, base, u, L, r);
+  };
+  // A large horizontal triangle through the axis, within and beyond the slab.
+  CHECK(cuts({-5, -5, 0.5}, {5, -5, 0.5}, {0, 5, 0.5}));
+  CHECK_FALSE(cuts({-5, -5, 1 + e}, {5, -5, 1 + e}, {0, 5, 1 + e}));
+  CHECK_FALSE(cuts({-5, -5, -e}, {5, -5, -e}, {0, 5, -e}));
+  // A vertical triangle parallel to the axis (its projection is a segment), just outside and
+  // just inside the mantle.
+  CHECK_FALSE(cuts({r + e, -1, 0}, {r + e, 1, 0}, {r + e, 0, 1}));
+  CHECK(cuts({r - e, -1, 0}, {r - e, 1, 0}, {r - e, 0, 1}));
+  // A triangle beside the cylinder reaching in with one corner, or not quite.
+  CHECK(cuts({r - e, 0, 0.5}, {2, 1, 0.5}, {2, -1, 0.2}));
+  CHECK_FALSE(cuts({r + e, 0, 0.5}, {2, 1, 0.5}, {2, -1, 0.2}));
+  // A floor a millimetre below the base does not cut it; the base's own plane touches it.
+  CHECK_FALSE(cuts({-5, -5, -1e-3}, {5, -5, -1e-3}, {0, 5, -1e-3}));
+  CHECK(cuts({-5, -5, 0}, {5, -5, 0}, {0, 5, 0}));
+}
+
+TEST_CASE("triangle and cylinder or box: random triangles agree with dense sampling", "[meshes]") {
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> x(-1.5, 1.5), angle(0, 3.14159265358979);
+  int n_true = 0, n_false = 0, n_unsampled = 0;
+  for (int k = 0; k < 2000; ++k) {
+    const double t = angle(rng), p = 2 * angle(rng);
+    const Vec3 u{std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t)};
+    const Vec3 base{x(rng) * 0.2, x(rng) * 0.2, x(rng) * 0.2};
+    const double L = 0.5 + 0.3 * x(rng) / 1.5, r = 0.3 + 0.1 * x(rng) / 1.5;
+    const Vec3 a{x(rng), x(rng), x(rng)}, b{x(rng), x(rng), x(rng)}, c{x(rng), x(rng), x(rng)};
+    const bool cut = triangle_intersects_cylinder(a, b, c, base, u, L, r);
+    const bool hit = sampled(a, b, c, [&](const Vec3& q) { return in_cylinder(q, base, u, L, r); });
+    if (hit)
+      REQUIRE(cut); // a point inside: the test cannot miss it
+    (cut ? n_true : n_false)++;
+    n_unsampled += cut && !hit; // a graze between the samples, or a wrong "true"
+    const Vec3 lo{-0.4, -0.3, -0.2}, hi{0.3, 0.4, 0.5};
+    if (sampled(a, b, c, [&](const Vec3& q) { return in_box(q, lo, hi); }))
+      REQUIRE(triangle_intersects_box(a, b, c, lo, hi));
+  }
+  // Both outcomes occur often, so the comparison means something.
+  CHECK(n_true > 200);
+  CHECK(n_false > 200);
+  // "True" without a sampled point only where the triangle grazes the region.
+  CHECK(n_unsampled < n_true / 20);
+}
