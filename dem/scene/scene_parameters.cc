@@ -106,6 +106,22 @@ RigidMotion rigid_motion(const SceneWallParameters& w) {
   return m;
 }
 
+WallMotion surface_motion(const SceneWallParameters& w) {
+  WallMotion m;
+  if (w.motion == "surface rotation") {
+    m.axis_point = scene_vector(w.axis_point);
+    m.axis = meshes::normalized(scene_vector(w.rotation_axis));
+    m.angular_velocity = w.angular_velocity;
+  } else if (w.motion == "surface translation") {
+    m.surface_velocity = scene_vector(w.velocity);
+  }
+  return m;
+}
+
+bool moves_rigidly(const SceneWallParameters& w) {
+  return w.motion == "rotation" || w.motion == "translation" || w.motion == "oscillation";
+}
+
 void validate(const SceneParameters& s) {
   const auto three = [](const std::vector<double>& v, const std::string& what) {
     if (v.size() != 3)
@@ -134,7 +150,8 @@ void validate(const SceneParameters& s) {
     if (!(w.mesh_size > 0))
       throw std::invalid_argument(p + "/Mesh size must be positive [m], got " +
                                   std::to_string(w.mesh_size));
-    if (w.motion == "rotation" && meshes::norm(scene_vector(w.rotation_axis)) == 0)
+    if ((w.motion == "rotation" || w.motion == "surface rotation") &&
+        meshes::norm(scene_vector(w.rotation_axis)) == 0)
       throw std::invalid_argument(p + "/Rotation axis must not be zero");
     if (w.motion == "oscillation" && !(w.frequency > 0))
       throw std::invalid_argument(p + "/Frequency must be positive [Hz] for an oscillation");
@@ -143,6 +160,17 @@ void validate(const SceneParameters& s) {
       surface_numbers(w.wearing_surfaces, p + "/Wearing surfaces");
     surface_numbers(w.clamped_surfaces, p + "/Clamped surfaces");
   }
+  if (!(s.periodic_angle_deg >= 0 && s.periodic_angle_deg < 360))
+    throw std::invalid_argument("Scene/Periodic sector must lie in [0, 360) degrees, got " +
+                                std::to_string(s.periodic_angle_deg));
+  for (const auto& w : s.walls)
+    if (s.periodic_angle_deg > 0 && moves_rigidly(w))
+      throw std::invalid_argument(scene_wall_path(w) +
+                                  "/Motion: a wall that moves as a rigid "
+                                  "body (" +
+                                  w.motion +
+                                  ") cannot be part of a periodic sector "
+                                  "(Scene/Periodic sector); give it a surface motion or none");
   if (s.stage_duration < 0)
     throw std::invalid_argument("Scene/Stage duration must not be negative [s]");
   three(s.gravity, "Scene/Gravity");

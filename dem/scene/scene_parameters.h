@@ -4,6 +4,7 @@
 // CAD or mesh file with its length unit, or a primitive), its material, whether it wears and
 // how it moves. scene_walls.h builds and checks the surfaces (`wearsim scene`); the scene's
 // particles, sources and sinks and its DEM run are the next parts of the issue.
+#include "dem/engine/mesh_wall.h"
 #include "dem/engine/rigid_motion.h"
 #include "meshes/parameter_visitor.h"
 #include "meshes/vec3.h"
@@ -107,6 +108,8 @@ struct SceneParameters {
   /// [s] DEM time of a stage of the wear loop (Coupling/Schedule) when a wall wears; 0: no
   /// stages, the scene runs to End time
   double stage_duration = 0;
+  /// [deg] the scene is the sector 0 <= theta < angle about the z axis, periodic (0: none)
+  double periodic_angle_deg = 0;
 };
 
 /// The names a case file gives to its scene's walls, inlets and outlets: they decide which
@@ -146,6 +149,11 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
   v.real("End time", s.end_time, "[s] Simulated time of `wearsim scene-run`.");
   v.real("Output interval", s.output_interval,
          "[s] Simulated time between records of the run's series (and progress lines).");
+  v.real("Periodic sector", s.periodic_angle_deg,
+         "[deg] The scene is the sector 0 <= theta < angle about the z axis through the "
+         "origin, its two planes joined periodically (a particle leaving one enters through "
+         "the other, rotated); 0: no periodic boundary. Walls may move only by surface "
+         "motions then; the fill and the inlets must lie inside the sector.");
   v.real("Stage duration", s.stage_duration,
          "[s] Simulated DEM time of each stage of the wear loop when a wall wears (the FEM "
          "part): the stages and their schemes are Coupling/Schedule's (staged, dem-only), "
@@ -247,10 +255,14 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
     v.text("Clamped surfaces", w.clamped_surfaces,
            "A wearing wall's surfaces held fixed in the FEM (zero displacement: bolted to "
            "the structure), by number, comma-separated; a wear loop needs at least one.");
-    v.selection("Motion", w.motion, "fixed|rotation|translation|oscillation",
+    v.selection("Motion", w.motion,
+                "fixed|rotation|translation|oscillation|surface rotation|surface translation",
                 "fixed; rotation about Axis point and Rotation axis at Angular velocity; "
                 "translation at Velocity; oscillation A sin(2 pi f (t - t0)) of Amplitude and "
-                "Frequency. The whole wall moves as a rigid body from Start time t0 on.");
+                "Frequency: the whole wall moves as a rigid body from Start time t0 on. "
+                "'surface rotation' and 'surface translation': the geometry stays where it is "
+                "and only its surface moves, at all times (a turntable or drum turning about its "
+                "own axis of symmetry, a conveyor belt at Velocity); these may be periodic.");
     v.real_list("Axis point", w.axis_point, "[m] A point of the rotation axis.");
     v.real_list("Rotation axis", w.rotation_axis, "[-] Direction of the rotation axis.");
     v.real("Angular velocity", w.angular_velocity, "[rad/s] Right-handed about Rotation axis.");
@@ -280,6 +292,12 @@ RigidMotion rigid_motion(const SceneWallParameters& w);
 /// The surface numbers listed in `text` ("1, 4, 7"), ascending; throws
 /// std::invalid_argument naming `what` for anything but numbers 1 ... 999, or a repeat.
 std::vector<int> surface_numbers(const std::string& text, const std::string& what);
+
+/// The wall's surface motion for the engine (MeshWall's WallMotion): the surface velocity of
+/// a 'surface rotation' or 'surface translation', zero otherwise.
+WallMotion surface_motion(const SceneWallParameters& w);
+/// True for the motions that move the wall's geometry (rotation, translation, oscillation).
+bool moves_rigidly(const SceneWallParameters& w);
 
 /// Checks the values on their own (list lengths, signs, a file given where needed); throws
 /// std::invalid_argument naming the parameter by its case-file path.

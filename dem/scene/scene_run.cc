@@ -160,6 +160,28 @@ void require_clear_of_walls(const std::vector<SceneWall>& walls, const Inlet& in
   }
 }
 
+/// Throws naming `what` when a corner of the box [lo, hi] lies outside the periodic sector
+/// 0 <= theta <= angle [rad] (for a sector of at most 180 degrees, which is convex, the box
+/// is then inside).
+void require_in_sector(const Vec3& lo, const Vec3& hi, double angle, const std::string& what) {
+  if (angle > pi)
+    return;
+  for (int k = 0; k < 8; ++k) {
+    const Vec3 x{k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z};
+    const double theta = std::atan2(x.y, x.x);
+    const double tolerance = 1e-12 * (1 + std::hypot(x.x, x.y));
+    if (std::hypot(x.x, x.y) > tolerance &&
+        (x.y < -tolerance || std::sin(angle) * x.x - std::cos(angle) * x.y < -tolerance))
+      throw std::invalid_argument(what + " reaches outside the periodic sector 0 <= theta < " +
+                                  std::to_string(angle * 180 / pi) +
+                                  " deg (Scene/Periodic "
+                                  "sector) at (" +
+                                  std::to_string(x.x) + ", " + std::to_string(x.y) + ", " +
+                                  std::to_string(x.z) + ") m, theta " +
+                                  std::to_string(theta * 180 / pi) + " deg");
+  }
+}
+
 } // namespace
 
 SceneRun::SceneRun(const SceneParameters& scene, const TesterDemParameters& dem,
@@ -177,6 +199,9 @@ SceneRun::SceneRun(const SceneParameters& scene, const TesterDemParameters& dem,
                ? "lengthen Axis to at least " + std::to_string(shape.hi.z - shape.floor_z) + " m"
                : "raise Maximum z to at least " + std::to_string(shape.hi.z) + " m"));
     require_clear_of_walls(walls_, shape);
+    if (scene_.periodic_angle_deg > 0)
+      require_in_sector(shape.lo, shape.hi, scene_.periodic_angle_deg * pi / 180,
+                        "Scene/Fill: " + shape.describe());
   }
   // Materials first: the inlets need the particle material's index.
   add_materials_and_walls();
@@ -199,6 +224,20 @@ SceneRun::SceneRun(const SceneParameters& scene, const TesterDemParameters& dem,
     spec.seed = dem_.seed + 1000003 * (k + 1); // one stream per inlet, apart from the fill's
     inlets_.emplace_back(spec);
     require_clear_of_walls(walls_, inlets_.back(), 0.25 * dem_.psd.min_diameter());
+    if (scene_.periodic_angle_deg > 0) {
+      const Vec3 up = inlets_.back().normal() * -inlets_.back().depth();
+      Vec3 lo = spec.corner, hi = spec.corner;
+      for (const Vec3& x : {spec.corner + spec.edge_u, spec.corner + spec.edge_v,
+                            spec.corner + spec.edge_u + spec.edge_v, spec.corner + up,
+                            spec.corner + spec.edge_u + up, spec.corner + spec.edge_v + up,
+                            spec.corner + spec.edge_u + spec.edge_v + up})
+        for (int d = 0; d < 3; ++d) {
+          lo[d] = std::fmin(lo[d], x[d]);
+          hi[d] = std::fmax(hi[d], x[d]);
+        }
+      require_in_sector(lo, hi, scene_.periodic_angle_deg * pi / 180,
+                        "Scene/Inlet " + in.name + ": its insertion box");
+    }
     exchange_ = std::min(exchange_, inlets_.back().interval());
   }
   for (const auto& out : scene_.outlets)
@@ -226,7 +265,7 @@ void SceneRun::add_materials_and_walls() {
   for (const auto& w : walls_) {
     const std::string& name = w.parameters.material;
     const int id = name == "sample" ? sample : name == "holder" ? holder : wall;
-    MeshWall mesh_wall(w.surface.mesh, id, WallMotion{}, true, w.parameters.name);
+    MeshWall mesh_wall(w.surface.mesh, id, surface_motion(w.parameters), true, w.parameters.name);
     mesh_wall.set_rigid_motion(rigid_motion(w.parameters));
     system_.add_wall(mesh_wall);
   }
@@ -241,6 +280,8 @@ void SceneRun::add_materials_and_walls() {
   s.skin = 0.5 * r_min;
   s.max_radius = 0.5 * dem_.psd.max_diameter();
   s.max_speed = dem_.max_speed;
+  if (scene_.periodic_angle_deg > 0)
+    s.periodic = {true, scene_.periodic_angle_deg * pi / 180};
 }
 
 void SceneRun::setup(const std::function<void(const std::string&)>& progress) {

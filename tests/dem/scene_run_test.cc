@@ -227,3 +227,95 @@ TEST_CASE("scene run: a cylinder fills the bin to a count or a bed height, clear
   scene.fill.axis = {0.01, 0, 0.2};
   CHECK_THROWS_WITH(validate(scene), Catch::Contains("Scene/Fill/Axis: a fill to a Bed height"));
 }
+
+TEST_CASE("scene run: a ball dropped on a conveyor belt rolls at 2/7 of the belt's speed") {
+  // The belt ('surface translation') stays where it is and its surface moves at V: the ball
+  // slips until its contact point moves with the belt, then rolls at v = 2/7 V with spin
+  // 5/7 V x z / r (as on a plate that slides, tests/dem/moving_wall_test.cc).
+  SceneParameters scene = scene_with_names({"belt", "", ""});
+  auto& belt = scene.walls[0];
+  belt.source = "plane";
+  belt.origin = {-0.1, -0.1, 0};
+  belt.edge_u = {0.2, 0, 0};
+  belt.edge_v = {0, 0.2, 0};
+  belt.mesh_size = 0.05;
+  belt.motion = "surface translation";
+  belt.velocity = {0.08, 0.06, 0};
+  scene.domain_min = {-0.2, -0.2, -0.1};
+  scene.domain_max = {0.2, 0.2, 0.2};
+  scene.fill.region = "box";
+  scene.fill.minimum = {-0.0035, -0.0035, 0.0005};
+  scene.fill.maximum = {0.0035, 0.0035, 0.0075}; // one 6 mm ball, dropped from below 1.5 mm
+  scene.fill.count = 1;
+  TesterDemParameters d = gravel();
+  d.particle_wall.rolling_friction = 0; // rolling resistance would change the steady state
+  SceneRun run(scene, d, build_scene_walls(scene));
+  run.setup();
+  run.advance(0.3);
+  const auto& p = run.system().particles;
+  REQUIRE(p.n_real == 1);
+  const Vec3 V = scene_vector(belt.velocity);
+  const double r = p.radius[0];
+  const Vec3 v = p.velocity[0], w = p.angular_velocity[0];
+  INFO("velocity " << v.x << " " << v.y << " " << v.z << ", spin " << w.x << " " << w.y);
+  CHECK(wear::meshes::norm(v - V * (2.0 / 7.0)) <= 1e-6 * wear::meshes::norm(V));
+  CHECK(wear::meshes::norm(w - wear::meshes::cross(V, Vec3{0, 0, 1}) * (5.0 / 7.0 / r)) <=
+        1e-6 * wear::meshes::norm(V) / r);
+}
+
+TEST_CASE("scene run: a bed in a periodic sector on a turntable stays in the sector and turns") {
+  // A 60-degree sector of an annular trough (walls: the floor, a disc turning as a
+  // 'surface rotation', and the inner and outer cylinders, fixed), a bed of 300 particles:
+  // the floor drags it round, the particles leave through one periodic plane and come back
+  // through the other, none is lost and all stay in the sector.
+  SceneParameters scene = scene_with_names({"floor, inner, outer", "", ""});
+  scene.periodic_angle_deg = 60;
+  scene.domain_min = {-0.3, -0.3, -0.05};
+  scene.domain_max = {0.3, 0.3, 0.3};
+  auto& floor = scene.walls[0];
+  floor.source = "disc";
+  floor.axis = {0, 0, 1};
+  floor.radius = 0.2;
+  floor.radius_inner = 0.1;
+  floor.mesh_size = 0.02;
+  floor.motion = "surface rotation";
+  floor.angular_velocity = 2;
+  for (int k : {1, 2}) {
+    auto& side = scene.walls[std::size_t(k)];
+    side.source = "cylinder";
+    side.axis = {0, 0, 0.2};
+    side.radius = k == 1 ? 0.1 : 0.2;
+    side.mesh_size = 0.02;
+  }
+  scene.fill.region = "box";
+  scene.fill.minimum = {0.12, 0.01, 0.002};
+  scene.fill.maximum = {0.17, 0.07, 0.15};
+  scene.fill.count = 300;
+  SceneRun run(scene, gravel(), build_scene_walls(scene));
+  run.setup();
+  run.advance(0.5);
+  const auto& p = run.system().particles;
+  REQUIRE(p.n_real == 300);
+  double mean_tangential = 0;
+  for (std::size_t i = 0; i < p.n_real; ++i) {
+    const double theta = std::atan2(p.position[i].y, p.position[i].x);
+    REQUIRE(theta >= -1e-12);
+    REQUIRE(theta < M_PI / 3 + 1e-12);
+    const Vec3 t{-std::sin(theta), std::cos(theta), 0};
+    mean_tangential += wear::meshes::dot(p.velocity[i], t) / double(p.n_real);
+  }
+  // Dragged along, slower than the floor under it (2 rad/s x 0.15 m = 0.3 m/s).
+  CHECK(mean_tangential > 0.02);
+  CHECK(mean_tangential < 0.3);
+
+  // A wall that moves as a rigid body cannot be periodic; a fill outside the sector is refused.
+  SceneParameters rigid = scene;
+  rigid.walls[0].motion = "rotation";
+  CHECK_THROWS_WITH(validate(rigid), Catch::Contains("Scene/Wall floor/Motion") &&
+                                         Catch::Contains("periodic sector"));
+  SceneParameters outside = scene;
+  outside.fill.minimum = {0.12, -0.02, 0.002};
+  CHECK_THROWS_WITH(SceneRun(outside, gravel(), build_scene_walls(outside)),
+                    Catch::Contains("Scene/Fill: the box") &&
+                        Catch::Contains("outside the periodic sector"));
+}
