@@ -214,6 +214,15 @@ void validate(const SceneParameters& s) {
     }
     inside_domain(lo, hi, "Scene/Fill");
   }
+  if (s.fill.region == "mesh") {
+    if (s.fill.file.empty())
+      throw std::invalid_argument("Scene/Fill/File: a file is needed with Region = mesh");
+    if (s.fill.count == 0)
+      throw std::invalid_argument("Scene/Fill/Count: a fill from a mesh takes a Count (a Bed "
+                                  "height needs a box or a cylinder, whose floor is flat)");
+    if (!(s.fill.mesh_size > 0))
+      throw std::invalid_argument("Scene/Fill/Mesh size must be positive [m]");
+  }
   if (s.fill.region != "none" && s.fill.count == 0 && !(s.fill.bed_height > 0))
     throw std::invalid_argument("Scene/Fill: give a Count or a positive Bed height [m]");
   if (s.fields.cells.size() != 3)

@@ -72,12 +72,15 @@ struct SceneFluxPlaneParameters {
 /// Particles in place at the start: none, or a box filled at random to a count, or to a
 /// bed height after settling.
 struct SceneFillParameters {
-  std::string region = "none";          ///< none | box | cylinder
+  std::string region = "none";          ///< none | box | cylinder | mesh
   std::vector<double> minimum{0, 0, 0}; ///< [m] the box
   std::vector<double> maximum{0, 0, 0}; ///< [m]
   std::vector<double> origin{0, 0, 0};  ///< [m] the cylinder's base centre
   std::vector<double> axis{0, 0, 1};    ///< [m] the cylinder's axis, base to top
   double radius = 0;                    ///< [m] the cylinder's radius
+  std::string file;                     ///< a closed mesh or CAD solid (Region = mesh)
+  std::string unit = "m";               ///< m | mm, the file's length unit
+  double mesh_size = 5e-3;              ///< [m] triangles of a CAD file
   std::uint64_t count = 0;              ///< particles; 0: fill to Bed height
   double bed_height = 0;                ///< [m] above the box's floor, settled
 };
@@ -160,10 +163,16 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
          "End time is then their sum. 0: no stages; the scene runs to End time and only "
          "accumulates wear.");
   v.enter("Fill");
-  v.selection("Region", s.fill.region, "none|box|cylinder",
-              "Particles in place at the start: none, or random in an axis-aligned box or in a "
-              "cylinder (the DEM subsection's size distribution and particle material). The "
-              "region may not cut or touch a wall.");
+  v.selection("Region", s.fill.region, "none|box|cylinder|mesh",
+              "Particles in place at the start: none, or random in an axis-aligned box, a "
+              "cylinder, or the solid a closed mesh or CAD file encloses (the DEM subsection's "
+              "size distribution and particle material). The region may not cut or touch a "
+              "wall.");
+  v.text("File", s.fill.file,
+         "Region = mesh: a closed STL, or a STEP, IGES or BREP solid, relative to the working "
+         "directory (filled to a Count only).");
+  v.selection("Unit", s.fill.unit, "m|mm", "Length unit of the file's coordinates.");
+  v.real("Mesh size", s.fill.mesh_size, "[m] Triangle size for a CAD file.");
   v.real_list("Minimum", s.fill.minimum, "[m] The box's lower corner.");
   v.real_list("Maximum", s.fill.maximum, "[m] The box's upper corner.");
   v.real_list("Origin", s.fill.origin, "[m] The cylinder's base centre.");

@@ -18,12 +18,15 @@
 
 #include "dem/tester/wear_tester.h"
 
+#include "meshes/cad_import.h"
+#include "meshes/solid_region.h"
 #include "meshes/triangle_geometry.h"
 
 #include <omp.h>
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 
@@ -40,12 +43,14 @@ Vec3 vec(const std::vector<double>& v) {
   return scene_vector(v);
 }
 
-/// Where the fill places particles: the Fill box or cylinder, or for a bed height its part up
-/// to 2.5 heights above its floor (loose, before settling).
+/// Where the fill places particles: the Fill box, cylinder or solid of a mesh, or for a bed
+/// height its part up to 2.5 heights above its floor (loose, before settling).
 constexpr double loose_factor = 2.5;
 struct FillShape {
   bool cylinder = false;
-  Vec3 lo, hi;          ///< [m] the box; the cylinder's bounding box
+  std::shared_ptr<const meshes::SolidRegion> solid; ///< Region = mesh
+  std::string file;                                 ///< the mesh's, quoted, for messages
+  Vec3 lo, hi;                                      ///< [m] the box; the cylinder's bounding box
   Vec3 base, axis;      ///< [m], [-] the cylinder's base centre and unit axis
   double length = 0;    ///< [m] the cylinder's
   double radius = 0;    ///< [m] the cylinder's
@@ -54,7 +59,9 @@ struct FillShape {
   double full_top = 0;  ///< [m] the region's top before a bed height cuts it
   std::string describe() const {
     std::ostringstream s;
-    if (cylinder)
+    if (solid)
+      s << "the solid of " << file;
+    else if (cylinder)
       s << "the cylinder of radius " << radius << " m from (" << base.x << ", " << base.y << ", "
         << base.z << ") m, " << length << " m long";
     else
@@ -63,11 +70,23 @@ struct FillShape {
     return s.str();
   }
   bool cuts(const Vec3& a, const Vec3& b, const Vec3& c) const {
+    if (solid)
+      return solid->cuts(a, b, c);
     return cylinder ? meshes::triangle_intersects_cylinder(a, b, c, base, axis, length, radius)
                     : meshes::triangle_intersects_box(a, b, c, lo, hi);
   }
   /// Centres admissible for spheres of radius `margin`, below z_top.
   FillRegion region(double margin, double z_top) const {
+    if (solid) {
+      FillRegion r{solid->box().min + Vec3{margin, margin, margin},
+                   solid->box().max - Vec3{margin, margin, margin},
+                   {}};
+      r.hi.z = std::fmin(r.hi.z, z_top - margin);
+      r.inside = [s = solid, margin](const Vec3& x) {
+        return s->contains(x) && s->distance(x) >= margin;
+      };
+      return r;
+    }
     if (!cylinder)
       return box_region(lo, {hi.x, hi.y, z_top}, margin);
     const double top = std::fmin(length, z_top - base.z);
@@ -84,6 +103,18 @@ struct FillShape {
 
 FillShape fill_shape(const SceneFillParameters& f) {
   FillShape shape;
+  if (f.region == "mesh") {
+    meshes::CadImportOptions o{
+        meshes::parse_length_unit(f.unit, "Scene/Fill/Unit"), f.mesh_size, {}};
+    shape.solid = std::make_shared<const meshes::SolidRegion>(
+        meshes::read_cad_surface(f.file, o).mesh, "Scene/Fill (File = " + f.file + ")");
+    shape.file = "'" + f.file + "'";
+    shape.lo = shape.solid->box().min;
+    shape.hi = shape.solid->box().max;
+    shape.floor_z = shape.lo.z;
+    shape.full_top = shape.hi.z;
+    return shape;
+  }
   if (f.region == "cylinder") {
     shape.cylinder = true;
     shape.base = vec(f.origin);

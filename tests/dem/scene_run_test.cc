@@ -3,7 +3,10 @@
 // box through a wall is refused before any particle exists.
 #include "dem/scene/scene_run.h"
 #include "dem/tester/wear_tester.h"
+#include "meshes/gmsh_session.h"
 #include "scene_fixtures.h"
+
+#include <gmsh.h>
 
 #include <catch2/catch.hpp>
 
@@ -318,4 +321,55 @@ TEST_CASE("scene run: a bed in a periodic sector on a turntable stays in the sec
   CHECK_THROWS_WITH(SceneRun(outside, gravel(), build_scene_walls(outside)),
                     Catch::Contains("Scene/Fill: the box") &&
                         Catch::Contains("outside the periodic sector"));
+}
+
+TEST_CASE("scene run: a tilted solid from STEP is filled to a count, inside it and clear of it") {
+  // A 60 x 40 x 40 mm box turned 30 degrees about x, centred in the bin, written by
+  // OpenCASCADE in millimetres.
+  {
+    wear::meshes::GmshSession session("fill solid");
+    const int box = gmsh::model::occ::addBox(-30, -20, 20, 60, 40, 40);
+    gmsh::model::occ::rotate({{3, box}}, 0, 0, 40, 1, 0, 0, M_PI / 6);
+    gmsh::model::occ::synchronize();
+    gmsh::write("fill_tilted_box.step");
+  }
+  SceneParameters scene = bin(0.025);
+  scene.walls[1].radius_inner = 0.002;
+  scene.walls[1].mesh_size = 0.006;
+  scene.fill.region = "mesh";
+  scene.fill.file = "fill_tilted_box.step";
+  scene.fill.unit = "mm";
+  scene.fill.mesh_size = 0.01;
+  scene.fill.count = 60;
+  SceneRun run(scene, gravel(), build_scene_walls(scene));
+  run.setup();
+  const auto& p = run.system().particles;
+  REQUIRE(p.n_real == 60);
+  // Each sphere lies inside the box: in its frame (turned back by 30 degrees about x through
+  // (0, 0, 40) mm) within the half sizes less the radius.
+  const double c = std::cos(M_PI / 6), s30 = std::sin(M_PI / 6);
+  for (std::size_t i = 0; i < p.n_real; ++i) {
+    const Vec3 x = p.position[i] - Vec3{0, 0, 0.04};
+    const Vec3 local{x.x, c * x.y + s30 * x.z, -s30 * x.y + c * x.z};
+    const double r = p.radius[i];
+    REQUIRE(std::abs(local.x) <= 0.03 - r + 1e-9);
+    REQUIRE(std::abs(local.y) <= 0.02 - r + 1e-9);
+    REQUIRE(local.z >= -0.02 + r - 1e-9);
+    REQUIRE(local.z <= 0.02 + r - 1e-9 + 0.0); // the top face z = 60 mm before turning
+  }
+  // Moved down by 30 mm it pokes through the floor: refused, naming the wall.
+  {
+    wear::meshes::GmshSession session("fill solid low");
+    const int box = gmsh::model::occ::addBox(-30, -20, -10, 60, 40, 40);
+    gmsh::model::occ::rotate({{3, box}}, 0, 0, 10, 1, 0, 0, M_PI / 6);
+    gmsh::model::occ::synchronize();
+    gmsh::write("fill_low_box.step");
+  }
+  scene.fill.file = "fill_low_box.step";
+  CHECK_THROWS_WITH(SceneRun(scene, gravel(), build_scene_walls(scene)),
+                    Catch::Contains("Scene/Fill: the solid of 'fill_low_box.step'") &&
+                        Catch::Contains("intersects wall 'floor'"));
+  scene.fill.count = 0;
+  scene.fill.bed_height = 0.02;
+  CHECK_THROWS_WITH(validate(scene), Catch::Contains("Scene/Fill/Count: a fill from a mesh"));
 }

@@ -1,11 +1,14 @@
-// Exact triangle-region tests (meshes/triangle_geometry.h) that decide whether a scene's fill
-// region cuts a wall: set cases on either side of the boundary, and random triangles against
-// dense point sampling (a sampled point inside the region must make the test true; a test
-// that says false must have every sample outside).
+// Exact triangle-region tests (meshes/triangle_geometry.h, meshes/solid_region.h) that decide
+// whether a scene's fill region cuts a wall: set cases on either side of the boundary, and random
+// triangles against dense point sampling (a sampled point inside the region must make the test
+// true; a test that says false must have every sample outside).
+#include "meshes/solid_region.h"
 #include "meshes/triangle_geometry.h"
+#include "test_shapes.h"
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <random>
 
 using namespace wear::meshes;
@@ -83,4 +86,41 @@ TEST_CASE("triangle and cylinder or box: random triangles agree with dense sampl
   CHECK(n_false > 200);
   // "True" without a sampled point only where the triangle grazes the region.
   CHECK(n_unsampled < n_true / 20);
+}
+
+TEST_CASE("solid region of a closed mesh: inside, distance and cutting triangles are exact",
+          "[meshes]") {
+  const SurfaceMesh cube = testing::box(0.2, 0.1, 0.05); // [0, 0.2] x [0, 0.1] x [0, 0.05]
+  const SolidRegion solid(cube, "test cube");
+  CHECK(solid.volume() == Approx(0.2 * 0.1 * 0.05).epsilon(1e-12));
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> x(-0.05, 0.25), y(-0.05, 0.15), z(-0.05, 0.1);
+  int n_inside = 0;
+  for (int k = 0; k < 3000; ++k) {
+    const Vec3 p{x(rng), y(rng), z(rng)};
+    const Vec3 lo{0, 0, 0}, hi{0.2, 0.1, 0.05};
+    const bool inside = in_box(p, lo, hi);
+    REQUIRE(solid.contains(p) == inside);
+    n_inside += inside;
+    if (inside) { // the distance to the nearest face
+      const double d = std::min({p.x, 0.2 - p.x, p.y, 0.1 - p.y, p.z, 0.05 - p.z});
+      REQUIRE(solid.distance(p) == Approx(d).margin(1e-12));
+    }
+    // A small triangle around p cuts the solid exactly when it reaches into the box.
+    const Vec3 a = p + Vec3{0.01, 0, 0}, b = p + Vec3{0, 0.01, 0}, c = p + Vec3{0, 0, 0.01};
+    const bool hit = sampled(a, b, c, [&](const Vec3& q) { return in_box(q, lo, hi); });
+    if (hit)
+      REQUIRE(solid.cuts(a, b, c));
+  }
+  CHECK(n_inside > 300);
+  // A large triangle through the middle with every vertex outside still cuts it.
+  CHECK(solid.cuts({-1, -1, 0.02}, {1, -1, 0.02}, {0, 1, 0.02}));
+  CHECK_FALSE(solid.cuts({-1, -1, 0.06}, {1, -1, 0.06}, {0, 1, 0.06}));
+  // An open surface is no solid.
+  SurfaceMesh open = cube;
+  open.triangles.pop_back();
+  open.face_labels.pop_back();
+  CHECK_THROWS_WITH(SolidRegion(open, "Scene/Fill (File = open.stl)"),
+                    Catch::Contains("Scene/Fill (File = open.stl): a fill region from a mesh "
+                                    "must be a closed solid"));
 }
