@@ -182,8 +182,7 @@ std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::setup() {
     output_->add_surface(0, scene_->time(), part_->surface(),
                          {{"cumulative removed volume", 1, zero}, {"wear depth", 1, zero}});
   }
-  if (!replaced.empty())
-    std::filesystem::remove_all(replaced);
+  replaced_ = replaced;
   return std::nullopt;
 }
 
@@ -347,7 +346,7 @@ void SceneCoupledRun::record(StageRecord r, const meshes::FaceField<double>& app
        << std::flush;
 }
 
-void SceneCoupledRun::checkpoint(const OpenSceneStage& open) const {
+void SceneCoupledRun::checkpoint(const OpenSceneStage& open) {
   if (!p_.coupling.checkpoints || scene_->system().n_rebuilds() == 0)
     return;
   const dem::SceneRunState state = scene_->state();
@@ -377,6 +376,12 @@ void SceneCoupledRun::checkpoint(const OpenSceneStage& open) const {
   }
   c.scene = s;
   write_checkpoint(checkpoint_path(), c);
+  if (!replaced_.empty()) { // the run --overwrite replaced goes once this one can be resumed
+    std::filesystem::remove_all(replaced_);
+    log_ << "the replaced run in '" << replaced_ << "' is deleted (this run has its first "
+         << "checkpoint)" << std::endl;
+    replaced_.clear();
+  }
 }
 
 } // namespace wear::coupling

@@ -71,7 +71,7 @@ private:
                                  StageRecord& r);
   void record(StageRecord r, const meshes::FaceField<double>& applied);
   /// Writes checkpoint.h5 (the one before kept); `open`: the stage in progress.
-  void checkpoint(const OpenSceneStage& open) const;
+  void checkpoint(const OpenSceneStage& open);
   /// The loads a stage starts from: zero on the part's faces (none without a part).
   dem::WallLoads zero_loads() const;
 
@@ -92,6 +92,7 @@ private:
   meshes::FaceField<double> previous_stress_;
   std::map<int, double> removed_per_label_;
   std::string part_wear_; ///< part_wear.csv's rows so far
+  std::string replaced_;  ///< a run --overwrite moved aside, deleted at the first checkpoint
 };
 
 } // namespace wear::coupling
