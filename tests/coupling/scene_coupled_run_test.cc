@@ -5,6 +5,8 @@
 // law of the DEM's own per-label records, the FEM receives the DEM's force on the part, the
 // geometry loses exactly the removed volume, only the wearing surface wears, and the DEM wall
 // carries the worn surface afterwards. Bad wear-loop set-ups are refused naming the parameter.
+#include "coupling/app/run_command.h"
+#include "coupling/app/scene_run_command.h"
 #include "coupling/loop/scene_coupled_run.h"
 #include "coupling/output/hdf5_file.h"
 #include "error_of.h"
@@ -326,4 +328,26 @@ TEST_CASE("scene wear loop: stopped by a signal or killed inside a stage, resume
   CHECK(run_wearsim(a + ".prm", "", a + ".again.log", "scene-run") == 1);
   CHECK_THAT(file_text(a + ".again.log"),
              Catch::Contains("--resume") && Catch::Contains("--overwrite"));
+}
+
+TEST_CASE("wearsim scene-run: bad options and arguments are refused naming the command",
+          "[coupling][scene]") {
+  RunOptions o;
+  CHECK_THROWS_WITH(parse_run_arguments({"--resme", "a.prm"}, "scene-run", o),
+                    Catch::Contains("wearsim scene-run: unknown option '--resme'"));
+  CHECK_THROWS_WITH(parse_run_arguments({"a.prm", "b.prm"}, "scene-run", o),
+                    Catch::Contains("expected one case file, got 'a.prm' and 'b.prm'"));
+  CHECK_THROWS_WITH(parse_run_arguments({}, "scene-run", o),
+                    Catch::Contains("wearsim scene-run [--resume | --overwrite] <case.prm>"));
+  RunOptions both;
+  CHECK_THROWS_WITH(parse_run_arguments({"--resume", "--overwrite", "a.prm"}, "scene-run", both),
+                    Catch::Contains("--resume and --overwrite exclude each other"));
+  RunOptions ok;
+  CHECK(parse_run_arguments({"--resume", "a.prm"}, "scene-run", ok) == "a.prm");
+  CHECK(ok.resume);
+  // A case without a scene has nothing to run.
+  std::ofstream("scene_none.prm") << "subsection Output\n  set Directory = scene_none\nend\n";
+  std::ostringstream log;
+  CHECK_THROWS_WITH(run_scene_run_command({"scene_none.prm"}, log),
+                    Catch::Contains("Scene/Walls is empty: there is no scene to run"));
 }
