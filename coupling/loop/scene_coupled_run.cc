@@ -261,9 +261,9 @@ std::optional<dem::WallLoads> SceneCoupledRun::run_dem(StageRecord& r,
     if (part_ && w.integrated > 0)
       stage.loads += scene_->wall_loads(*part_wall_, *law_, w.integrated);
     series_->add(w, *scene_);
-    log_ << "stage " << r.stage << "/" << plan_.size() << " " << scheme_name(r.scheme) << ": "
-         << window_summary(w) << "\n"
-         << std::flush;
+    if (part_)
+      log_ << "stage " << r.stage << "/" << plan_.size() << " " << scheme_name(r.scheme) << ": ";
+    log_ << window_summary(w) << "\n" << std::flush;
     const bool more = scene_->time() < stage.end - 1e-9 * every;
     const bool stop = signals.requested() != 0 && more;
     if ((stop || (interval > 0 && since_checkpoint.seconds() >= interval && more)) &&
