@@ -40,6 +40,14 @@ SceneParameters bin(double orifice_radius) {
   return s;
 }
 
+/// The bin with a pinhole for an orifice: nothing drains while a bed settles or stands.
+SceneParameters pinhole_bin() {
+  SceneParameters s = bin(0.025);
+  s.walls[1].radius_inner = 0.002;
+  s.walls[1].mesh_size = 0.006;
+  return s;
+}
+
 } // namespace
 
 TEST_CASE("scene run: a bin drains through its orifice and every particle is counted") {
@@ -145,9 +153,7 @@ TEST_CASE("scene run: an inlet whose insertion box cuts a wall is refused") {
 }
 
 TEST_CASE("scene run: a fill to a bed height settles before the run starts") {
-  SceneParameters scene = bin(0.025);
-  scene.walls[1].radius_inner = 0.002; // a pinhole: nothing drains while the bed settles
-  scene.walls[1].mesh_size = 0.006;
+  SceneParameters scene = pinhole_bin();
   scene.fill.count = 0;
   scene.fill.bed_height = 0.03;
   scene.fill.minimum = {-0.04, -0.04, 0.001}; // a millimetre clear of the floor
@@ -192,9 +198,7 @@ TEST_CASE("scene run: a fill to a bed height settles before the run starts") {
 }
 
 TEST_CASE("scene run: a cylinder fills the bin to a count or a bed height, clear of its wall") {
-  SceneParameters scene = bin(0.025);
-  scene.walls[1].radius_inner = 0.002; // a pinhole: nothing drains
-  scene.walls[1].mesh_size = 0.006;
+  SceneParameters scene = pinhole_bin();
   scene.fill.region = "cylinder";
   scene.fill.origin = {0, 0, 0.001};
   scene.fill.axis = {0, 0, 0.2};
@@ -333,9 +337,7 @@ TEST_CASE("scene run: a tilted solid from STEP is filled to a count, inside it a
     gmsh::model::occ::synchronize();
     gmsh::write("fill_tilted_box.step");
   }
-  SceneParameters scene = bin(0.025);
-  scene.walls[1].radius_inner = 0.002;
-  scene.walls[1].mesh_size = 0.006;
+  SceneParameters scene = pinhole_bin();
   scene.fill.region = "mesh";
   scene.fill.file = "fill_tilted_box.step";
   scene.fill.unit = "mm";
