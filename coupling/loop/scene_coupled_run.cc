@@ -107,8 +107,13 @@ int SceneCoupledRun::run() {
     const std::optional<dem::WallLoads> loads = run_dem(r, std::exchange(open, {}), signals);
     if (!loads) {
       log_ << "stopped by " << StopSignals::name(signals.requested()) << " inside stage " << r.stage
-           << " at t = " << scene_->time() << " s after a checkpoint; continue with "
-           << "wearsim scene-run --resume " << p_.case_file << "\n";
+           << " at t = " << scene_->time() << " s";
+      if (scene_->system().n_rebuilds() > 0 && p_.coupling.checkpoints)
+        log_ << " after a checkpoint; continue with wearsim scene-run --resume " << p_.case_file
+             << "\n";
+      else // nothing was checkpointed: no particle yet, or checkpoints off
+        log_ << " without a checkpoint (no particle yet, or Coupling/Checkpoints off); run it "
+                "again with --overwrite\n";
       return 128 + signals.requested();
     }
     if (part_) {
