@@ -79,9 +79,12 @@ inline bool triangle_intersects_box(Vec3 a, Vec3 b, Vec3 c, const Vec3& lo, cons
 /// True when triangle abc and the solid cylinder of radius r around the segment from `base`
 /// along the unit vector `u` for `length` share a point. The triangle is clipped to the slab
 /// 0 <= (x - base) . u <= length; the clipped polygon meets the cylinder when its projection
-/// onto the plane normal to u comes within r of the axis (or covers it).
+/// onto the plane normal to u comes within r of the axis (or covers it). With `r_inner`, the
+/// cylinder has a coaxial hole: the polygon, connected, must also reach r_inner from the axis
+/// (its farthest point from the axis is a vertex).
 inline bool triangle_intersects_cylinder(const Vec3& a, const Vec3& b, const Vec3& c,
-                                         const Vec3& base, const Vec3& u, double length, double r) {
+                                         const Vec3& base, const Vec3& u, double length, double r,
+                                         double r_inner = 0) {
   // Sutherland-Hodgman against s >= 0 and s <= length; at most 5 vertices remain.
   Vec3 poly[8] = {a - base, b - base, c - base};
   int n = 3;
@@ -108,11 +111,12 @@ inline bool triangle_intersects_cylinder(const Vec3& a, const Vec3& b, const Vec
   Vec3 q[8];
   for (int i = 0; i < n; ++i)
     q[i] = poly[i] - u * dot(poly[i], u);
-  double nearest = std::numeric_limits<double>::infinity(), area = 0, scale = 0;
+  double nearest = std::numeric_limits<double>::infinity(), farthest = 0, area = 0, scale = 0;
   bool all_left = true, all_right = true;
   for (int i = 0; i < n; ++i) {
     area += dot(cross(q[i], q[(i + 1) % n]), u);
     scale = std::fmax(scale, dot(q[i], q[i]));
+    farthest = std::fmax(farthest, norm(q[i]));
     const Vec3 &p = q[i], &e = q[(i + 1) % n] - q[i];
     const double ee = dot(e, e);
     const double t = ee > 0 ? std::fmin(1.0, std::fmax(0.0, -dot(p, e) / ee)) : 0.0;
@@ -123,7 +127,7 @@ inline bool triangle_intersects_cylinder(const Vec3& a, const Vec3& b, const Vec
   }
   // A polygon parallel to the axis projects to a segment: no area, nothing to cover.
   const bool covers = std::fabs(area) > 1e-12 * scale && (all_left || all_right);
-  return nearest <= r || covers;
+  return (nearest <= r || covers) && farthest >= r_inner;
 }
 
 } // namespace wear::meshes

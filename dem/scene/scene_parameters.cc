@@ -202,6 +202,8 @@ void validate(const SceneParameters& s) {
       throw std::invalid_argument("Scene/Fill/Axis must not be zero");
     if (!(s.fill.radius > 0))
       throw std::invalid_argument("Scene/Fill/Radius must be positive [m] for a cylinder");
+    if (!(s.fill.radius_inner >= 0 && s.fill.radius_inner < s.fill.radius))
+      throw std::invalid_argument("Scene/Fill/Inner radius must lie in [0, Radius)");
     if (s.fill.count == 0 && !(a.z > 0 && std::hypot(a.x, a.y) <= 1e-9 * length))
       throw std::invalid_argument("Scene/Fill/Axis: a fill to a Bed height needs the "
                                   "cylinder's axis along +z (its base the floor)");

@@ -78,6 +78,7 @@ struct SceneFillParameters {
   std::vector<double> origin{0, 0, 0};  ///< [m] the cylinder's base centre
   std::vector<double> axis{0, 0, 1};    ///< [m] the cylinder's axis, base to top
   double radius = 0;                    ///< [m] the cylinder's radius
+  double radius_inner = 0;              ///< [m] the cylinder's hole (an annulus; 0: none)
   std::string file;                     ///< a closed mesh or CAD solid (Region = mesh)
   std::string unit = "m";               ///< m | mm, the file's length unit
   double mesh_size = 5e-3;              ///< [m] triangles of a CAD file
@@ -179,6 +180,10 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
   v.real_list("Axis", s.fill.axis,
               "[m] The cylinder's axis from its base to its top (along +z for a Bed height).");
   v.real("Radius", s.fill.radius, "[m] The cylinder's radius.");
+  v.real("Inner radius", s.fill.radius_inner,
+         "[m] A coaxial hole in the cylinder (an annulus, e.g. a trough between two walls); 0: "
+         "none. In a periodic sector, a cylinder about the z axis is filled only within the "
+         "sector.");
   v.count("Count", s.fill.count,
           "Particles to place; 0: as many as settle to Bed height above the region's floor.");
   v.real("Bed height", s.fill.bed_height,

@@ -51,9 +51,11 @@ struct FillShape {
   std::shared_ptr<const meshes::SolidRegion> solid; ///< Region = mesh
   std::string file;                                 ///< the mesh's, quoted, for messages
   Vec3 lo, hi;                                      ///< [m] the box; the cylinder's bounding box
-  Vec3 base, axis;      ///< [m], [-] the cylinder's base centre and unit axis
-  double length = 0;    ///< [m] the cylinder's
-  double radius = 0;    ///< [m] the cylinder's
+  Vec3 base, axis;         ///< [m], [-] the cylinder's base centre and unit axis
+  double length = 0;       ///< [m] the cylinder's
+  double radius = 0;       ///< [m] the cylinder's
+  double radius_inner = 0; ///< [m] the cylinder's hole
+  double sector = 0;    ///< [rad] a cylinder about z filled only in 0 <= theta <= sector (0: all)
   double floor_z = 0;   ///< [m] the bed's floor
   double footprint = 0; ///< [m^2] horizontal area of a bed
   double full_top = 0;  ///< [m] the region's top before a bed height cuts it
@@ -62,8 +64,10 @@ struct FillShape {
     if (solid)
       s << "the solid of " << file;
     else if (cylinder)
-      s << "the cylinder of radius " << radius << " m from (" << base.x << ", " << base.y << ", "
-        << base.z << ") m, " << length << " m long";
+      s << "the cylinder of radius " << radius << " m"
+        << (radius_inner > 0 ? " (inner " + std::to_string(radius_inner) + " m)" : std::string())
+        << " from (" << base.x << ", " << base.y << ", " << base.z << ") m, " << length
+        << " m long";
     else
       s << "the box (" << lo.x << ", " << lo.y << ", " << lo.z << ") .. (" << hi.x << ", " << hi.y
         << ", " << hi.z << ") m";
@@ -72,7 +76,8 @@ struct FillShape {
   bool cuts(const Vec3& a, const Vec3& b, const Vec3& c) const {
     if (solid)
       return solid->cuts(a, b, c);
-    return cylinder ? meshes::triangle_intersects_cylinder(a, b, c, base, axis, length, radius)
+    return cylinder ? meshes::triangle_intersects_cylinder(a, b, c, base, axis, length, radius,
+                                                           radius_inner)
                     : meshes::triangle_intersects_box(a, b, c, lo, hi);
   }
   /// Centres admissible for spheres of radius `margin`, below z_top.
@@ -92,16 +97,23 @@ struct FillShape {
     const double top = std::fmin(length, z_top - base.z);
     FillRegion r{lo + Vec3{margin, margin, margin}, hi - Vec3{margin, margin, margin}, {}};
     r.hi.z = std::fmin(r.hi.z, z_top - margin);
-    r.inside = [b = base, u = axis, top, R = radius, margin](const Vec3& x) {
+    r.inside = [b = base, u = axis, top, R = radius, r_in = radius_inner, a = sector,
+                margin](const Vec3& x) {
       const Vec3 d = x - b;
       const double s = meshes::dot(d, u);
-      return s >= margin && s <= top - margin && meshes::norm(d - u * s) <= R - margin;
+      const double rho = meshes::norm(d - u * s);
+      const bool in_sector =
+          a == 0 || (x.y >= margin && std::sin(a) * x.x - std::cos(a) * x.y >= margin);
+      return s >= margin && s <= top - margin && rho <= R - margin &&
+             (r_in == 0 || rho >= r_in + margin) && in_sector;
     };
     return r;
   }
 };
 
-FillShape fill_shape(const SceneFillParameters& f) {
+/// `periodic`: the scene's sector [rad] (0: none); a cylinder about the z axis is then filled
+/// in the sector only, and its footprint is the sector's share.
+FillShape fill_shape(const SceneFillParameters& f, double periodic) {
   FillShape shape;
   if (f.region == "mesh") {
     meshes::CadImportOptions o{
@@ -128,7 +140,13 @@ FillShape fill_shape(const SceneFillParameters& f) {
       shape.hi[d] = std::fmax(shape.base[d], shape.base[d] + a[d]) + e;
     }
     shape.floor_z = shape.base.z;
-    shape.footprint = pi * f.radius * f.radius;
+    const bool about_z = shape.base.x == 0 && shape.base.y == 0 && shape.axis.x == 0 &&
+                         shape.axis.y == 0 && shape.axis.z > 0;
+    if (periodic > 0 && about_z)
+      shape.sector = periodic;
+    shape.radius_inner = f.radius_inner;
+    shape.footprint = pi * (f.radius * f.radius - f.radius_inner * f.radius_inner) *
+                      (shape.sector > 0 ? shape.sector / (2 * pi) : 1.0);
   } else {
     shape.lo = vec(f.minimum);
     shape.hi = vec(f.maximum);
@@ -221,7 +239,7 @@ SceneRun::SceneRun(const SceneParameters& scene, const TesterDemParameters& dem,
   validate(scene_);
   validate(dem_);
   if (scene_.fill.region != "none") {
-    const FillShape shape = fill_shape(scene_.fill);
+    const FillShape shape = fill_shape(scene_.fill, scene_.periodic_angle_deg * pi / 180);
     if (shape.hi.z > shape.full_top + 1e-12)
       throw std::invalid_argument(
           "Scene/Fill: a bed of " + std::to_string(scene_.fill.bed_height) +
@@ -230,7 +248,7 @@ SceneRun::SceneRun(const SceneParameters& scene, const TesterDemParameters& dem,
                ? "lengthen Axis to at least " + std::to_string(shape.hi.z - shape.floor_z) + " m"
                : "raise Maximum z to at least " + std::to_string(shape.hi.z) + " m"));
     require_clear_of_walls(walls_, shape);
-    if (scene_.periodic_angle_deg > 0)
+    if (scene_.periodic_angle_deg > 0 && shape.sector == 0)
       require_in_sector(shape.lo, shape.hi, scene_.periodic_angle_deg * pi / 180,
                         "Scene/Fill: " + shape.describe());
   }
@@ -388,7 +406,7 @@ void SceneRun::fill(const std::function<void(const std::string&)>& progress) {
   const auto& f = scene_.fill;
   if (f.region == "none")
     return;
-  const FillShape shape = fill_shape(f);
+  const FillShape shape = fill_shape(f, scene_.periodic_angle_deg * pi / 180);
   const double r_max = 0.5 * dem_.psd.max_diameter();
   if (f.count > 0) {
     const std::size_t got =

@@ -325,6 +325,35 @@ TEST_CASE("scene run: a bed in a periodic sector on a turntable stays in the sec
   CHECK_THROWS_WITH(SceneRun(outside, gravel(), build_scene_walls(outside)),
                     Catch::Contains("Scene/Fill: the box") &&
                         Catch::Contains("outside the periodic sector"));
+
+  // The trough filled to a bed height as an annulus about z: only its 60-degree share, clear of
+  // both walls (2 mm), settles to about the height asked.
+  SceneParameters trough = scene;
+  trough.walls[0].motion = "fixed";
+  trough.fill.region = "cylinder";
+  trough.fill.origin = {0, 0, 0.001};
+  trough.fill.axis = {0, 0, 0.1};
+  trough.fill.radius = 0.198;
+  trough.fill.radius_inner = 0.102;
+  trough.fill.count = 0;
+  trough.fill.bed_height = 0.02;
+  SceneRun bed(trough, gravel(), build_scene_walls(trough));
+  bed.setup();
+  const auto& q = bed.system().particles;
+  REQUIRE(q.n_real > 100);
+  std::vector<double> z;
+  for (std::size_t i = 0; i < q.n_real; ++i) {
+    const double theta = std::atan2(q.position[i].y, q.position[i].x);
+    REQUIRE(theta >= -1e-12);
+    REQUIRE(theta < M_PI / 3 + 1e-12);
+    z.push_back(q.position[i].z + q.radius[i]);
+  }
+  std::sort(z.begin(), z.end());
+  CHECK(z[std::size_t(0.98 * double(z.size()))] == Approx(0.001 + 0.02).margin(0.006));
+  // An annulus whose hole does not clear the inner wall cuts it.
+  trough.fill.radius_inner = 0.099;
+  CHECK_THROWS_WITH(SceneRun(trough, gravel(), build_scene_walls(trough)),
+                    Catch::Contains("intersects wall 'inner'"));
 }
 
 TEST_CASE("scene run: a tilted solid from STEP is filled to a count, inside it and clear of it") {

@@ -56,6 +56,12 @@ TEST_CASE("triangle and cylinder: either side of the mantle, the caps, parallel 
   // A triangle beside the cylinder reaching in with one corner, or not quite.
   CHECK(cuts({r - e, 0, 0.5}, {2, 1, 0.5}, {2, -1, 0.2}));
   CHECK_FALSE(cuts({r + e, 0, 0.5}, {2, 1, 0.5}, {2, -1, 0.2}));
+  // With a hole of radius 0.4: a triangle wholly inside the hole does not cut the annulus,
+  // one reaching from the hole past the mantle does.
+  CHECK_FALSE(triangle_intersects_cylinder({-0.1, -0.1, 0.5}, {0.1, -0.1, 0.5}, {0, 0.1, 0.5}, base,
+                                           u, L, r, 0.4));
+  CHECK(
+      triangle_intersects_cylinder({0, 0, 0.5}, {2, 0.1, 0.5}, {2, -0.1, 0.5}, base, u, L, r, 0.4));
   // A floor a millimetre below the base does not cut it; the base's own plane touches it.
   CHECK_FALSE(cuts({-5, -5, -1e-3}, {5, -5, -1e-3}, {0, 5, -1e-3}));
   CHECK(cuts({-5, -5, 0}, {5, -5, 0}, {0, 5, 0}));
