@@ -58,12 +58,12 @@ std::size_t wearing_wall(const dem::SceneParameters& scene) {
   return wearing.front();
 }
 
-/// The part's remeshing and mesh sizes: the wall's Mesh size everywhere.
-fem::WornSampleParameters part_parameters(const CaseParameters& p, double mesh_size,
-                                          double height) {
+/// The part's remeshing and mesh sizes: the wall's Mesh size everywhere (equal top and
+/// bottom sizes make the sample's graded size field uniform, whatever its thickness).
+fem::WornSampleParameters part_parameters(const CaseParameters& p, double mesh_size) {
   meshes::SampleGeometry sizes;
   sizes.mesh_size = sizes.mesh_size_bottom = mesh_size;
-  sizes.thickness = std::max(height, mesh_size);
+  sizes.thickness = mesh_size;
   sizes.curvature_refinement = false;
   return fem::worn_sample_parameters(p.fem, sizes, p.output.directory + "/mesh");
 }
@@ -155,8 +155,7 @@ std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::setup() {
   std::vector<dem::SceneWall> walls = dem::build_scene_walls(p_.scene);
   if (part_wall_) {
     auto& wall = walls[*part_wall_];
-    const auto worn = part_parameters(p_, wall.parameters.mesh_size,
-                                      meshes::bounding_box(wall.surface.mesh).extent().z);
+    const auto worn = part_parameters(p_, wall.parameters.mesh_size);
     meshes::ensure_directory(dir + "/mesh");
     fem::RemeshReport report;
     const meshes::Stopwatch clock;
@@ -204,9 +203,7 @@ std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::resume() {
       throw std::runtime_error("--resume: checkpoint '" + checkpoint_path() +
                                "' holds no worn part");
     const auto& wall = p_.scene.walls[*part_wall_];
-    part_ = std::make_unique<fem::WornSample>(
-        c.sample,
-        part_parameters(p_, wall.mesh_size, meshes::bounding_box(c.sample.surface).extent().z));
+    part_ = std::make_unique<fem::WornSample>(c.sample, part_parameters(p_, wall.mesh_size));
     previous_stress_ = meshes::FaceField<double>("von Mises", "Pa", meshes::Extensivity::intensive,
                                                  part_->surface());
     for (std::size_t f = 0; f < c.face_von_mises.size(); ++f)

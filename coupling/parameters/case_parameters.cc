@@ -245,12 +245,7 @@ CaseParameters read_case(const std::string& path, std::ostream& warnings) {
 double stress_averaging_radius(const CaseParameters& p) {
   if (p.fem.elasticity.averaging_radius > 0)
     return p.fem.elasticity.averaging_radius;
-  const auto& psd = p.dem.psd;
-  const auto fraction = psd.number_fractions();
-  double mean_diameter = 0;
-  for (std::size_t k = 0; k < fraction.size(); ++k)
-    mean_diameter += fraction[k] * psd.diameters[k] * psd.scaling_factor;
-  return 0.5 * mean_diameter;
+  return 0.5 * p.dem.psd.mean_diameter();
 }
 
 CaseParameters read_case(const std::string& path) {

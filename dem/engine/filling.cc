@@ -49,6 +49,14 @@ std::vector<double> SizeDistribution::number_fractions() const {
   return n;
 }
 
+double SizeDistribution::mean_diameter() const {
+  const auto n = number_fractions();
+  double d = 0;
+  for (std::size_t k = 0; k < n.size(); ++k)
+    d += n[k] * diameters[k] * scaling_factor;
+  return d;
+}
+
 double SizeDistribution::min_diameter() const {
   return scaling_factor * *std::min_element(diameters.begin(), diameters.end());
 }

@@ -17,6 +17,8 @@ struct SizeDistribution {
   void validate() const;
   /// Number fractions n_k ~ f_k / d_k^3 (equal density).
   std::vector<double> number_fractions() const;
+  /// [m] number-weighted mean diameter, scaled: sum_k n_k d_k s
+  double mean_diameter() const;
   double min_diameter() const; ///< [m] scaled
   double max_diameter() const; ///< [m] scaled
 };

@@ -43,10 +43,12 @@ Vec3 vec(const std::vector<double>& v) {
   return scene_vector(v);
 }
 
+} // namespace
+
 /// Where the fill places particles: the Fill box, cylinder or solid of a mesh, or for a bed
 /// height its part up to 2.5 heights above its floor (loose, before settling).
 constexpr double loose_factor = 2.5;
-struct FillShape {
+struct SceneFillShape {
   bool cylinder = false;
   std::shared_ptr<const meshes::SolidRegion> solid; ///< Region = mesh
   std::string file;                                 ///< the mesh's, quoted, for messages
@@ -113,8 +115,8 @@ struct FillShape {
 
 /// `periodic`: the scene's sector [rad] (0: none); a cylinder about the z axis is then filled
 /// in the sector only, and its footprint is the sector's share.
-FillShape fill_shape(const SceneFillParameters& f, double periodic) {
-  FillShape shape;
+static SceneFillShape fill_shape(const SceneFillParameters& f, double periodic) {
+  SceneFillShape shape;
   if (f.region == "mesh") {
     meshes::CadImportOptions o{
         meshes::parse_length_unit(f.unit, "Scene/Fill/Unit"), f.mesh_size, {}};
@@ -162,8 +164,10 @@ FillShape fill_shape(const SceneFillParameters& f, double periodic) {
   return shape;
 }
 
+namespace {
+
 /// Throws when a triangle of a wall cuts the fill region, naming the wall and its file.
-void require_clear_of_walls(const std::vector<SceneWall>& walls, const FillShape& shape) {
+void require_clear_of_walls(const std::vector<SceneWall>& walls, const SceneFillShape& shape) {
   for (const auto& w : walls) {
     const auto& m = w.surface.mesh;
     for (std::size_t f = 0; f < m.n_faces(); ++f) {
@@ -239,7 +243,9 @@ SceneRun::SceneRun(const SceneParameters& scene, const TesterDemParameters& dem,
   validate(scene_);
   validate(dem_);
   if (scene_.fill.region != "none") {
-    const FillShape shape = fill_shape(scene_.fill, scene_.periodic_angle_deg * pi / 180);
+    fill_shape_ = std::make_shared<const SceneFillShape>(
+        fill_shape(scene_.fill, scene_.periodic_angle_deg * pi / 180));
+    const SceneFillShape& shape = *fill_shape_;
     if (shape.hi.z > shape.full_top + 1e-12)
       throw std::invalid_argument(
           "Scene/Fill: a bed of " + std::to_string(scene_.fill.bed_height) +
@@ -406,7 +412,7 @@ void SceneRun::fill(const std::function<void(const std::string&)>& progress) {
   const auto& f = scene_.fill;
   if (f.region == "none")
     return;
-  const FillShape shape = fill_shape(f, scene_.periodic_angle_deg * pi / 180);
+  const SceneFillShape& shape = *fill_shape_;
   const double r_max = 0.5 * dem_.psd.max_diameter();
   if (f.count > 0) {
     const std::size_t got =
@@ -530,17 +536,9 @@ SceneWindow SceneRun::advance(double t_end) {
 }
 
 WallLoads SceneRun::wall_loads(std::size_t k, const WearLaw& law, double duration) const {
-  const auto& psd = dem_.psd;
-  double mean_d = 0;
-  const auto fractions = psd.number_fractions();
-  for (std::size_t j = 0; j < fractions.size(); ++j)
-    mean_d += fractions[j] * psd.diameters[j] * psd.scaling_factor;
-  const LoadSpreading spreading{dem_.coarse_graining_width > 0 ? dem_.coarse_graining_width
-                                                               : mean_d / 2,
-                                dem_.coarse_grained_traction, dem_.coarse_grained_wear};
   const WearIntegrals integrals = system_.wear_integrals(int(k));
   return dem::wall_loads(integrals, law.removed_volume(integrals), walls_.at(k).surface.mesh,
-                         duration, spreading);
+                         duration, load_spreading(dem_));
 }
 
 void SceneRun::replace_wall_surface(std::size_t k, const meshes::SurfaceMesh& mesh) {

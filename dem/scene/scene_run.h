@@ -13,6 +13,7 @@
 
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -54,6 +55,8 @@ struct SceneRunState {
   std::vector<std::uint64_t> outlet_counts; ///< per outlet so far
   std::vector<FluxPlaneState> flux_planes;
 };
+
+struct SceneFillShape; // the Fill region as built once (scene_run.cc)
 
 class SceneRun {
 public:
@@ -103,6 +106,7 @@ private:
   std::vector<Outlet> outlets_;
   std::vector<FluxPlane> flux_planes_;
   std::optional<BinnedFields> fields_;
+  std::shared_ptr<const SceneFillShape> fill_shape_; ///< none without a Fill region
   System system_;
   int particle_material_ = 0;
   double time_ = 0;     ///< [s] scene time (the engine's clock once it is set up)

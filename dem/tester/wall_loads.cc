@@ -90,6 +90,11 @@ WallLoads WallLoads::follow(const meshes::SurfaceMesh& mesh,
   return w;
 }
 
+LoadSpreading load_spreading(const TesterDemParameters& dem) {
+  return {dem.coarse_graining_width > 0 ? dem.coarse_graining_width : dem.psd.mean_diameter() / 2,
+          dem.coarse_grained_traction, dem.coarse_grained_wear};
+}
+
 WallLoads wall_loads(const WearIntegrals& integrals, const std::vector<double>& wear_volume,
                      const meshes::SurfaceMesh& mesh, double duration,
                      const LoadSpreading& spreading) {

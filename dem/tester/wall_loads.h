@@ -5,6 +5,7 @@
 // receives. Only extensive, window-integrated quantities cross the module boundary;
 // intensive ones (pressure, traction, wear depth) are derived where they are used.
 #include "dem/engine/system.h"
+#include "dem/tester/tester_parameters.h"
 #include "meshes/face_field.h"
 
 #include <functional>
@@ -18,6 +19,10 @@ struct LoadSpreading {
   bool traction = false; ///< traction_impulse coarse-grained (else the per-face impulse)
   bool wear = false;     ///< wear_volume coarse-grained (else per face)
 };
+
+/// The spreading the DEM subsection declares: Coarse-graining width (0: half the
+/// number-weighted mean diameter at the scaling factor), Wall traction, Wear field.
+LoadSpreading load_spreading(const TesterDemParameters& dem);
 
 struct WallLoads {
   meshes::FaceField<meshes::Vec3> impulse; ///< [N s] integral of the contact force

@@ -156,13 +156,8 @@ WearTester::WearTester(const meshes::GeometryParameters& geometry, const TesterD
   s.domain = {{-ro, -ro, -0.05}, {ro, ro, t.wall_height + dem_.fill_height * dem_.loose_factor}};
   revolution_time_ = sector_ / (dem_.rotation_rate_deg * pi / 180);
 
-  const auto& psd = dem_.psd;
-  double mean_d = 0;
-  const auto frac = psd.number_fractions();
-  for (std::size_t k = 0; k < frac.size(); ++k)
-    mean_d += frac[k] * psd.diameters[k] * psd.scaling_factor;
-  spreading_ = {dem_.coarse_graining_width > 0 ? dem_.coarse_graining_width : mean_d / 2,
-                dem_.coarse_grained_traction, dem_.coarse_grained_wear};
+  const double mean_d = dem_.psd.mean_diameter();
+  spreading_ = dem::load_spreading(dem_);
   evaluation_ =
       std::make_unique<TesterEvaluation>(sample, geometry_.sample, geometry_.placement, mean_d,
                                          dem_.steady_threshold, dem_.steady_revolutions);
