@@ -24,7 +24,7 @@ void run_scene_command(const CaseParameters& p, std::ostream& log) {
   if (p.scene.walls.empty())
     throw std::invalid_argument("case file '" + p.case_file +
                                 "': Scene/Walls is empty: there is no scene to build");
-  const auto walls = dem::build_scene_walls(p.scene);
+  const auto walls = dem::build_scene_walls(p.scene, p.geometry);
   const std::string dir = p.output.directory + "/scene";
   meshes::ensure_directory(p.output.directory);
   meshes::ensure_directory(dir);
@@ -62,12 +62,14 @@ void run_scene_command(const CaseParameters& p, std::ostream& log) {
         }
       if (a > 0)
         c = c * (1 / a);
-      // A wearing part's surfaces by their CAD number, with the label their role gives.
-      const bool part = meshes::label::is_part_surface(label);
+      // A wearing part's surfaces by their CAD number, with the label their role gives; the
+      // tester's sample and holder by their labels' names.
+      const bool tester = q.source == "sample" || q.source == "holder";
+      const bool part = meshes::label::is_part_surface(label) || tester;
       std::snprintf(line, sizeof line,
                     "  surface %3d%s%s: area %.6g m^2 (CAD %.6g), centroid (%.4g, %.4g, %.4g) m\n",
-                    part ? meshes::label::part_surface_number(label) : label, part ? " " : "",
-                    part ? meshes::label::name(label).c_str() : "",
+                    part && !tester ? meshes::label::part_surface_number(label) : label,
+                    part ? " " : "", part ? meshes::label::name(label).c_str() : "",
                     area.count(label) ? area.at(label) : 0.0, w.surface.surface_areas[k], c.x, c.y,
                     c.z);
       log << line;

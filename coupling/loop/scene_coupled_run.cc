@@ -59,8 +59,12 @@ std::size_t wearing_wall(const dem::SceneParameters& scene) {
 }
 
 /// The part's remeshing and mesh sizes: the wall's Mesh size everywhere (equal top and
-/// bottom sizes make the sample's graded size field uniform, whatever its thickness).
-fem::WornSampleParameters part_parameters(const CaseParameters& p, double mesh_size) {
+/// bottom sizes make the sample's graded size field uniform, whatever its thickness); the
+/// tester's sample takes its wear-face size (Geometry/Sample/Mesh size) everywhere, since the
+/// grading is defined in the sample's own frame.
+fem::WornSampleParameters part_parameters(const CaseParameters& p,
+                                          const dem::SceneWallParameters& wall) {
+  const double mesh_size = wall.source == "sample" ? p.geometry.sample.mesh_size : wall.mesh_size;
   meshes::SampleGeometry sizes;
   sizes.mesh_size = sizes.mesh_size_bottom = mesh_size;
   sizes.thickness = mesh_size;
@@ -84,7 +88,8 @@ SceneCoupledRun::SceneCoupledRun(const CaseParameters& p, std::ostream& log,
   validate(p_.coupling, p_.fem);
   part_wall_ = wearing_wall(p_.scene);
   const auto& wall = p_.scene.walls[*part_wall_];
-  if (dem::surface_numbers(wall.clamped_surfaces, dem::scene_wall_path(wall)).empty())
+  if (wall.source != "sample" && // the tester's sample is clamped at its bottom
+      dem::surface_numbers(wall.clamped_surfaces, dem::scene_wall_path(wall)).empty())
     throw std::invalid_argument(dem::scene_wall_path(wall) +
                                 "/Clamped surfaces: the wearing part needs at least one clamped "
                                 "surface (held fixed in the FEM; without one it would float)");
@@ -141,7 +146,7 @@ int SceneCoupledRun::run() {
 }
 
 std::vector<dem::SceneWall> SceneCoupledRun::scene_walls() const {
-  std::vector<dem::SceneWall> walls = dem::build_scene_walls(p_.scene);
+  std::vector<dem::SceneWall> walls = dem::build_scene_walls(p_.scene, p_.geometry);
   if (part_)
     walls[*part_wall_].surface.mesh = part_->surface();
   return walls;
@@ -152,10 +157,10 @@ std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::setup() {
   if (options_.resume)
     return resume();
   const std::string& dir = p_.output.directory;
-  std::vector<dem::SceneWall> walls = dem::build_scene_walls(p_.scene);
+  std::vector<dem::SceneWall> walls = dem::build_scene_walls(p_.scene, p_.geometry);
   if (part_wall_) {
     auto& wall = walls[*part_wall_];
-    const auto worn = part_parameters(p_, wall.parameters.mesh_size);
+    const auto worn = part_parameters(p_, wall.parameters);
     meshes::ensure_directory(dir + "/mesh");
     fem::RemeshReport report;
     const meshes::Stopwatch clock;
@@ -203,7 +208,7 @@ std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::resume() {
       throw std::runtime_error("--resume: checkpoint '" + checkpoint_path() +
                                "' holds no worn part");
     const auto& wall = p_.scene.walls[*part_wall_];
-    part_ = std::make_unique<fem::WornSample>(c.sample, part_parameters(p_, wall.mesh_size));
+    part_ = std::make_unique<fem::WornSample>(c.sample, part_parameters(p_, wall));
     previous_stress_ = meshes::FaceField<double>("von Mises", "Pa", meshes::Extensivity::intensive,
                                                  part_->surface());
     for (std::size_t f = 0; f < c.face_von_mises.size(); ++f)
@@ -294,7 +299,9 @@ WearIncrement SceneCoupledRun::compute_wear(const dem::WallLoads& loads, StageRe
 StageStress SceneCoupledRun::solve_stress(const dem::WallLoads& loads, StageRecord& r) {
   fem::ElasticityParameters ep = p_.fem.elasticity;
   ep.averaging_radius = stress_averaging_radius(p_);
-  ep.holder_support = false; // a part is held at its clamped surfaces only
+  // A part is held at its clamped surfaces only: the tester's holder support (u . n = 0 on the
+  // sides) is set in the sample's own frame, and the scene's FEM works in the scene's.
+  ep.holder_support = false;
   return solve_stage_stress(*part_, loads, ep, *output_, r);
 }
 

@@ -159,7 +159,27 @@ void validate(const SceneParameters& s) {
     if (w.wearing_surfaces != "all")
       surface_numbers(w.wearing_surfaces, p + "/Wearing surfaces");
     surface_numbers(w.clamped_surfaces, p + "/Clamped surfaces");
+    if (w.source == "sample" && (w.wearing_surfaces != "all" || !w.clamped_surfaces.empty()))
+      throw std::invalid_argument(p + ": the tester's sample (Source = sample) brings its own "
+                                      "roles (base and elements wear, sides free, bottom "
+                                      "clamped); leave Wearing surfaces and Clamped surfaces "
+                                      "at their defaults");
+    if ((w.source == "sample" || w.source == "holder") && w.motion != "fixed")
+      throw std::invalid_argument(p + "/Motion: the tester's " + w.source +
+                                  " stands still (Motion = fixed)");
+    if (w.source == "holder" && w.wears)
+      throw std::invalid_argument(p + "/Wears: the holder is steel and does not wear");
   }
+  const auto count_source = [&](const std::string& source) {
+    return std::count_if(s.walls.begin(), s.walls.end(),
+                         [&](const SceneWallParameters& w) { return w.source == source; });
+  };
+  if (count_source("sample") > 1 || count_source("holder") > 1)
+    throw std::invalid_argument("Scene/Walls: at most one wall with Source = sample and one "
+                                "with Source = holder (the tester holds one sample)");
+  if (count_source("holder") == 1 && count_source("sample") == 0)
+    throw std::invalid_argument("Scene/Walls: a wall with Source = holder needs the sample it "
+                                "holds (a wall with Source = sample)");
   if (!(s.periodic_angle_deg >= 0 && s.periodic_angle_deg < 360))
     throw std::invalid_argument("Scene/Periodic sector must lie in [0, 360) degrees, got " +
                                 std::to_string(s.periodic_angle_deg));

@@ -15,11 +15,11 @@
 namespace wear::dem {
 
 struct SceneWallParameters {
-  std::string name;                     ///< from Scene/Walls
-  std::string source = "file";          ///< file | plane | disc | cylinder | cone | box
-  std::string file;                     ///< STEP, IGES, BREP or STL (source = file)
-  std::string unit = "m";               ///< m | mm, the file's length unit
-  double mesh_size = 5e-3;              ///< [m] triangle size for CAD files and primitives
+  std::string name;            ///< from Scene/Walls
+  std::string source = "file"; ///< file | plane | disc | cylinder | cone | box | sample | holder
+  std::string file;            ///< STEP, IGES, BREP or STL (source = file)
+  std::string unit = "m";      ///< m | mm, the file's length unit
+  double mesh_size = 5e-3;     ///< [m] triangle size for CAD files and primitives
   std::vector<double> origin{0, 0, 0};  ///< [m] plane corner, disc centre, base centre, box corner
   std::vector<double> edge_u{1, 0, 0};  ///< [m] plane: first edge
   std::vector<double> edge_v{0, 1, 0};  ///< [m] plane: second edge
@@ -168,7 +168,9 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
               "Particles in place at the start: none, or random in an axis-aligned box, a "
               "cylinder, or the solid a closed mesh or CAD file encloses (the DEM subsection's "
               "size distribution and particle material). The region may not cut or touch a "
-              "wall.");
+              "wall; a wall wholly inside it stands submerged in the fill (a part in a bed): "
+              "no particle is placed within a largest diameter of its bounding box, and a bed "
+              "height's count leaves out its volume.");
   v.text("File", s.fill.file,
          "Region = mesh: a closed STL, or a STEP, IGES or BREP solid, relative to the working "
          "directory (filled to a Count only).");
@@ -233,8 +235,14 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
   }
   for (auto& w : s.walls) {
     v.enter("Wall " + w.name);
-    v.selection("Source", w.source, "file|plane|disc|cylinder|cone|box",
-                "Where the surface comes from: a file, or a primitive meshed at Mesh size.");
+    v.selection("Source", w.source, "file|plane|disc|cylinder|cone|box|sample|holder",
+                "Where the surface comes from: a file, or a primitive meshed at Mesh size; or "
+                "the wear tester's parametric sample (Geometry/Sample: plain or convex pattern, "
+                "meshed at its own sizes) or its holder (a frame of Geometry/Tester/Holder rim "
+                "width around and under that sample, meshed at Mesh size), both placed where "
+                "Geometry/Placement puts the sample in the tester. The sample keeps its labels "
+                "(base and C<j><k> wear, its sides are free, its bottom is clamped); with a "
+                "holder wall its sides and bottom rest in the holder's pocket.");
     v.text("File", w.file,
            "STEP (.step, .stp), IGES (.iges, .igs), BREP (.brep) or STL (.stl), relative to "
            "the working directory (Source = file). CAD surfaces become labels 1, 2, ... in the "
@@ -275,8 +283,9 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
                 "translation at Velocity; oscillation A sin(2 pi f (t - t0)) of Amplitude and "
                 "Frequency: the whole wall moves as a rigid body from Start time t0 on. "
                 "'surface rotation' and 'surface translation': the geometry stays where it is "
-                "and only its surface moves, at all times (a turntable or drum turning about its "
-                "own axis of symmetry, a conveyor belt at Velocity); these may be periodic.");
+                "and only its surface moves, from the start of the run on (a turntable or drum "
+                "turning about its own axis of symmetry, a conveyor belt at Velocity; a fill to a "
+                "Bed height settles on surfaces at rest); these may be periodic.");
     v.real_list("Axis point", w.axis_point, "[m] A point of the rotation axis.");
     v.real_list("Rotation axis", w.rotation_axis, "[-] Direction of the rotation axis.");
     v.real("Angular velocity", w.angular_velocity, "[rad/s] Right-handed about Rotation axis.");

@@ -13,7 +13,10 @@
 //
 // The fill region is checked against every wall triangle (a box by separating axes, a cylinder
 // by clipping the triangle to its slab; both exact) before any particle exists: particles
-// placed through a wall would start overlapping it.
+// placed through a wall would start overlapping it. A wall wholly inside the region is
+// submerged (a part standing in the bed, as the tester's sample): no centre is placed within
+// the largest diameter of its bounding box, and a bed height's count leaves out its enclosed
+// volume below the bed's top (the share of its height below it, when it reaches above).
 #include "dem/scene/scene_run.h"
 
 #include "dem/tester/wear_tester.h"
@@ -61,6 +64,11 @@ struct SceneFillShape {
   double floor_z = 0;   ///< [m] the bed's floor
   double footprint = 0; ///< [m^2] horizontal area of a bed
   double full_top = 0;  ///< [m] the region's top before a bed height cuts it
+  /// [m] bounding boxes of the walls wholly inside the region (submerged, like a sample in a
+  /// bed): no centre is placed within a largest diameter of them
+  std::vector<meshes::BoundingBox> submerged;
+  double clearance = 0;        ///< [m] that diameter
+  double submerged_volume = 0; ///< [m^3] the closed submerged walls' volume below the bed top
   std::string describe() const {
     std::ostringstream s;
     if (solid)
@@ -82,8 +90,30 @@ struct SceneFillShape {
                                                            radius_inner)
                     : meshes::triangle_intersects_box(a, b, c, lo, hi);
   }
-  /// Centres admissible for spheres of radius `margin`, below z_top.
+  /// Centres admissible for spheres of radius `margin`, below z_top, clear of the submerged
+  /// walls.
   FillRegion region(double margin, double z_top) const {
+    FillRegion r = outline(margin, z_top);
+    if (submerged.empty())
+      return r;
+    r.inside = [in = r.inside, boxes = submerged, c = clearance](const Vec3& x) {
+      for (const auto& b : boxes)
+        if (x.x > b.min.x - c && x.x < b.max.x + c && x.y > b.min.y - c && x.y < b.max.y + c &&
+            x.z > b.min.z - c && x.z < b.max.z + c)
+          return false;
+      return in(x);
+    };
+    return r;
+  }
+  /// True when `x` lies inside the region (its loose part for a bed).
+  bool contains(const Vec3& x) const {
+    const FillRegion r = outline(0, hi.z);
+    return x.x >= r.lo.x && x.y >= r.lo.y && x.z >= r.lo.z && x.x <= r.hi.x && x.y <= r.hi.y &&
+           x.z <= r.hi.z && r.inside(x);
+  }
+
+private:
+  FillRegion outline(double margin, double z_top) const {
     if (solid) {
       FillRegion r{solid->box().min + Vec3{margin, margin, margin},
                    solid->box().max - Vec3{margin, margin, margin},
@@ -166,10 +196,23 @@ static SceneFillShape fill_shape(const SceneFillParameters& f, double periodic) 
 
 namespace {
 
-/// Throws when a triangle of a wall cuts the fill region, naming the wall and its file.
-void require_clear_of_walls(const std::vector<SceneWall>& walls, const SceneFillShape& shape) {
+/// Throws when a triangle of a wall cuts the fill region, naming the wall and its file,
+/// unless the whole wall lies inside the region: then it is submerged (a part standing in the
+/// bed), recorded in `shape` and left out of the fill.
+void require_clear_of_walls(const std::vector<SceneWall>& walls, SceneFillShape& shape,
+                            double bed_top) {
   for (const auto& w : walls) {
     const auto& m = w.surface.mesh;
+    if (!m.vertices.empty() && std::all_of(m.vertices.begin(), m.vertices.end(),
+                                           [&](const Vec3& x) { return shape.contains(x); })) {
+      const meshes::BoundingBox box = meshes::bounding_box(m);
+      shape.submerged.push_back(box);
+      if (meshes::check_closed(m).closed() && box.max.z > box.min.z)
+        shape.submerged_volume +=
+            std::fabs(meshes::enclosed_volume(m)) *
+            std::clamp((bed_top - box.min.z) / (box.max.z - box.min.z), 0.0, 1.0);
+      continue;
+    }
     for (std::size_t f = 0; f < m.n_faces(); ++f) {
       const auto& t = m.triangles[f];
       const Vec3 a = m.vertices[t[0]], b = m.vertices[t[1]], c = m.vertices[t[2]];
@@ -243,8 +286,13 @@ SceneRun::SceneRun(const SceneParameters& scene, const TesterDemParameters& dem,
   validate(scene_);
   validate(dem_);
   if (scene_.fill.region != "none") {
-    fill_shape_ = std::make_shared<const SceneFillShape>(
+    auto built = std::make_shared<SceneFillShape>(
         fill_shape(scene_.fill, scene_.periodic_angle_deg * pi / 180));
+    built->clearance = dem_.psd.max_diameter();
+    require_clear_of_walls(walls_, *built,
+                           built->floor_z +
+                               (scene_.fill.count == 0 ? scene_.fill.bed_height : built->full_top));
+    fill_shape_ = built;
     const SceneFillShape& shape = *fill_shape_;
     if (shape.hi.z > shape.full_top + 1e-12)
       throw std::invalid_argument(
@@ -253,7 +301,6 @@ SceneRun::SceneRun(const SceneParameters& scene, const TesterDemParameters& dem,
           (shape.cylinder
                ? "lengthen Axis to at least " + std::to_string(shape.hi.z - shape.floor_z) + " m"
                : "raise Maximum z to at least " + std::to_string(shape.hi.z) + " m"));
-    require_clear_of_walls(walls_, shape);
     if (scene_.periodic_angle_deg > 0 && shape.sector == 0)
       require_in_sector(shape.lo, shape.hi, scene_.periodic_angle_deg * pi / 180,
                         "Scene/Fill: " + shape.describe());
@@ -320,7 +367,8 @@ void SceneRun::add_materials_and_walls() {
   for (const auto& w : walls_) {
     const std::string& name = w.parameters.material;
     const int id = name == "sample" ? sample : name == "holder" ? holder : wall;
-    MeshWall mesh_wall(w.surface.mesh, id, surface_motion(w.parameters), true, w.parameters.name);
+    MeshWall mesh_wall(w.surface.mesh, id, surface_motion(w.parameters), true, w.parameters.name,
+                       w.covered_labels);
     mesh_wall.set_rigid_motion(rigid_motion(w.parameters));
     system_.add_wall(mesh_wall);
   }
@@ -424,15 +472,21 @@ void SceneRun::fill(const std::function<void(const std::string&)>& progress) {
                                "; enlarge it or lower Count");
     return;
   }
+  // The bed settles with the surfaces at rest, as a bed poured before the machine starts: a
+  // floor or belt moving under it would keep shearing it and the settling might not end.
+  for (std::size_t k = 0; k < walls_.size(); ++k)
+    system_.set_wall_motion(int(k), WallMotion{});
   const auto report = fill_to_height(
       system_, [&shape, r_max](double z_top) { return shape.region(r_max, z_top); },
-      shape.footprint, shape.floor_z, f.bed_height, dem_.psd, dem_.particle.density,
-      particle_material_, dem_.seed, loose_factor, 0.01, 2.0,
+      shape.footprint - shape.submerged_volume / f.bed_height, shape.floor_z, f.bed_height,
+      dem_.psd, dem_.particle.density, particle_material_, dem_.seed, loose_factor, 0.01, 2.0,
       [&](double t) {
         if (progress)
           progress("settling the fill: t = " + std::to_string(t) + " s");
       },
       dem_.assumed_packing);
+  for (std::size_t k = 0; k < walls_.size(); ++k)
+    system_.set_wall_motion(int(k), surface_motion(walls_[k].parameters));
   if (progress)
     progress("filled: " + std::to_string(report.n_particles) + " particles, bed " +
              std::to_string(report.bed_height) + " m, settled in " +

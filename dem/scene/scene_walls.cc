@@ -7,7 +7,18 @@
 // it (CadImportOptions::bounds, before meshing a CAD file) and the message names the wall,
 // its file and its unit. A wearing wall's CAD surfaces are relabelled by their role
 // (wearing, free, clamped; meshes::label::part_surface), keeping their numbers.
+//
+// The tester's sample and holder (Source = sample, holder) are built by the tester's own
+// generators (meshes::generate_sample, meshes::generate_holder) and placed by the tester's map
+// (meshes::SampleFrame), so a scene that names them holds the same triangles as the built-in
+// tester. The sample keeps its labels and their roles (meshes::label::wears, clamped); with
+// both walls present, the sample's sides and bottom and the holder's pocket coincide and are
+// named covered, as in the tester (MeshWall: one contact where wear face and rim meet).
 #include "dem/scene/scene_walls.h"
+
+#include "meshes/sample_frame.h"
+#include "meshes/sample_generator.h"
+#include "meshes/tester_walls.h"
 
 #include <algorithm>
 #include <map>
@@ -17,8 +28,63 @@ namespace wear::dem {
 
 namespace {
 
-meshes::CadSurface surface_of(const SceneWallParameters& w, const meshes::BoundingBox& domain) {
+/// The labels present in `mesh`, ascending, with their areas.
+void collect_labels(meshes::CadSurface& c) {
+  std::map<int, double> area;
+  const auto& m = c.mesh;
+  const std::vector<double> face = meshes::face_areas(m);
+  for (std::size_t f = 0; f < m.n_faces(); ++f)
+    area[m.face_labels[f]] += face[f];
+  for (const auto& [label, a] : area) {
+    c.surface_labels.push_back(label);
+    c.surface_areas.push_back(a);
+  }
+}
+
+/// The tester's sample or holder where the tester places them; throws naming the wall when a
+/// vertex lies outside the domain.
+meshes::CadSurface tester_part(const SceneWallParameters& w,
+                               const meshes::GeometryParameters& geometry,
+                               const meshes::BoundingBox& domain) {
+  const std::string what = scene_wall_path(w) + " (" + w.source + ")";
+  meshes::SampleGeometry sample = geometry.sample;
+  sample.volume_mesh = false;
+  try {
+    meshes::validate(geometry);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(what + ": " + e.what());
+  }
+  const meshes::SampleFrame frame(sample, geometry.placement);
+  meshes::CadSurface c;
+  if (w.source == "sample") {
+    const auto g = meshes::generate_sample(sample);
+    c.mesh = frame.place_in_tester(g.surface);
+    c.n_solids = 1;
+    c.solid_volume = g.exact_volume;
+    collect_labels(c);
+    for (std::size_t k = 0; k < c.surface_labels.size(); ++k) // OpenCASCADE's exact areas
+      c.surface_areas[k] = g.exact_area.at(c.surface_labels[k]);
+  } else {
+    meshes::TesterGeometry t = geometry.tester;
+    t.wall_mesh_size = w.mesh_size;
+    c.mesh = frame.place_in_tester(meshes::generate_holder(sample, t));
+    collect_labels(c); // planar: the triangles' areas are exact
+  }
+  for (const auto& v : c.mesh.vertices)
+    for (int d = 0; d < 3; ++d)
+      if (v[d] < domain.min[d] || v[d] > domain.max[d])
+        throw std::invalid_argument(what + ": the vertex (" + std::to_string(v.x) + ", " +
+                                    std::to_string(v.y) + ", " + std::to_string(v.z) +
+                                    ") m lies outside Scene/Domain (Geometry/Placement puts "
+                                    "the sample there)");
+  return c;
+}
+
+meshes::CadSurface surface_of(const SceneWallParameters& w, const meshes::BoundingBox& domain,
+                              const meshes::GeometryParameters& geometry) {
   const std::string what = scene_wall_path(w);
+  if (w.source == "sample" || w.source == "holder")
+    return tester_part(w, geometry, domain);
   if (w.source == "file") {
     meshes::CadImportOptions o{meshes::parse_length_unit(w.unit, what + "/Unit"), w.mesh_size,
                                domain};
@@ -93,12 +159,19 @@ void label_part_surfaces(SceneWall& wall, const std::string& what) {
 
 } // namespace
 
-std::vector<SceneWall> build_scene_walls(const SceneParameters& scene) {
+std::vector<SceneWall> build_scene_walls(const SceneParameters& scene,
+                                         const meshes::GeometryParameters& geometry) {
   validate(scene);
   const meshes::Vec3 lo = scene_vector(scene.domain_min), hi = scene_vector(scene.domain_max);
+  const bool held = std::any_of(scene.walls.begin(), scene.walls.end(),
+                                [](const SceneWallParameters& w) { return w.source == "holder"; });
   std::vector<SceneWall> walls;
   for (const auto& w : scene.walls) {
-    SceneWall wall{w, surface_of(w, {lo, hi})};
+    SceneWall wall{w, surface_of(w, {lo, hi}, geometry), {}};
+    if (held && w.source == "sample")
+      wall.covered_labels = {meshes::label::side, meshes::label::bottom};
+    if (w.source == "holder")
+      wall.covered_labels = {meshes::label::pocket};
     const std::string what =
         scene_wall_path(w) + (w.source == "file" ? " ('" + w.file + "', unit " + w.unit + ")" : "");
     if (w.wears) {
@@ -108,7 +181,8 @@ std::vector<SceneWall> build_scene_walls(const SceneParameters& scene) {
             what + ": a wearing wall must be a closed solid; its surface has " +
             std::to_string(report.n_boundary_edges) + " boundary and " +
             std::to_string(report.n_nonmanifold_edges) + " non-manifold edges");
-      label_part_surfaces(wall, scene_wall_path(w));
+      if (w.source != "sample") // the sample's labels carry their roles already
+        label_part_surfaces(wall, scene_wall_path(w));
     }
     walls.push_back(std::move(wall));
   }

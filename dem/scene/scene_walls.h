@@ -3,6 +3,7 @@
 // (scene_parameters.h) and checked before any particle exists.
 #include "dem/scene/scene_parameters.h"
 #include "meshes/cad_import.h"
+#include "meshes/geometry_parameters.h"
 
 #include <string>
 #include <vector>
@@ -12,12 +13,18 @@ namespace wear::dem {
 struct SceneWall {
   SceneWallParameters parameters;
   meshes::CadSurface surface; ///< [m] triangles, one label per CAD surface or primitive face
+  /// Labels of faces held flush against another wall (MeshWall): the tester's sample's sides
+  /// and bottom and its holder's pocket, when both are walls of the scene.
+  std::vector<int> covered_labels;
 };
 
 /// Every wall of the scene, in the order of Scene/Walls. Throws std::runtime_error or
 /// std::invalid_argument naming `Scene/Wall <name>` and its file when a file is missing or
 /// unreadable, a primitive's dimension is wrong, a wearing wall is not a closed solid, or a
 /// wall reaches outside Scene/Domain (the message gives its extent and asks about the unit).
-std::vector<SceneWall> build_scene_walls(const SceneParameters& scene);
+/// `geometry`: the Geometry subsection, for walls with Source = sample or holder (the
+/// tester's sample and holder, placed as in the tester).
+std::vector<SceneWall> build_scene_walls(const SceneParameters& scene,
+                                         const meshes::GeometryParameters& geometry = {});
 
 } // namespace wear::dem

@@ -1,0 +1,65 @@
+#!/bin/bash
+# The wear tester as a scene against the built-in tester: the default case (cases/quick, plain
+# and convex, 30-degree sector, s = 4, 2 dem-only and 4 staged revolutions at 20x) run both
+# ways over the same insertion seeds, one thread per run, as many runs at once as the machine
+# has cores. compare_scene.py then sets each path's wear per revolution (revolutions 3 to 6)
+# as mean +- 95 % interval across the seeds side by side and exits 1 when a scene mean falls
+# outside the tester's interval. README.md beside this script says why not bit for bit.
+#
+# usage: bash cases/reference/scene/scene_vs_tester.sh [seed ...]
+#        (default seeds 1 2 3: about 8 min on 2 cores; JOBS=<n> sets the runs at once;
+#         WEARSIM=<path> the binary, default build/wearsim)
+set -euo pipefail
+cd "$(dirname "$0")/../../.."
+seeds=()
+for a in "$@"; do
+  [[ "$a" =~ ^[0-9]+$ ]] || { echo "scene_vs_tester.sh: seed '$a' is not a non-negative integer" >&2; exit 2; }
+  seeds+=("$a")
+done
+[ ${#seeds[@]} -gt 0 ] || seeds=(1 2 3)
+wearsim=${WEARSIM:-build/wearsim}
+[ -x "$wearsim" ] || { echo "scene_vs_tester.sh: $wearsim not found; run bash scripts/build.sh" >&2; exit 1; }
+jobs=${JOBS:-$(nproc)}
+[[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "scene_vs_tester.sh: JOBS='$jobs' is not a positive integer" >&2; exit 2; }
+root=output/reference-scene
+mkdir -p "$root"
+start=$(date +%s)
+
+run_one() { # <path: tester|scene> <kind> <seed>
+  local out="$root/$1-$2-$3" prm command
+  if [ "$1" = tester ]; then prm=cases/quick/$2.prm command=run; else prm=cases/reference/scene/quick-$2.prm command=scene-run; fi
+  sed -e "s|^subsection DEM|subsection DEM\n  set Seed = $3|" \
+      -e "s|set Directory = .*|set Directory = $out|" "$prm" > "$out.prm"
+  "$wearsim" $command --overwrite "$out.prm" > "$out.log" 2>&1
+}
+
+declare -A pid_of=()
+failed=()
+reap() {
+  local pid=$1 name=${pid_of[$1]}
+  if wait "$pid"; then
+    echo "scene vs tester: $name done ($(( $(date +%s) - start )) s)"
+  else
+    failed+=("$name ($root/$name.log)")
+  fi
+  unset "pid_of[$pid]"
+}
+for seed in "${seeds[@]}"; do
+  for kind in plain convex; do
+    for path in tester scene; do
+      while [ ${#pid_of[@]} -ge "$jobs" ]; do
+        wait -n -p done_pid "${!pid_of[@]}" || true
+        reap "$done_pid"
+      done
+      run_one "$path" "$kind" "$seed" &
+      pid_of[$!]="$path-$kind-$seed"
+    done
+  done
+done
+for pid in "${!pid_of[@]}"; do reap "$pid"; done
+if [ ${#failed[@]} -gt 0 ]; then
+  printf 'scene vs tester: failed: %s\n' "${failed[@]}" >&2
+  exit 1
+fi
+/usr/bin/python3 cases/reference/scene/compare_scene.py --seconds $(( $(date +%s) - start )) \
+  "$root" "${seeds[@]}"

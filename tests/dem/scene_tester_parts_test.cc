@@ -1,0 +1,164 @@
+// The wear tester's own sample and holder as scene walls (Source = sample, holder), and a
+// part standing submerged in a scene's fill: the sample lands where the tester's placement
+// says, with its labels, exact areas and volume; the holder's pocket is the sample's sides
+// and bottom; the fill leaves a submerged part's box and volume out.
+#include "dem/scene/scene_run.h"
+#include "dem/tester/wear_tester.h"
+#include "meshes/sample_frame.h"
+#include "scene_fixtures.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <map>
+
+using namespace wear::dem;
+namespace label = wear::meshes::label;
+
+namespace {
+
+/// The plain sample at 3 mm at 15 degrees, as cases/quick places it.
+wear::meshes::GeometryParameters quick_geometry() {
+  wear::meshes::GeometryParameters g;
+  g.sample.convex = false;
+  g.sample.mesh_size = 3e-3;
+  g.sample.mesh_size_bottom = 5e-3;
+  g.sample.curvature_refinement = false;
+  g.placement.angle_deg = 15;
+  return g;
+}
+
+SceneParameters sample_in_holder() {
+  SceneParameters s = scene_with_names({"sample, holder", "", ""});
+  s.walls[0].source = "sample";
+  s.walls[0].material = "sample";
+  s.walls[0].wears = true;
+  s.walls[1].source = "holder";
+  s.walls[1].material = "holder";
+  s.walls[1].mesh_size = 4e-3;
+  return s;
+}
+
+TesterDemParameters gravel() {
+  TesterDemParameters d;
+  d.psd = {{0.006}, {1.0}, 1.0};
+  d.particle = {1e7, 0.25, 2650};
+  d.particle_particle = {0.5, 0.5, 0.02};
+  d.particle_wall = {0.5, 0.5, 0.02};
+  d.n_threads = 1;
+  return d;
+}
+
+} // namespace
+
+TEST_CASE("scene walls: the tester's sample and holder stand where the tester puts them") {
+  const auto g = quick_geometry();
+  const auto walls = build_scene_walls(sample_in_holder(), g);
+  REQUIRE(walls.size() == 2);
+  const auto& sample = walls[0].surface;
+  const double W = g.sample.width, L = g.sample.length, T = g.sample.thickness;
+  REQUIRE(sample.surface_labels == std::vector<int>{label::bottom, label::side, label::base});
+  const auto area = wear::meshes::area_per_label(sample.mesh);
+  // Planar faces: the triangles tile them exactly (round-off only).
+  CHECK(area.at(label::base) == Approx(W * L).epsilon(1e-9));
+  CHECK(area.at(label::bottom) == Approx(W * L).epsilon(1e-9));
+  CHECK(area.at(label::side) == Approx(2 * (W + L) * T).epsilon(1e-9));
+  CHECK(sample.surface_areas[2] == Approx(W * L).epsilon(1e-9)); // OpenCASCADE's
+  CHECK(wear::meshes::enclosed_volume(sample.mesh) == Approx(W * L * T).epsilon(1e-9));
+  CHECK(sample.solid_volume == Approx(W * L * T).epsilon(1e-9));
+  // The wear face's centre (the base's area centroid, a rectangle's centre) at the placement's
+  // radius, polar angle and height: 0.395 m, 15 deg, 40 mm above the floor.
+  wear::meshes::Vec3 c;
+  const auto face = wear::meshes::face_areas(sample.mesh);
+  const auto centre = wear::meshes::face_centroids(sample.mesh);
+  for (std::size_t f = 0; f < sample.mesh.n_faces(); ++f)
+    if (sample.mesh.face_labels[f] == label::base)
+      c += face[f] * centre[f];
+  c = c * (1 / area.at(label::base));
+  CHECK(std::hypot(c.x, c.y) == Approx(0.395).epsilon(1e-9));
+  CHECK(std::atan2(c.y, c.x) * 180 / M_PI == Approx(15).epsilon(1e-9));
+  CHECK(c.z == Approx(0.040).epsilon(1e-9));
+  // Sides and bottom rest in the holder's pocket, named covered on both walls (one contact
+  // where the wear face meets the rim, as in the tester).
+  CHECK(walls[0].covered_labels == std::vector<int>{label::side, label::bottom});
+  CHECK(walls[1].covered_labels == std::vector<int>{label::pocket});
+  const auto holder_area = wear::meshes::area_per_label(walls[1].surface.mesh);
+  CHECK(holder_area.at(label::pocket) ==
+        Approx(area.at(label::side) + area.at(label::bottom)).epsilon(1e-9));
+  const wear::meshes::SampleFrame frame(g.sample, g.placement);
+  const auto& h = walls[1].surface.mesh;
+  for (std::size_t f = 0; f < h.n_faces(); ++f)
+    if (h.face_labels[f] == label::pocket)
+      for (auto v : h.triangles[f]) {
+        const auto q = frame.point_to_sample(h.vertices[v]);
+        REQUIRE(std::abs(q.x) <= W / 2 + 1e-12);
+        REQUIRE(std::abs(q.y) <= L / 2 + 1e-12);
+        REQUIRE(q.z >= -1e-12);
+        REQUIRE(q.z <= T + 1e-12);
+      }
+}
+
+TEST_CASE("scene walls: the tester's sample and holder refuse what they cannot be") {
+  const auto g = quick_geometry();
+  SceneParameters s = sample_in_holder();
+  s.walls[1].wears = true;
+  CHECK_THROWS_WITH(build_scene_walls(s, g),
+                    Catch::Contains("Scene/Wall holder/Wears: the holder is steel"));
+  s = sample_in_holder();
+  s.walls[0].clamped_surfaces = "1";
+  CHECK_THROWS_WITH(build_scene_walls(s, g), Catch::Contains("Scene/Wall sample: the tester's "
+                                                             "sample (Source = sample) brings "
+                                                             "its own roles"));
+  s = sample_in_holder();
+  s.walls[0].source = "box";
+  CHECK_THROWS_WITH(build_scene_walls(s, g),
+                    Catch::Contains("a wall with Source = holder needs the sample it holds"));
+  s = sample_in_holder();
+  s.domain_max = {0.3, 0.3, 0.3};
+  CHECK_THROWS_WITH(build_scene_walls(s, g),
+                    Catch::Contains("Scene/Wall sample (sample): the vertex") &&
+                        Catch::Contains("outside Scene/Domain"));
+}
+
+TEST_CASE("scene run: a part standing in the fill is left out of it, its volume off the count") {
+  // A closed 20 x 20 x 10 mm box standing in the bin, wholly inside the fill cylinder.
+  SceneParameters scene = testing::flat_bottomed_bin("bin, floor, block", 0.06, 0.3, 0.025, 0.05);
+  scene.walls[1].radius_inner = 0.002;
+  scene.walls[1].mesh_size = 0.006;
+  auto& block = scene.walls[2];
+  block.source = "box";
+  block.origin = {-0.01, -0.01, 0.003};
+  block.axis = {0.02, 0.02, 0.01};
+  block.mesh_size = 0.005;
+  scene.fill.region = "cylinder";
+  scene.fill.origin = {0, 0, 0.001};
+  scene.fill.axis = {0, 0, 0.2};
+  scene.fill.radius = 0.058;
+  scene.fill.count = 600;
+  SceneRun counted(scene, gravel(), build_scene_walls(scene));
+  counted.setup();
+  const auto& p = counted.system().particles;
+  REQUIRE(p.n_real == 600);
+  const double clear = 0.006; // the largest diameter around the block's box
+  for (std::size_t i = 0; i < p.n_real; ++i) {
+    const auto& x = p.position[i];
+    const bool near_block = std::abs(x.x) < 0.01 + clear && std::abs(x.y) < 0.01 + clear &&
+                            x.z > 0.003 - clear && x.z < 0.013 + clear;
+    REQUIRE_FALSE(near_block);
+  }
+  // To a bed height: the count of the bed without the block less the block's volume, at the
+  // assumed packing (TesterDemParameters::assumed_packing) in 6 mm spheres.
+  scene.fill.count = 0;
+  scene.fill.bed_height = 0.03;
+  SceneRun bed(scene, gravel(), build_scene_walls(scene));
+  bed.setup();
+  const double footprint = M_PI * 0.058 * 0.058, v = M_PI * std::pow(0.006, 3) / 6;
+  const double phi = gravel().assumed_packing;
+  const auto n = [&](double volume) { return std::size_t(phi * volume / v); };
+  CHECK(bed.system().particles.n_real == n(footprint * 0.03 - 0.02 * 0.02 * 0.01));
+  CHECK(n(footprint * 0.03) - bed.system().particles.n_real >= 10); // the block's share
+  // A block reaching through the fill's floor is cut by it: refused.
+  block.origin = {-0.01, -0.01, -0.002};
+  CHECK_THROWS_WITH(SceneRun(scene, gravel(), build_scene_walls(scene)),
+                    Catch::Contains("intersects wall 'block' (box)"));
+}
