@@ -163,7 +163,7 @@ void set_size_field(const meshes::SurfaceMesh& worn, const RemeshParameters& p) 
   }
   const int view = gmsh::view::add("chord size");
   gmsh::view::addListData(view, "ST", static_cast<int>(worn.n_faces()), data);
-  const int graded = meshes::set_sample_size_field(p.sizes);
+  const int graded = meshes::set_sample_size_field(p.sizes, p.up, p.up_offset);
   const int local = gmsh::model::mesh::field::add("PostView");
   gmsh::model::mesh::field::setNumber(local, "ViewTag", view);
   const int both = gmsh::model::mesh::field::add("Min");

@@ -15,6 +15,11 @@ struct RemeshParameters {
   /// Mesh sizes and grading of the new mesh (mesh_size, mesh_size_bottom, thickness,
   /// curvature_refinement are used), as for the unworn sample.
   meshes::SampleGeometry sizes;
+  /// The grading's up direction (unit) and the height of the bottom's plane along it [m]: the
+  /// height of x is dot(up, x) - up_offset (meshes::set_sample_size_field). The defaults are
+  /// the sample's own frame; a sample placed in a scene gives its frame's.
+  meshes::Vec3 up{0, 0, 1};
+  double up_offset = 0;
   /// Edges between faces whose normals differ by more than this are kept as sharp edges;
   /// label boundaries are always kept (the sample's true sharp edges are 90 deg box edges
   /// and label boundaries; 40 deg failed on worn element tips). If gmsh fails, the remesh

@@ -45,12 +45,17 @@ std::vector<ElementSite> element_sites(const SampleGeometry& s) {
   return sites;
 }
 
-int set_sample_size_field(const SampleGeometry& s) {
+int set_sample_size_field(const SampleGeometry& s, const Vec3& up, double up_offset) {
   const double t = s.thickness;
   const int field = gmsh::model::mesh::field::add("MathEval");
-  char expr[256];
-  std::snprintf(expr, sizeof(expr), "%.17g + %.17g * (Fabs(%.17g - z) + (%.17g - z))", s.mesh_size,
-                (s.mesh_size_bottom - s.mesh_size) / (2 * t), t, t);
+  char height[160], expr[512];
+  if (up.x == 0 && up.y == 0 && up.z == 1 && up_offset == 0)
+    std::snprintf(height, sizeof(height), "z");
+  else
+    std::snprintf(height, sizeof(height), "(0%+.17g * x %+.17g * y %+.17g * z %+.17g)", up.x, up.y,
+                  up.z, -up_offset); // explicit signs: MathEval reads no "- -"
+  std::snprintf(expr, sizeof(expr), "%.17g + %.17g * (Fabs(%.17g - %s) + (%.17g - %s))",
+                s.mesh_size, (s.mesh_size_bottom - s.mesh_size) / (2 * t), t, height, t, height);
   gmsh::model::mesh::field::setString(field, "F", expr);
   gmsh::model::mesh::field::setAsBackgroundMesh(field);
   gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);

@@ -29,10 +29,13 @@ struct GeneratedSample {
 };
 
 /// Sets the sample's mesh size on the current gmsh model: a field growing linearly from
-/// `mesh_size` at the wear face (z = thickness, and above) to `mesh_size_bottom` at z = 0,
-/// curvature refinement when asked, frontal-Delaunay surfaces and Delaunay volumes. Returns
-/// the tag of the field (the background field).
-int set_sample_size_field(const SampleGeometry& s);
+/// `mesh_size` at the wear face (height = thickness, and above) to `mesh_size_bottom` at
+/// height 0, curvature refinement when asked, frontal-Delaunay surfaces and Delaunay volumes.
+/// The height of a point x is dot(up, x) - up_offset: the sample frame's z by default, a
+/// placed sample's own z with its up direction (unit) and the height of its bottom's plane.
+/// Returns the tag of the field (the background field).
+int set_sample_size_field(const SampleGeometry& s, const Vec3& up = {0, 0, 1},
+                          double up_offset = 0);
 
 /// Builds the sample; when msh_path is not empty, writes the mesh (gmsh 4.1 format) there
 /// atomically, with physical groups: volume 1 "sample", surfaces by label id and name.

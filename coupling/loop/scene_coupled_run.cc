@@ -2,7 +2,8 @@
 //
 // Set-up: the scene's walls are built (dem/scene/scene_walls.h), the wearing wall's CAD
 // surfaces labelled by role (S<n> wearing, S<n>-free, S<n>-clamped); gmsh meshes the volume
-// they enclose into tetrahedra (fem::remesh_sample, uniform size = the wall's Mesh size) and
+// they enclose into tetrahedra (fem::remesh_sample, uniform size = the wall's Mesh size; the
+// tester's sample (Source = sample) at its own graded sizes, its labels and roles kept) and
 // the DEM wall takes that mesh's boundary, so DEM faces and FEM boundary faces are the same
 // triangles and every per-face field crosses without interpolation.
 // One stage (scheme "staged"), in the part's own frame (a moving part's body frame):
@@ -28,6 +29,7 @@
 #include "coupling/output/progress_line.h"
 #include "fem/remesher.h"
 #include "meshes/atomic_file.h"
+#include "meshes/sample_frame.h"
 #include "meshes/stopwatch.h"
 
 #include <algorithm>
@@ -59,17 +61,24 @@ std::size_t wearing_wall(const dem::SceneParameters& scene) {
 }
 
 /// The part's remeshing and mesh sizes: the wall's Mesh size everywhere (equal top and
-/// bottom sizes make the sample's graded size field uniform, whatever its thickness); the
-/// tester's sample takes its wear-face size (Geometry/Sample/Mesh size) everywhere, since the
-/// grading is defined in the sample's own frame.
+/// bottom sizes make the sample's graded size field uniform, whatever its thickness). The
+/// tester's sample keeps its own sizes and grading (Geometry/Sample), measured along its up
+/// direction from its bottom's plane where Geometry/Placement puts it.
 fem::WornSampleParameters part_parameters(const CaseParameters& p,
                                           const dem::SceneWallParameters& wall) {
-  const double mesh_size = wall.source == "sample" ? p.geometry.sample.mesh_size : wall.mesh_size;
+  const std::string dir = p.output.directory + "/mesh";
+  if (wall.source == "sample") {
+    fem::WornSampleParameters w = fem::worn_sample_parameters(p.fem, p.geometry.sample, dir);
+    const meshes::SampleFrame frame(p.geometry.sample, p.geometry.placement);
+    w.remesh.up = frame.vector_to_tester({0, 0, 1});
+    w.remesh.up_offset = meshes::dot(w.remesh.up, frame.point_to_tester({0, 0, 0}));
+    return w;
+  }
   meshes::SampleGeometry sizes;
-  sizes.mesh_size = sizes.mesh_size_bottom = mesh_size;
-  sizes.thickness = mesh_size;
+  sizes.mesh_size = sizes.mesh_size_bottom = wall.mesh_size;
+  sizes.thickness = wall.mesh_size;
   sizes.curvature_refinement = false;
-  return fem::worn_sample_parameters(p.fem, sizes, p.output.directory + "/mesh");
+  return fem::worn_sample_parameters(p.fem, sizes, dir);
 }
 
 const char* part_wear_header =

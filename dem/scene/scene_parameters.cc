@@ -245,6 +245,11 @@ void validate(const SceneParameters& s) {
     if (!(s.fill.mesh_size > 0))
       throw std::invalid_argument("Scene/Fill/Mesh size must be positive [m]");
   }
+  for (const auto& name : scene_names(s.fill.clear_above, "Scene/Fill/Clear above"))
+    if (std::none_of(s.walls.begin(), s.walls.end(),
+                     [&](const SceneWallParameters& w) { return w.name == name; }))
+      throw std::invalid_argument("Scene/Fill/Clear above: '" + name +
+                                  "' is not a wall of Scene/Walls");
   if (s.fill.region != "none" && s.fill.count == 0 && !(s.fill.bed_height > 0))
     throw std::invalid_argument("Scene/Fill: give a Count or a positive Bed height [m]");
   if (s.fields.cells.size() != 3)

@@ -84,6 +84,7 @@ struct SceneFillParameters {
   double mesh_size = 5e-3;              ///< [m] triangles of a CAD file
   std::uint64_t count = 0;              ///< particles; 0: fill to Bed height
   double bed_height = 0;                ///< [m] above the box's floor, settled
+  std::string clear_above;              ///< walls in the region with no particle placed above
 };
 
 /// A grid of boxes on which the run bins the particles' solid fraction and velocity.
@@ -194,6 +195,11 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
          "packing over the region's footprint, placed loosely above and settled under gravity "
          "before the run starts. A bed that spreads wider than the region (a container larger "
          "than it) settles lower.");
+  v.text("Clear above", s.fill.clear_above,
+         "Walls standing in the region (names, comma-separated) above which no particle is "
+         "placed: a plate submerged in the bed, such as a leveller, would otherwise carry "
+         "the particles dropped on it through the run. The column over the wall's bounding "
+         "box, widened by a largest diameter, stays empty while the bed is placed.");
   v.leave();
   v.enter("Fields");
   v.int_list("Cells", s.fields.cells,

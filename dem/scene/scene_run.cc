@@ -30,6 +30,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -67,6 +68,8 @@ struct SceneFillShape {
   /// [m] bounding boxes of the walls wholly inside the region (submerged, like a sample in a
   /// bed): no centre is placed within a largest diameter of them
   std::vector<meshes::BoundingBox> submerged;
+  /// [m] bounding boxes of the submerged walls of Fill/Clear above: no centre above them
+  std::vector<meshes::BoundingBox> cleared_above;
   double clearance = 0;        ///< [m] that diameter
   double submerged_volume = 0; ///< [m^3] the closed submerged walls' volume below the bed top
   std::string describe() const {
@@ -96,10 +99,16 @@ struct SceneFillShape {
     FillRegion r = outline(margin, z_top);
     if (submerged.empty())
       return r;
-    r.inside = [in = r.inside, boxes = submerged, c = clearance](const Vec3& x) {
+    r.inside = [in = r.inside, boxes = submerged, above = cleared_above,
+                c = clearance](const Vec3& x) {
+      const auto beside = [&](const meshes::BoundingBox& b) {
+        return x.x > b.min.x - c && x.x < b.max.x + c && x.y > b.min.y - c && x.y < b.max.y + c;
+      };
       for (const auto& b : boxes)
-        if (x.x > b.min.x - c && x.x < b.max.x + c && x.y > b.min.y - c && x.y < b.max.y + c &&
-            x.z > b.min.z - c && x.z < b.max.z + c)
+        if (beside(b) && x.z > b.min.z - c && x.z < b.max.z + c)
+          return false;
+      for (const auto& b : above)
+        if (beside(b) && x.z > b.min.z - c)
           return false;
       return in(x);
     };
@@ -200,19 +209,27 @@ namespace {
 /// unless the whole wall lies inside the region: then it is submerged (a part standing in the
 /// bed), recorded in `shape` and left out of the fill.
 void require_clear_of_walls(const std::vector<SceneWall>& walls, SceneFillShape& shape,
-                            double bed_top) {
+                            double bed_top, const std::string& clear_above_names) {
+  const auto names = scene_names(clear_above_names, "Scene/Fill/Clear above");
+  const std::set<std::string> clear_above(names.begin(), names.end());
   for (const auto& w : walls) {
     const auto& m = w.surface.mesh;
     if (!m.vertices.empty() && std::all_of(m.vertices.begin(), m.vertices.end(),
                                            [&](const Vec3& x) { return shape.contains(x); })) {
       const meshes::BoundingBox box = meshes::bounding_box(m);
       shape.submerged.push_back(box);
+      if (clear_above.count(w.parameters.name))
+        shape.cleared_above.push_back(box);
       if (meshes::check_closed(m).closed() && box.max.z > box.min.z)
         shape.submerged_volume +=
             std::fabs(meshes::enclosed_volume(m)) *
             std::clamp((bed_top - box.min.z) / (box.max.z - box.min.z), 0.0, 1.0);
       continue;
     }
+    if (clear_above.count(w.parameters.name))
+      throw std::invalid_argument("Scene/Fill/Clear above: wall '" + w.parameters.name +
+                                  "' does not stand wholly inside " + shape.describe() +
+                                  " (only a submerged wall can be kept clear above)");
     for (std::size_t f = 0; f < m.n_faces(); ++f) {
       const auto& t = m.triangles[f];
       const Vec3 a = m.vertices[t[0]], b = m.vertices[t[1]], c = m.vertices[t[2]];
@@ -291,7 +308,8 @@ SceneRun::SceneRun(const SceneParameters& scene, const TesterDemParameters& dem,
     built->clearance = dem_.psd.max_diameter();
     require_clear_of_walls(walls_, *built,
                            built->floor_z +
-                               (scene_.fill.count == 0 ? scene_.fill.bed_height : built->full_top));
+                               (scene_.fill.count == 0 ? scene_.fill.bed_height : built->full_top),
+                           scene_.fill.clear_above);
     fill_shape_ = built;
     const SceneFillShape& shape = *fill_shape_;
     if (shape.hi.z > shape.full_top + 1e-12)

@@ -162,3 +162,43 @@ TEST_CASE("scene run: a part standing in the fill is left out of it, its volume 
   CHECK_THROWS_WITH(SceneRun(scene, gravel(), build_scene_walls(scene)),
                     Catch::Contains("intersects wall 'block' (box)"));
 }
+
+TEST_CASE("scene run: no particle is placed over a plate named in Fill/Clear above") {
+  SceneParameters scene = testing::flat_bottomed_bin("bin, floor, plate", 0.06, 0.3, 0.025, 0.05);
+  scene.walls[1].radius_inner = 0.002;
+  scene.walls[1].mesh_size = 0.006;
+  auto& plate = scene.walls[2];
+  plate.source = "plane";
+  plate.origin = {-0.01, -0.01, 0.05};
+  plate.edge_u = {0.02, 0, 0};
+  plate.edge_v = {0, 0.02, 0};
+  plate.mesh_size = 0.005;
+  scene.fill.region = "cylinder";
+  scene.fill.origin = {0, 0, 0.001};
+  scene.fill.axis = {0, 0, 0.2};
+  scene.fill.radius = 0.058;
+  scene.fill.count = 600;
+  const auto over_plate = [](const SceneRun& run) {
+    const auto& p = run.system().particles;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < p.n_real; ++i) {
+      const auto& x = p.position[i];
+      n += std::abs(x.x) < 0.016 && std::abs(x.y) < 0.016 && x.z > 0.044;
+    }
+    return n;
+  };
+  SceneRun loaded(scene, gravel(), build_scene_walls(scene));
+  loaded.setup();
+  CHECK(over_plate(loaded) > 0); // the plate alone keeps only its own slab clear
+  scene.fill.clear_above = "plate";
+  SceneRun cleared(scene, gravel(), build_scene_walls(scene));
+  cleared.setup();
+  REQUIRE(cleared.system().particles.n_real == 600);
+  CHECK(over_plate(cleared) == 0);
+  scene.fill.clear_above = "bin";
+  CHECK_THROWS_WITH(SceneRun(scene, gravel(), build_scene_walls(scene)),
+                    Catch::Contains("Scene/Fill/Clear above: wall 'bin' does not stand wholly"));
+  scene.fill.clear_above = "lid";
+  CHECK_THROWS_WITH(validate(scene),
+                    Catch::Contains("Scene/Fill/Clear above: 'lid' is not a wall"));
+}

@@ -9,6 +9,7 @@
 #include "fem/sample_triangulation.h"
 #include "fem/worn_sample.h"
 #include "meshes/mesh_quality.h"
+#include "meshes/sample_frame.h"
 #include "meshes/sample_generator.h"
 
 #include <catch2/catch.hpp>
@@ -426,4 +427,40 @@ TEST_CASE("a wear increment smaller than what the surface relaxation alone remov
   CHECK(lost == Approx(asked).epsilon(0).margin(1e-9));
   CHECK(r.quality.n_inverted == 0);
   CHECK(wear::meshes::surface_quality(sample.surface()).valid());
+}
+
+TEST_CASE("a placed sample is remeshed with the grading of its own frame", "[fem][remesh]") {
+  // The plain sample, graded from 2 mm at the wear face to 6 mm at the bottom, remeshed in its
+  // own frame and placed in the tester (15 deg polar angle, 2 deg incline: a scene's part,
+  // Source = sample) with the grading along the placed sample's up direction: the size
+  // field is the same function of the material point, so both meshes are alike: their
+  // tetrahedra counts agree within 10 % (gmsh's Delaunay is not invariant under rotation), and
+  // both differ from a uniform 2 mm mesh, which needs about three times as many.
+  wear::meshes::SampleGeometry s;
+  s.convex = false;
+  s.mesh_size = 2e-3;
+  s.mesh_size_bottom = 6e-3;
+  s.curvature_refinement = false;
+  s.volume_mesh = false;
+  wear::meshes::SamplePlacement placement;
+  placement.angle_deg = 15;
+  const auto own = wear::meshes::generate_sample(s).surface;
+  const wear::meshes::SampleFrame frame(s, placement);
+  RemeshParameters p;
+  p.sizes = s;
+  RemeshReport in_own, placed, uniform;
+  remesh_sample(own, p, "graded_own.msh", &in_own);
+  p.up = frame.vector_to_tester({0, 0, 1});
+  p.up_offset = wear::meshes::dot(p.up, frame.point_to_tester({0, 0, 0}));
+  remesh_sample(frame.place_in_tester(own), p, "graded_placed.msh", &placed);
+  p.up = {0, 0, 1};
+  p.up_offset = 0;
+  remesh_sample(frame.place_in_tester(own), p, "graded_unaligned.msh", &uniform);
+  INFO(in_own.n_tetrahedra << " own, " << placed.n_tetrahedra << " placed, " << uniform.n_tetrahedra
+                           << " with the grading in the wrong frame");
+  CHECK(double(placed.n_tetrahedra) == Approx(double(in_own.n_tetrahedra)).epsilon(0.10));
+  // In the tester frame the sample's z lies at 28 to 48 mm, above its own thickness: the
+  // unaligned field is the wear-face size everywhere.
+  CHECK(double(uniform.n_tetrahedra) > 1.5 * double(in_own.n_tetrahedra));
+  CHECK(placed.volume_after == Approx(s.width * s.length * s.thickness).epsilon(1e-9));
 }

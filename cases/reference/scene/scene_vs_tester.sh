@@ -8,7 +8,8 @@
 #
 # usage: bash cases/reference/scene/scene_vs_tester.sh [seed ...]
 #        (default seeds 1 2 3: about 8 min on 2 cores; JOBS=<n> sets the runs at once;
-#         WEARSIM=<path> the binary, default build/wearsim)
+#         WEARSIM=<path> the binary, default build/wearsim; OUTPUT=<folder> the runs' folder,
+#         default output/reference-scene)
 set -euo pipefail
 cd "$(dirname "$0")/../../.."
 seeds=()
@@ -21,7 +22,7 @@ wearsim=${WEARSIM:-build/wearsim}
 [ -x "$wearsim" ] || { echo "scene_vs_tester.sh: $wearsim not found; run bash scripts/build.sh" >&2; exit 1; }
 jobs=${JOBS:-$(nproc)}
 [[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "scene_vs_tester.sh: JOBS='$jobs' is not a positive integer" >&2; exit 2; }
-root=output/reference-scene
+root=${OUTPUT:-output/reference-scene}
 mkdir -p "$root"
 start=$(date +%s)
 
