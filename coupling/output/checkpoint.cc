@@ -377,7 +377,10 @@ void write_scene(Hdf5File& h5, const SceneCheckpoint& s) {
     const auto& f = s.flux_planes[k];
     const std::string g = "/scene/flux_plane_" + std::to_string(k);
     h5.write(g + "/ids", f.ids, {f.ids.size()});
-    h5.write(g + "/ahead", f.ahead, {f.ahead.size()});
+    std::vector<double> last;
+    for (const auto& x : f.last)
+      last.insert(last.end(), {x.x, x.y, x.z});
+    h5.write(g + "/last", last, {f.last.size(), 3});
     write_doubles(h5, g + "/counts", {f.net_mass, double(f.n_forward), double(f.n_backward)});
   }
 }
@@ -412,9 +415,11 @@ SceneCheckpoint read_scene(const Hdf5Reader& h5) {
     const std::string g = "/scene/flux_plane_" + std::to_string(k);
     dem::FluxPlaneState f;
     f.ids = h5.int64s(g + "/ids");
-    f.ahead = h5.ints(g + "/ahead");
+    const auto last = h5.doubles(g + "/last");
+    for (std::size_t q = 0; q + 2 < last.size(); q += 3)
+      f.last.push_back({last[q], last[q + 1], last[q + 2]});
     const auto c = h5.doubles(g + "/counts");
-    if (c.size() != 3 || f.ids.size() != f.ahead.size())
+    if (c.size() != 3 || f.ids.size() != f.last.size() || last.size() != 3 * f.last.size())
       throw std::runtime_error("'" + g + "' does not hold a flux plane's state");
     f.net_mass = c[0], f.n_forward = std::uint64_t(c[1]), f.n_backward = std::uint64_t(c[2]);
     s.flux_planes.push_back(f);

@@ -83,11 +83,28 @@ void System::setup() {
     cos_t_ = std::cos(a);
     sin_t_ = std::sin(a);
   }
+  if (settings.periodic_slab.enabled) {
+    const auto& sl = settings.periodic_slab;
+    if (settings.periodic.enabled)
+      throw std::invalid_argument("DEM: a periodic slab and a periodic sector exclude each other");
+    if (sl.axis < 0 || sl.axis > 2)
+      throw std::invalid_argument("DEM: the periodic slab's axis must be 0, 1 or 2 (x, y, z)");
+    // Each particle has at most one image: the period holds more than twice the ghosts' reach.
+    const double reach = 2 * r_max_ + skin_;
+    if (!(sl.hi - sl.lo > 2 * reach))
+      throw std::invalid_argument("DEM: the periodic slab's period " +
+                                  std::to_string(sl.hi - sl.lo) +
+                                  " m must exceed twice the ghosts' reach (two largest diameters "
+                                  "and the skin, " +
+                                  std::to_string(2 * reach) + " m)");
+    shift_ = {0, 0, 0};
+    shift_[sl.axis] = sl.hi - sl.lo;
+  }
   for (auto& w : walls_)
     w.build_grid(r_max_ + skin_);
-  if (settings.periodic.enabled && has_moving_walls())
+  if (periodic() && has_moving_walls())
     throw std::invalid_argument(
-        "DEM: walls with a rigid motion cannot be combined with a periodic sector");
+        "DEM: walls with a rigid motion cannot be combined with a periodic boundary");
   next_id_ = first_free_id(p.id.data(), p.n_real);
   set_n_threads(omp_get_max_threads());
   set_up_ = true;

@@ -23,6 +23,15 @@ struct PeriodicSector {
   double angle = 0; ///< [rad]
 };
 
+/// Planar periodic boundary: the slab lo <= x_axis < hi along one coordinate axis. A particle
+/// leaving through one plane re-enters through the other, its position shifted by the period
+/// L = hi - lo (velocity and spin unchanged); pairs across the planes see ghost images.
+struct PeriodicSlab {
+  bool enabled = false;
+  int axis = 0;          ///< 0, 1, 2: x, y, z
+  double lo = 0, hi = 0; ///< [m] the planes
+};
+
 struct DemSettings {
   Vec3 gravity{0, 0, -9.81};       ///< [m/s^2]
   double time_step = 0;            ///< [s]; 0: time_step_fraction x Rayleigh time
@@ -36,6 +45,7 @@ struct DemSettings {
   double start_time = 0; ///< [s] the clock at setup
   meshes::BoundingBox domain{{-1e3, -1e3, -1e3}, {1e3, 1e3, 1e3}}; ///< [m] leaving it is an error
   PeriodicSector periodic;
+  PeriodicSlab periodic_slab; ///< excludes `periodic`
 };
 
 /// Values a wearing wall's window accumulator holds per face (and for the totals after the
@@ -326,8 +336,12 @@ private:
   bool set_up_ = false;
   int n_threads_ = 1;
 
-  // Periodic sector.
+  // Periodic boundary, a map from beyond the low boundary into the domain: points x -> R x +
+  // shift, vectors v -> R v; R the rotation about z by the sector angle (cos_t_, sin_t_; the
+  // identity for a slab), shift the slab's period along its axis (zero for a sector).
   double cos_t_ = 1, sin_t_ = 0;
+  Vec3 shift_{0, 0, 0};
+  bool periodic() const { return settings.periodic.enabled || settings.periodic_slab.enabled; }
   std::vector<std::uint32_t> ghost_owner_;
 
   // Pairs: tangential history per listed pair.

@@ -7,6 +7,11 @@
 // list candidate wall faces per particle and carry the wall-contact slots over; split the
 // force evaluation between the threads.
 //
+// A periodic slab (DemSettings::periodic_slab) is the same with a shift for the rotation:
+// particles are wrapped by +-L along its axis, ghosts are the images shifted by -L of the
+// particles within reach of the upper plane, and vectors (velocities, forces, histories) are
+// not turned (the rotation is the identity, cos_t_ = 1, sin_t_ = 0).
+//
 // Histories across the cut: a pair's history is stored relative to the frame in which the
 // particle with the lower stable id sits at its real position ("canonical frame"). A pair
 // computed with a ghost of that particle lives in a frame rotated by -angle, so its history
@@ -56,6 +61,16 @@ inline signed char sector_wrap(const Vec3& x, double angle) {
   return 0;
 }
 
+/// The wrap that brings x back into the slab lo <= x_axis < hi: +1 (shift by +L) below it, -1
+/// (by -L) at or above hi, 0 inside.
+inline signed char slab_wrap(const Vec3& x, const PeriodicSlab& slab) {
+  if (x[slab.axis] < slab.lo)
+    return +1;
+  if (x[slab.axis] >= slab.hi)
+    return -1;
+  return 0;
+}
+
 /// Near-wall particles cluster (the floor's are all at the start of the spatial order), so
 /// the wall-candidate scan goes in chunks of this many particles handed out dynamically.
 constexpr std::size_t wall_scan_chunk = 512;
@@ -81,7 +96,7 @@ void System::rebuild(bool in_step, const ParticleChanges* changes) {
   // reordering, inserted and removed particles and the new lists keep them.
   std::vector<CarriedHistory> old = canonical_pair_histories();
   std::vector<std::int32_t> slots_of_id = wall_slots_by_id();
-  if (settings.periodic.enabled)
+  if (periodic())
     wrap_into_sector(in_step, slots_of_id, old);
   if (changes) {
     apply_particle_changes(*changes);
@@ -153,13 +168,15 @@ void System::wrap_into_sector(bool in_step, const std::vector<std::int32_t>& slo
   auto& p = particles;
   const std::size_t n = p.n_real;
   const double c = cos_t_, s = sin_t_, angle = settings.periodic.angle;
+  const PeriodicSlab& slab = settings.periodic_slab;
   std::vector<signed char> wrap(n, 0);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
-    const signed char w = sector_wrap(p.position[i], angle);
+    const signed char w =
+        slab.enabled ? slab_wrap(p.position[i], slab) : sector_wrap(p.position[i], angle);
     if (w != 0) {
       const double cs = c, sn = w > 0 ? s : -s;
-      p.position[i] = rotate_z(p.position[i], cs, sn);
+      p.position[i] = rotate_z(p.position[i], cs, sn) + (w > 0 ? shift_ : -shift_);
       p.velocity[i] = rotate_z(p.velocity[i], cs, sn);
       p.angular_velocity[i] = rotate_z(p.angular_velocity[i], cs, sn);
       // Forces too, between steps: they are used for the next half-kick as stored (within a
@@ -202,7 +219,13 @@ void System::make_ghosts() {
   const std::size_t n = p.n_real;
   const double c = cos_t_, s = sin_t_;
   ghost_owner_.clear();
-  if (settings.periodic.enabled) {
+  const PeriodicSlab& slab = settings.periodic_slab;
+  if (slab.enabled) {
+    const double reach = 2 * r_max_ + skin_;
+    for (std::uint32_t i = 0; i < n; ++i)
+      if (slab.hi - p.position[i][slab.axis] < reach) // near the upper plane
+        ghost_owner_.push_back(i);
+  } else if (settings.periodic.enabled) {
     const double reach = 2 * r_max_ + skin_;
     for (std::uint32_t i = 0; i < n; ++i) {
       const Vec3& x = p.position[i];
@@ -372,7 +395,7 @@ void System::refresh_ghosts() {
   const double c = cos_t_, s = -sin_t_; // ghosts are rotated by -angle
   for (std::size_t g = 0; g < ghost_owner_.size(); ++g) {
     const auto o = ghost_owner_[g];
-    p.position[n + g] = rotate_z(p.position[o], c, s);
+    p.position[n + g] = rotate_z(p.position[o], c, s) - shift_;
     packed_position_[n + g] = {p.position[n + g].x, p.position[n + g].y, p.position[n + g].z,
                                p.radius[n + g]};
     p.velocity[n + g] = rotate_z(p.velocity[o], c, s);

@@ -1,9 +1,12 @@
 #pragma once
 // The mass that crosses a plane of a scene (a chute's cross-section, below a hopper's
-// orifice), counted from the side each particle is on at successive samples.
+// orifice), counted from the side each particle is on at successive samples; in a periodic
+// scene from the image of its position nearest the last sample's, so a particle wrapped
+// through a periodic plane does not count as crossing.
 #include "dem/engine/particles.h"
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -15,8 +18,12 @@ struct FluxPlaneState {
   double net_mass = 0; ///< [kg]
   std::uint64_t n_forward = 0, n_backward = 0;
   std::vector<std::int64_t> ids; ///< particles sampled, ascending
-  std::vector<int> ahead;        ///< 1: on the forward side at the last sample
+  std::vector<Vec3> last;        ///< [m] their positions at the last sample
 };
+
+/// The periodic image of `current` [m] nearest `previous` [m] (a periodic scene's); the
+/// identity without a periodic boundary.
+using NearestImage = std::function<Vec3(const Vec3& previous, const Vec3& current)>;
 
 class FluxPlane {
 public:
@@ -25,8 +32,9 @@ public:
   FluxPlane(std::string name, const Vec3& point, const Vec3& normal);
   const std::string& name() const { return name_; }
   /// Books the real particles of p that changed side since their last sample: + their mass
-  /// forwards, - backwards. A particle's first sample only records its side.
-  void sample(const Particles& p);
+  /// forwards, - backwards. A particle's first sample only records its position. With
+  /// `nearest_image`, a particle's side now is that of its image nearest its last position.
+  void sample(const Particles& p, const NearestImage& nearest_image = {});
   double net_mass() const { return net_mass_; } ///< [kg] forwards minus backwards so far
   std::uint64_t n_forward() const { return n_forward_; }
   std::uint64_t n_backward() const { return n_backward_; }
@@ -36,7 +44,7 @@ public:
 private:
   std::string name_;
   Vec3 point_, normal_;
-  std::unordered_map<std::int64_t, bool> ahead_; ///< by stable id: on the forward side
+  std::unordered_map<std::int64_t, Vec3> last_; ///< [m] by stable id: at the last sample
   double net_mass_ = 0;
   std::uint64_t n_forward_ = 0, n_backward_ = 0;
 };

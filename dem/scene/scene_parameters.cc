@@ -118,6 +118,10 @@ WallMotion surface_motion(const SceneWallParameters& w) {
   return m;
 }
 
+int periodic_axis(const SceneParameters& s) {
+  return s.periodic_direction == "x" ? 0 : s.periodic_direction == "y" ? 1 : 2;
+}
+
 bool moves_rigidly(const SceneWallParameters& w) {
   return w.motion == "rotation" || w.motion == "translation" || w.motion == "oscillation";
 }
@@ -183,6 +187,28 @@ void validate(const SceneParameters& s) {
   if (!(s.periodic_angle_deg >= 0 && s.periodic_angle_deg < 360))
     throw std::invalid_argument("Scene/Periodic sector must lie in [0, 360) degrees, got " +
                                 std::to_string(s.periodic_angle_deg));
+  if (s.periodic_direction != "none") {
+    if (s.periodic_angle_deg > 0)
+      throw std::invalid_argument("Scene/Periodic direction: a planar periodic boundary and "
+                                  "Scene/Periodic sector exclude each other");
+    const int axis = periodic_axis(s);
+    if (!(s.periodic_from < s.periodic_to))
+      throw std::invalid_argument("Scene/Periodic from must lie below Scene/Periodic to");
+    if (s.periodic_from <= s.domain_min[axis] || s.periodic_to >= s.domain_max[axis])
+      throw std::invalid_argument("Scene/Periodic from and to must lie inside Scene/Domain "
+                                  "along " +
+                                  s.periodic_direction +
+                                  " (particles cross the planes by up to half a skin before "
+                                  "they are wrapped)");
+    for (const auto& w : s.walls)
+      if (moves_rigidly(w))
+        throw std::invalid_argument(scene_wall_path(w) +
+                                    "/Motion: a wall that moves as a rigid "
+                                    "body (" +
+                                    w.motion +
+                                    ") cannot be part of a periodic scene (Scene/Periodic "
+                                    "direction); give it a surface motion or none");
+  }
   for (const auto& w : s.walls)
     if (s.periodic_angle_deg > 0 && moves_rigidly(w))
       throw std::invalid_argument(scene_wall_path(w) +

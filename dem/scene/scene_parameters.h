@@ -115,6 +115,10 @@ struct SceneParameters {
   double stage_duration = 0;
   /// [deg] the scene is the sector 0 <= theta < angle about the z axis, periodic (0: none)
   double periodic_angle_deg = 0;
+  /// the scene is periodic along this axis between periodic_from and periodic_to (none: not)
+  std::string periodic_direction = "none"; ///< none | x | y | z
+  double periodic_from = 0;                ///< [m]
+  double periodic_to = 0;                  ///< [m]
 };
 
 /// The names a case file gives to its scene's walls, inlets and outlets: they decide which
@@ -159,6 +163,15 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
          "origin, its two planes joined periodically (a particle leaving one enters through "
          "the other, rotated); 0: no periodic boundary. Walls may move only by surface "
          "motions then; the fill and the inlets must lie inside the sector.");
+  v.selection("Periodic direction", s.periodic_direction, "none|x|y|z",
+              "A planar periodic boundary: the scene is the slab Periodic from <= coordinate < "
+              "Periodic to along this axis, its two planes joined (a particle leaving one enters "
+              "through the other, shifted by the period; a slice of a wide chute or an endless "
+              "belt). One axis; excludes Periodic sector. Walls may move only by surface motions "
+              "then, and should reach past both planes by a few particle diameters; the fill "
+              "and the inlets must lie inside the slab.");
+  v.real("Periodic from", s.periodic_from, "[m] The slab's lower plane.");
+  v.real("Periodic to", s.periodic_to, "[m] The slab's upper plane.");
   v.real("Stage duration", s.stage_duration,
          "[s] Simulated DEM time of each stage of the wear loop when a wall wears (the FEM "
          "part): the stages and their schemes are Coupling/Schedule's (staged, dem-only), "
@@ -325,6 +338,8 @@ std::vector<int> surface_numbers(const std::string& text, const std::string& wha
 /// The wall's surface motion for the engine (MeshWall's WallMotion): the surface velocity of
 /// a 'surface rotation' or 'surface translation', zero otherwise.
 WallMotion surface_motion(const SceneWallParameters& w);
+/// The axis of Scene/Periodic direction: 0, 1, 2 for x, y, z (meaningless for none).
+int periodic_axis(const SceneParameters& s);
 /// True for the motions that move the wall's geometry (rotation, translation, oscillation).
 bool moves_rigidly(const SceneWallParameters& w);
 

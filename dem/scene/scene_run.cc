@@ -295,6 +295,50 @@ void require_in_sector(const Vec3& lo, const Vec3& hi, double angle, const std::
   }
 }
 
+/// Throws naming `what` when the box [lo, hi] reaches outside the scene's periodic slab (none:
+/// nothing to check).
+void require_in_slab(const SceneParameters& s, const Vec3& lo, const Vec3& hi,
+                     const std::string& what) {
+  if (s.periodic_direction == "none")
+    return;
+  const int a = periodic_axis(s);
+  if (lo[a] < s.periodic_from || hi[a] > s.periodic_to)
+    throw std::invalid_argument(what + " reaches outside the periodic slab " +
+                                std::to_string(s.periodic_from) + " <= " + s.periodic_direction +
+                                " < " + std::to_string(s.periodic_to) +
+                                " m (Scene/Periodic from, to): it spans " + std::to_string(lo[a]) +
+                                " .. " + std::to_string(hi[a]) + " m");
+}
+
+/// The periodic image of a position nearest an earlier one: shifted by whole periods along a
+/// slab's axis, or turned by the sector angle (at most once: a particle moves far less than a
+/// sector between two samples); none without a periodic boundary.
+NearestImage nearest_image(const SceneParameters& s) {
+  if (s.periodic_direction != "none") {
+    const int a = periodic_axis(s);
+    const double L = s.periodic_to - s.periodic_from;
+    return [a, L](const Vec3& previous, const Vec3& current) {
+      Vec3 x = current;
+      x[a] += L * std::round((previous[a] - current[a]) / L);
+      return x;
+    };
+  }
+  if (s.periodic_angle_deg > 0) {
+    const double angle = s.periodic_angle_deg * pi / 180;
+    return [angle](const Vec3& previous, const Vec3& current) {
+      Vec3 best = current;
+      for (const double turn : {angle, -angle}) {
+        const double c = std::cos(turn), sn = std::sin(turn);
+        const Vec3 x{c * current.x - sn * current.y, sn * current.x + c * current.y, current.z};
+        if (meshes::norm2(x - previous) < meshes::norm2(best - previous))
+          best = x;
+      }
+      return best;
+    };
+  }
+  return {};
+}
+
 } // namespace
 
 SceneRun::SceneRun(const SceneParameters& scene, const TesterDemParameters& dem,
@@ -322,6 +366,7 @@ SceneRun::SceneRun(const SceneParameters& scene, const TesterDemParameters& dem,
     if (scene_.periodic_angle_deg > 0 && shape.sector == 0)
       require_in_sector(shape.lo, shape.hi, scene_.periodic_angle_deg * pi / 180,
                         "Scene/Fill: " + shape.describe());
+    require_in_slab(scene_, shape.lo, shape.hi, "Scene/Fill: " + shape.describe());
   }
   // Materials first: the inlets need the particle material's index.
   add_materials_and_walls();
@@ -344,7 +389,7 @@ SceneRun::SceneRun(const SceneParameters& scene, const TesterDemParameters& dem,
     spec.seed = dem_.seed + 1000003 * (k + 1); // one stream per inlet, apart from the fill's
     inlets_.emplace_back(spec);
     require_clear_of_walls(walls_, inlets_.back(), 0.25 * dem_.psd.min_diameter());
-    if (scene_.periodic_angle_deg > 0) {
+    if (scene_.periodic_angle_deg > 0 || scene_.periodic_direction != "none") {
       const Vec3 up = inlets_.back().normal() * -inlets_.back().depth();
       Vec3 lo = spec.corner, hi = spec.corner;
       for (const Vec3& x : {spec.corner + spec.edge_u, spec.corner + spec.edge_v,
@@ -357,6 +402,7 @@ SceneRun::SceneRun(const SceneParameters& scene, const TesterDemParameters& dem,
         }
       require_in_sector(lo, hi, scene_.periodic_angle_deg * pi / 180,
                         "Scene/Inlet " + in.name + ": its insertion box");
+      require_in_slab(scene_, lo, hi, "Scene/Inlet " + in.name + ": its insertion box");
     }
     exchange_ = std::min(exchange_, inlets_.back().interval());
   }
@@ -403,6 +449,8 @@ void SceneRun::add_materials_and_walls() {
   s.max_speed = dem_.max_speed;
   if (scene_.periodic_angle_deg > 0)
     s.periodic = {true, scene_.periodic_angle_deg * pi / 180};
+  if (scene_.periodic_direction != "none")
+    s.periodic_slab = {true, periodic_axis(scene_), scene_.periodic_from, scene_.periodic_to};
 }
 
 void SceneRun::setup(const std::function<void(const std::string&)>& progress) {
@@ -534,7 +582,7 @@ void SceneRun::exchange() {
   if (!set_up)
     return;
   for (auto& plane : flux_planes_) // before the outlets: a particle that crossed is counted
-    plane.sample(system_.particles);
+    plane.sample(system_.particles, nearest_image(scene_));
   if (fields_)
     fields_->sample(system_.particles);
   n_removed_ += apply_outlets(system_, outlets_);
