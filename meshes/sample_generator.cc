@@ -11,6 +11,7 @@
 #include "meshes/sample_generator.h"
 
 #include "meshes/gmsh_session.h"
+#include "meshes/sample_frame.h"
 #include "meshes/stopwatch.h"
 
 #include <gmsh.h>
@@ -68,7 +69,8 @@ int set_sample_size_field(const SampleGeometry& s, const Vec3& up, double up_off
   return field;
 }
 
-GeneratedSample generate_sample(const SampleGeometry& s, const std::string& msh_path) {
+GeneratedSample generate_sample(const SampleGeometry& s, const std::string& msh_path,
+                                const SamplePlacement* placement) {
   validate(s);
   const Stopwatch clock;
   GmshSession session("sample");
@@ -145,6 +147,16 @@ GeneratedSample generate_sample(const SampleGeometry& s, const std::string& msh_
 
   set_sample_size_field(s);
   gmsh::model::mesh::generate(s.volume_mesh ? 3 : 2);
+  if (placement) {
+    const SampleFrame frame(s, *placement);
+    std::vector<std::size_t> tags;
+    std::vector<double> x, unused;
+    gmsh::model::mesh::getNodes(tags, x, unused, -1, -1, false, false);
+    for (std::size_t k = 0; k < tags.size(); ++k) {
+      const Vec3 q = frame.point_to_tester({x[3 * k], x[3 * k + 1], x[3 * k + 2]});
+      gmsh::model::mesh::setNode(tags[k], {q.x, q.y, q.z}, {});
+    }
+  }
   if (!msh_path.empty())
     gmsh_write_msh(msh_path);
   g.surface = gmsh_labelled_surface(&g.n_tetrahedra, &g.tetrahedral_volume);

@@ -3,7 +3,8 @@
 // Set-up: the scene's walls are built (dem/scene/scene_walls.h), the wearing wall's CAD
 // surfaces labelled by role (S<n> wearing, S<n>-free, S<n>-clamped); gmsh meshes the volume
 // they enclose into tetrahedra (fem::remesh_sample, uniform size = the wall's Mesh size; the
-// tester's sample (Source = sample) at its own graded sizes, its labels and roles kept) and
+// tester's sample (Source = sample) is the tester's own mesh, meshes::generate_sample moved to
+// its placement, remeshed later at its own graded sizes, its labels and roles kept) and
 // the DEM wall takes that mesh's boundary, so DEM faces and FEM boundary faces are the same
 // triangles and every per-face field crosses without interpolation.
 // One stage (scheme "staged"), in the part's own frame (a moving part's body frame):
@@ -30,6 +31,7 @@
 #include "fem/remesher.h"
 #include "meshes/atomic_file.h"
 #include "meshes/sample_frame.h"
+#include "meshes/sample_generator.h"
 #include "meshes/stopwatch.h"
 
 #include <algorithm>
@@ -171,19 +173,30 @@ std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::setup() {
     auto& wall = walls[*part_wall_];
     const auto worn = part_parameters(p_, wall.parameters);
     meshes::ensure_directory(dir + "/mesh");
-    fem::RemeshReport report;
     const meshes::Stopwatch clock;
-    const meshes::SurfaceMesh surface =
-        fem::remesh_sample(wall.surface.mesh, worn.remesh, dir + "/mesh/part.msh", &report);
-    part_ = std::make_unique<fem::WornSample>(dir + "/mesh/part.msh", surface, worn);
+    const std::string msh = dir + "/mesh/part.msh";
+    std::size_t n_tetrahedra = 0;
+    meshes::SurfaceMesh surface;
+    if (wall.parameters.source == "sample") { // the tester's own mesh, placed (as CoupledRun)
+      meshes::SampleGeometry sg = p_.geometry.sample;
+      sg.volume_mesh = true;
+      const auto g = meshes::generate_sample(sg, msh, &p_.geometry.placement);
+      surface = g.surface;
+      n_tetrahedra = g.n_tetrahedra;
+    } else {
+      fem::RemeshReport report;
+      surface = fem::remesh_sample(wall.surface.mesh, worn.remesh, msh, &report);
+      n_tetrahedra = report.n_tetrahedra;
+    }
+    part_ = std::make_unique<fem::WornSample>(msh, surface, worn);
     wall.surface.mesh = surface;
     std::string labels;
-    for (const auto& [label, area] : report.area_after)
+    for (const auto& [label, area] : meshes::area_per_label(surface))
       labels += " " + meshes::label::name(label);
     log_ << format("part '%s': %zu tetrahedra, %zu surface faces, %.6g mm^3, surfaces%s (%.1f "
                    "s)\n",
-                   wall.parameters.name.c_str(), report.n_tetrahedra, surface.n_faces(),
-                   report.volume_after * 1e9, labels.c_str(), clock.seconds());
+                   wall.parameters.name.c_str(), n_tetrahedra, surface.n_faces(),
+                   meshes::enclosed_volume(surface) * 1e9, labels.c_str(), clock.seconds());
     previous_stress_ =
         meshes::FaceField<double>("von Mises", "Pa", meshes::Extensivity::intensive, surface);
   }

@@ -147,3 +147,25 @@ TEST_CASE("a pattern that does not fit names the parameter", "[meshes][sample]")
 TEST_CASE("reading a missing or unlabelled mesh fails clearly", "[meshes][sample]") {
   CHECK_THROWS_WITH(read_msh_surface("missing.msh"), Catch::Contains("missing.msh"));
 }
+
+TEST_CASE("a sample generated at its placement is the sample's own mesh moved there",
+          "[meshes][sample]") {
+  // The scene's wearing sample (Source = sample) starts from this mesh, as the tester's run
+  // starts from the unplaced one: same triangles, labels and tetrahedra, every vertex the
+  // tester frame's image of the unplaced vertex, bit for bit.
+  wear::meshes::SampleGeometry s;
+  s.mesh_size = 3e-3;
+  s.mesh_size_bottom = 5e-3;
+  s.curvature_refinement = false;
+  wear::meshes::SamplePlacement placement;
+  placement.angle_deg = 15;
+  const auto own = wear::meshes::generate_sample(s, "own_sample.msh");
+  const auto placed = wear::meshes::generate_sample(s, "placed_sample.msh", &placement);
+  const auto moved = wear::meshes::SampleFrame(s, placement).place_in_tester(own.surface);
+  REQUIRE(placed.surface.n_faces() == own.surface.n_faces());
+  CHECK(placed.surface.triangles == own.surface.triangles);
+  CHECK(placed.surface.face_labels == own.surface.face_labels);
+  CHECK(placed.surface.vertices == moved.vertices);
+  CHECK(placed.n_tetrahedra == own.n_tetrahedra);
+  CHECK(placed.tetrahedral_volume == Approx(own.tetrahedral_volume).epsilon(1e-12));
+}
