@@ -7,7 +7,7 @@
 # outside the tester's interval. README.md beside this script says why not bit for bit.
 #
 # usage: bash cases/reference/scene/scene_vs_tester.sh [seed ...]
-#        (default seeds 1 2 3: about 8 min on 2 cores; JOBS=<n> sets the runs at once;
+#        (default seeds 1 2 3: 16 min on 2 cores beside the test suite; JOBS=<n> sets the runs at once;
 #         WEARSIM=<path> the binary, default build/wearsim; OUTPUT=<folder> the runs' folder,
 #         default output/reference-scene)
 set -euo pipefail
