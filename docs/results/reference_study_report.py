@@ -54,15 +54,19 @@ class Run:
         self.engine = lines[1].split(":", 1)[1].strip()
         self.case = lines[0].split(" of ", 1)[-1].strip()
         self.rows = self._csv("summary.csv")
-        self.stages = self._csv("stages.csv")
+        # a `wearsim dem` run (the calibration) has revolutions and no stages
+        has_stages = os.path.isfile(os.path.join(path, "stages.csv"))
+        self.stages = self._csv("stages.csv") if has_stages else []
         if not self.rows:
             fail(f"'{path}/summary.csv' has no revolution yet")
         self.params = self._parameters()
+        self.element_labels, self.element_wear, self.column_wear = [], None, None
         with h5py.File(os.path.join(path, "history.h5"), "r") as h:
-            rev = h["revolutions"]
-            self.element_labels = [int(v) for v in rev["element_labels"][:]] if "element_labels" in rev else []
-            self.element_wear = rev["element_wear_m3"][:] if "element_wear_m3" in rev else None
-            self.column_wear = rev["column_wear_m3"][:]
+            if "revolutions" in h:  # a `wearsim run`'s history (a `wearsim dem` run has fields)
+                rev = h["revolutions"]
+                self.element_labels = [int(v) for v in rev["element_labels"][:]] if "element_labels" in rev else []
+                self.element_wear = rev["element_wear_m3"][:] if "element_wear_m3" in rev else None
+                self.column_wear = rev["column_wear_m3"][:]
         schemes = [r["scheme_name"] for r in self.stages]
         self.first_staged_rev = next(
             (int(r["first_revolution"]) for r in self.stages if r["scheme_name"] == "staged"), None)
