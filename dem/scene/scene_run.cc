@@ -114,11 +114,13 @@ struct SceneFillShape {
     };
     return r;
   }
-  /// True when `x` lies inside the region (its loose part for a bed).
-  bool contains(const Vec3& x) const {
+  /// True when every point of `points` lies inside the region (its loose part for a bed).
+  bool contains_all(const std::vector<Vec3>& points) const {
     const FillRegion r = outline(0, hi.z);
-    return x.x >= r.lo.x && x.y >= r.lo.y && x.z >= r.lo.z && x.x <= r.hi.x && x.y <= r.hi.y &&
-           x.z <= r.hi.z && r.inside(x);
+    return std::all_of(points.begin(), points.end(), [&](const Vec3& x) {
+      return x.x >= r.lo.x && x.y >= r.lo.y && x.z >= r.lo.z && x.x <= r.hi.x && x.y <= r.hi.y &&
+             x.z <= r.hi.z && r.inside(x);
+    });
   }
 
 private:
@@ -214,8 +216,7 @@ void require_clear_of_walls(const std::vector<SceneWall>& walls, SceneFillShape&
   const std::set<std::string> clear_above(names.begin(), names.end());
   for (const auto& w : walls) {
     const auto& m = w.surface.mesh;
-    if (!m.vertices.empty() && std::all_of(m.vertices.begin(), m.vertices.end(),
-                                           [&](const Vec3& x) { return shape.contains(x); })) {
+    if (!m.vertices.empty() && shape.contains_all(m.vertices)) {
       const meshes::BoundingBox box = meshes::bounding_box(m);
       shape.submerged.push_back(box);
       if (clear_above.count(w.parameters.name))

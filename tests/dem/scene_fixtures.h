@@ -1,10 +1,22 @@
 #pragma once
 // Shared scenes of the scene tests.
 #include "dem/scene/scene_parameters.h"
+#include "dem/tester/tester_parameters.h"
 
 #include <string>
 
 namespace wear::dem::testing {
+
+/// Single-size 6 mm gravel, little rolling friction (a free-flowing bin), one thread.
+inline TesterDemParameters gravel() {
+  TesterDemParameters d;
+  d.psd = {{0.006}, {1.0}, 1.0};
+  d.particle = {1e7, 0.25, 2650};
+  d.particle_particle = {0.5, 0.5, 0.02};
+  d.particle_wall = {0.5, 0.5, 0.02};
+  d.n_threads = 1;
+  return d;
+}
 
 /// A cylindrical bin (wall 0, its side) of radius R and height H standing on a flat floor
 /// (wall 1) with a central orifice of radius r_o, in a domain reaching 1.5 R around it and

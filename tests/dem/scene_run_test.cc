@@ -16,18 +16,9 @@
 
 using namespace wear::dem;
 
-namespace {
+using testing::gravel;
 
-/// Single-size 6 mm gravel, little rolling friction (a free-flowing bin), one thread.
-TesterDemParameters gravel() {
-  TesterDemParameters d;
-  d.psd = {{0.006}, {1.0}, 1.0};
-  d.particle = {1e7, 0.25, 2650};
-  d.particle_particle = {0.5, 0.5, 0.02};
-  d.particle_wall = {0.5, 0.5, 0.02};
-  d.n_threads = 1;
-  return d;
-}
+namespace {
 
 /// A bin of radius 60 mm on a flat floor with a central orifice; below it an outlet.
 SceneParameters bin(double orifice_radius) {

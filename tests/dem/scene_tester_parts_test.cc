@@ -15,6 +15,8 @@
 using namespace wear::dem;
 namespace label = wear::meshes::label;
 
+using testing::gravel;
+
 namespace {
 
 /// The plain sample at 3 mm at 15 degrees, as cases/quick places it.
@@ -37,16 +39,6 @@ SceneParameters sample_in_holder() {
   s.walls[1].material = "holder";
   s.walls[1].mesh_size = 4e-3;
   return s;
-}
-
-TesterDemParameters gravel() {
-  TesterDemParameters d;
-  d.psd = {{0.006}, {1.0}, 1.0};
-  d.particle = {1e7, 0.25, 2650};
-  d.particle_particle = {0.5, 0.5, 0.02};
-  d.particle_wall = {0.5, 0.5, 0.02};
-  d.n_threads = 1;
-  return d;
 }
 
 } // namespace
