@@ -9,6 +9,13 @@
 // (lowest index) keeps it. On a flat patch this leaves exactly the face (or shared edge or
 // vertex) under the centre, with the normal of a flat wall; on a convex ridge the shared
 // edge; in a concave corner one contact per face, as physics asks.
+//
+// Covered faces (held flush against another wall): an edge or vertex where they meet uncovered
+// faces is a junction. It is tested against its uncovered faces only, reported by one of them,
+// and its contact marked as such: the force pass keeps it only where no other wall's contact
+// of about the same normal is as deep (the flush neighbour's face), so a flat junction of two
+// walls counts once, and a worn face that sank below its holder's rim still holds a particle
+// on its edge.
 #include "dem/engine/mesh_wall.h"
 
 #include <algorithm>
@@ -70,7 +77,8 @@ MeshWall::MeshWall(const meshes::SurfaceMesh& mesh, int material_id, const WallM
     vertex_face_.insert(vertex_face_.end(), vf[v].begin(), vf[v].end());
   }
   // Junctions of covered and uncovered faces.
-  std::vector<char> covered(nf, 0);
+  auto& covered = face_covered_;
+  covered.assign(nf, 0);
   for (std::size_t f = 0; f < nf; ++f)
     covered[f] = std::find(covered_labels_.begin(), covered_labels_.end(), mesh_.face_labels[f]) !=
                  covered_labels_.end();
@@ -78,12 +86,24 @@ MeshWall::MeshWall(const meshes::SurfaceMesh& mesh, int material_id, const WallM
   for (std::size_t e = 0; e < edge_face_.size(); ++e)
     edge_junction_[e] =
         edge_face_[e][1] != ~0u && covered[edge_face_[e][0]] != covered[edge_face_[e][1]];
+  vertex_edge_open_.assign(vertex_edge_.size(), 0);
+  for (std::size_t i = 0; i < vertex_edge_.size(); ++i)
+    for (auto g : edge_face_[vertex_edge_[i]])
+      if (g != ~0u && !covered[g])
+        vertex_edge_open_[i] = 1;
   vertex_junction_.assign(nv, 0);
   for (std::size_t v = 0; v < nv; ++v) {
     bool any_covered = false, any_open = false;
-    for (auto i = vertex_face_offset_[v]; i < vertex_face_offset_[v + 1]; ++i)
-      (covered[vertex_face_[i]] ? any_covered : any_open) = true;
+    std::uint32_t first_open = ~0u;
+    for (auto i = vertex_face_offset_[v]; i < vertex_face_offset_[v + 1]; ++i) {
+      const auto g = vertex_face_[i];
+      (covered[g] ? any_covered : any_open) = true;
+      if (!covered[g])
+        first_open = std::min(first_open, g);
+    }
     vertex_junction_[v] = any_covered && any_open;
+    if (vertex_junction_[v])
+      vertex_first_face_[v] = first_open;
   }
   compute_geometry();
 }
@@ -156,14 +176,16 @@ void MeshWall::compute_geometry() {
       vertex_edge_dir_[i] = normalized(mesh_.vertices[other] - mesh_.vertices[v]);
     }
     // Share of a vertex contact per face: the face's interior angle at v over the total,
-    // i.e. the fraction of a small disc around the vertex that lies on the face.
+    // i.e. the fraction of a small disc around the vertex that lies on the face; at a
+    // junction vertex over the uncovered faces only.
     double total = 0;
     for (auto i = vertex_face_offset_[v]; i < vertex_face_offset_[v + 1]; ++i) {
       const auto& t = mesh_.triangles[vertex_face_[i]];
       const int k = t[0] == v ? 0 : (t[1] == v ? 1 : 2);
       const Vec3 a = mesh_.vertices[t[(k + 1) % 3]] - mesh_.vertices[v];
       const Vec3 b = mesh_.vertices[t[(k + 2) % 3]] - mesh_.vertices[v];
-      vertex_face_weight_[i] = std::atan2(norm(cross(a, b)), dot(a, b));
+      const bool skip = vertex_junction_[v] && face_covered_[vertex_face_[i]];
+      vertex_face_weight_[i] = skip ? 0.0 : std::atan2(norm(cross(a, b)), dot(a, b));
       total += vertex_face_weight_[i];
     }
     for (auto i = vertex_face_offset_[v]; i < vertex_face_offset_[v + 1]; ++i)
@@ -175,31 +197,36 @@ ClosestFeature MeshWall::closest(std::uint32_t f, const Vec3& p) const {
   return meshes::closest_point_on_triangle(corners_[f][0], corners_[f][1], corners_[f][2], p);
 }
 
-bool MeshWall::owns_contact(std::uint32_t f, const ClosestFeature& cf, const Vec3& c) const {
+ContactOwnership MeshWall::contact_ownership(std::uint32_t f, const ClosestFeature& cf,
+                                             const Vec3& c) const {
+  using O = ContactOwnership;
   if (cf.feature == Feature::face)
-    return true;
+    return O::owned;
   const Vec3 d = c - cf.point;
   const double tol = 1e-9 * norm(d);
   if (cf.feature == Feature::edge) {
     const auto e = face_edge_[f][cf.local];
-    if (edge_junction_[e])
-      return false;
+    const bool junction = edge_junction_[e];
     for (auto g : edge_face_[e]) {
-      if (g == ~0u)
+      if (g == ~0u || (junction && face_covered_[g]))
         continue;
       const int k = face_edge_[g][0] == e ? 0 : (face_edge_[g][1] == e ? 1 : 2);
       if (dot(d, inward_[g][k]) > tol)
-        return false;
+        return O::none;
     }
-    return f == edge_face_[e][0];
+    // A junction edge has one uncovered face, which reports it.
+    if (junction)
+      return face_covered_[f] ? O::none : O::junction;
+    return f == edge_face_[e][0] ? O::owned : O::none;
   }
   const auto v = mesh_.triangles[f][cf.local];
-  if (vertex_junction_[v])
-    return false;
+  const bool junction = vertex_junction_[v];
   for (auto i = vertex_edge_offset_[v]; i < vertex_edge_offset_[v + 1]; ++i)
-    if (dot(d, vertex_edge_dir_[i]) > tol)
-      return false;
-  return f == vertex_first_face_[v];
+    if ((!junction || vertex_edge_open_[i]) && dot(d, vertex_edge_dir_[i]) > tol)
+      return O::none;
+  if (f != vertex_first_face_[v])
+    return O::none;
+  return junction ? O::junction : O::owned;
 }
 
 int MeshWall::faces_sharing(std::uint32_t f, const ClosestFeature& cf, std::uint32_t* out,
@@ -211,7 +238,13 @@ int MeshWall::faces_sharing(std::uint32_t f, const ClosestFeature& cf, std::uint
   }
   int n = 0;
   if (cf.feature == Feature::edge) {
-    const auto& ef = edge_face_[face_edge_[f][cf.local]];
+    const auto e = face_edge_[f][cf.local];
+    const auto& ef = edge_face_[e];
+    if (edge_junction_[e]) { // all on the uncovered face: the covered one touches no particle
+      out[0] = face_covered_[ef[0]] ? ef[1] : ef[0];
+      weight[0] = 1;
+      return 1;
+    }
     const int n_sharing = ef[1] == ~0u ? 1 : 2;
     for (auto g : ef)
       if (g != ~0u && n < max_out) {

@@ -65,10 +65,17 @@ struct alignas(64) FaceBound {
   }
 };
 
+/// How a triangle's closest feature counts as a contact (MeshWall::contact_ownership).
+enum class ContactOwnership : std::uint8_t {
+  none,    ///< not a contact of this triangle: another face reports it, or a closer point exists
+  owned,   ///< a contact
+  junction ///< a contact on the border of covered faces, dropped where another wall's is as deep
+};
+
 class MeshWall {
 public:
   /// `covered_labels`: labels of faces held flush against another wall (the sample's sides
-  /// and bottom in its holder, the holder's pocket), see owns_contact.
+  /// and bottom in its holder, the holder's pocket), see contact_ownership.
   MeshWall(const meshes::SurfaceMesh& mesh, int material_id, const WallMotion& motion, bool wearing,
            std::string name, std::vector<int> covered_labels = {});
 
@@ -126,15 +133,18 @@ public:
   /// Closest point of triangle f to c (meshes::closest_point_on_triangle).
   ClosestFeature closest(std::uint32_t f, const Vec3& c) const;
 
-  /// True when the closest feature found on triangle f is the mesh's own closest feature near
-  /// that point (a local distance minimum over all faces sharing it) and f is the one
-  /// triangle that reports it. Face contacts always qualify; an edge or vertex contact is
-  /// dropped when moving into a neighbouring face brings the point closer to c. An edge or
-  /// vertex where a covered face meets an uncovered one is never a contact: the covering wall
-  /// continues the surface flush there, and its own face holds the contact (a flat junction
-  /// of two walls, counted once). Face contacts on covered faces stay, so a particle that
-  /// reaches one is seen.
-  bool owns_contact(std::uint32_t f, const ClosestFeature& cf, const Vec3& c) const;
+  /// Whether the closest feature found on triangle f is the mesh's own closest feature near
+  /// that point (a local distance minimum over the faces sharing it) with f the one triangle
+  /// that reports it. Face contacts always qualify; an edge or vertex contact is dropped
+  /// (`none`) when moving into a neighbouring face brings the point closer to c. An edge or
+  /// vertex where a covered face meets an uncovered one is judged on its uncovered faces only
+  /// and reported as a `junction`: another wall covers the covered side, and where that wall
+  /// continues the surface flush its own contact stands for this one (the force pass then
+  /// drops the junction contact, see system_contacts.cc); where the surfaces have parted
+  /// (a worn face below its holder's rim) the junction contact is the only one there. Face
+  /// contacts on covered faces stay, so a particle that reaches one is seen.
+  ContactOwnership contact_ownership(std::uint32_t f, const ClosestFeature& cf,
+                                     const Vec3& c) const;
 
   /// Faces that share the contact's feature and each one's share of it (for splitting
   /// extensive wear quantities; shares sum to 1): a face contact stays on its face, an edge
@@ -172,9 +182,13 @@ private:
   std::vector<std::array<std::uint32_t, 2>> edge_face_; // adjacent faces (second = ~0u: none)
   std::vector<std::array<std::uint32_t, 2>> edge_vertex_;
   std::vector<std::array<Vec3, 3>> inward_; // in-plane unit normal of edge k, into f
+  /// The face that reports a vertex contact: the lowest-numbered one at v, uncovered at a
+  /// junction vertex.
   std::vector<std::uint32_t> vertex_first_face_;
   std::vector<std::uint32_t> vertex_edge_offset_, vertex_edge_; // CSR: edges at v
   std::vector<Vec3> vertex_edge_dir_;                           // unit, away from v
+  std::vector<char> vertex_edge_open_; // the edge borders an uncovered face
+  std::vector<char> face_covered_;
   std::vector<std::uint32_t> vertex_face_offset_, vertex_face_; // CSR: faces at v
   std::vector<double> vertex_face_weight_;                      // interior-angle share
   std::vector<char> edge_junction_, vertex_junction_; // joins a covered and an uncovered face

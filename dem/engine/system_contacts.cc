@@ -11,6 +11,13 @@
 // most one contact, at its exact closest point, through the same slots, merge rule and law;
 // on a wearing one the contact's integrals go whole to its accounting face under that point.
 //
+// A junction contact (an edge or vertex where a wall's covered faces meet its uncovered ones,
+// MeshWall::contact_ownership) is dropped when another wall has a contact within the merge
+// angle at least as deep, to 1e-6 r: on the flush junction of a sample and its holder the
+// face under the particle holds it, once. Two junction contacts of different walls keep the
+// deeper. Where the worn face has sunk below the holder's rim the rim's junction edge is the
+// deeper and holds a particle over the seam, which with no contact there fell through it.
+//
 // A mesh wall with a rigid motion (rigid_motion.h) is searched in its body frame: the
 // particle centre is taken there once per wall, the contact normal back to the world frame;
 // the contact point stays on the mesh, where the wall's velocity is evaluated and its wear
@@ -38,10 +45,13 @@ struct Candidate {
   Vec3 normal;            ///< unit, wall to particle centre (world frame)
   double dist;            ///< [m] centre to closest point
   std::uint32_t wall, face;
+  bool junction; ///< on the border of the wall's covered faces (ContactOwnership::junction)
 };
 constexpr int max_wall_candidates = 32;
 /// Contacts of one wall whose normals differ by less than 25 degrees are one contact.
 const double cos_merge_angle = std::cos(25.0 * 3.14159265358979323846 / 180.0);
+/// [-] Of the radius: a junction contact within this of another wall's counts as level with it.
+constexpr double junction_level_tolerance = 1e-6;
 
 /// The System's walls of both kinds, by wall number w (System::wall_kind_, wall_local_).
 struct WallTable {
@@ -75,7 +85,7 @@ struct WallTable {
       if (n_found == max_wall_candidates)
         return -1;
       const double dist = std::sqrt(dist2);
-      found[n_found++] = {{point, Feature::face, 0}, d / dist, dist, w, 0};
+      found[n_found++] = {{point, Feature::face, 0}, d / dist, dist, w, 0, false};
       continue;
     }
     const MeshWall& wall = walls.mesh[walls.local[w]];
@@ -88,27 +98,39 @@ struct WallTable {
     const ClosestFeature cf = wall.closest(f, xb);
     const Vec3 d = xb - cf.point;
     const double dist2 = meshes::norm2(d);
-    if (dist2 >= r * r || dist2 == 0 || !wall.owns_contact(f, cf, xb))
+    if (dist2 >= r * r || dist2 == 0)
+      continue;
+    const ContactOwnership own = wall.contact_ownership(f, cf, xb);
+    if (own == ContactOwnership::none)
       continue;
     if (n_found == max_wall_candidates)
       return -1;
     const double dist = std::sqrt(dist2);
     const Vec3 normal = wall.moving() ? wall.pose().rotate(d / dist) : d / dist;
-    found[n_found++] = {cf, normal, dist, w, f};
+    found[n_found++] = {cf, normal, dist, w, f, own == ContactOwnership::junction};
   }
   return n_found;
 }
 
-/// True when contact c is merged into another of the same wall: one whose normal lies within
-/// the merge angle and which is deeper (on a tie, found first).
-[[gnu::always_inline]] inline bool merged_into_another(const Candidate* found, int n_found, int c) {
+/// True when contact c is merged into another whose normal lies within the merge angle: of
+/// the same wall, or a junction contact of another wall, the deeper (on a tie, found first);
+/// a junction contact also into a non-junction contact of another wall at least as deep to
+/// `level` [m].
+[[gnu::always_inline]] inline bool merged_into_another(const Candidate* found, int n_found, int c,
+                                                       double level) {
   const Candidate& cand = found[c];
-  bool merged = false;
-  for (int o = 0; o < n_found && !merged; ++o)
-    merged = o != c && found[o].wall == cand.wall &&
-             meshes::dot(found[o].normal, cand.normal) > cos_merge_angle &&
-             (found[o].dist < cand.dist || (found[o].dist == cand.dist && o < c));
-  return merged;
+  for (int o = 0; o < n_found; ++o) {
+    const Candidate& other = found[o];
+    if (o == c || meshes::dot(other.normal, cand.normal) <= cos_merge_angle)
+      continue;
+    if (other.wall == cand.wall || (cand.junction && other.junction)) {
+      if (other.dist < cand.dist || (other.dist == cand.dist && o < c))
+        return true;
+    } else if (cand.junction && other.dist <= cand.dist + level) {
+      return true;
+    }
+  }
+  return false;
 }
 
 /// The contact geometry of particle i with a wall (MeshWall or RevolutionWall) at `cand`.
@@ -271,12 +293,13 @@ void System::wall_forces(int thread, Vec3* F, Vec3* T) {
     const int n_found = find_wall_contacts(
         walls, candidates + wall_candidate_offset_[i], candidates + wall_candidate_offset_[i + 1],
         wall_candidate_bound_.data() + wall_candidate_offset_[i], x, p.radius[i], found);
+    const double level = junction_level_tolerance * p.radius[i];
     bool overflow = n_found < 0;
     bool taken[wall_slots] = {}; // old slots whose history went to a new contact
     int n_new = 0;
     Vec3 f_sum{}, t_sum{};
     for (int c = 0; c < n_found; ++c) {
-      if (merged_into_another(found, n_found, c))
+      if (merged_into_another(found, n_found, c, level))
         continue;
       if (n_new == wall_slots) {
         overflow = true;

@@ -8,8 +8,8 @@
 // there (MeshWall::to_body) and distances are the same in both frames.
 //
 // Elastic energy of a wall contact: the Hertz term 8/15 E* sqrt(R) delta^(5/2) of every
-// contact the force pass would count before merging (the tangential springs of wall contacts
-// are left out, as they always were).
+// contact the force pass would count before merging, junction contacts excepted (the
+// tangential springs of wall contacts are left out, as they always were).
 #include "dem/engine/system.h"
 
 #include <algorithm>
@@ -126,7 +126,9 @@ void System::add_wall_elastic_energy(double& e) const {
         const std::uint32_t f = wall_candidate_[k] & 0xFFFFFFu;
         const auto cf = mw.closest(f, x);
         d = p.radius[i] - meshes::norm(x - cf.point);
-        if (d > 0 && !mw.owns_contact(f, cf, x))
+        // Junction contacts are left out: where a flush wall continues the surface, its
+        // contact stands for them and is counted.
+        if (d > 0 && mw.contact_ownership(f, cf, x) != ContactOwnership::owned)
           d = 0;
         material = mw.material();
       }
