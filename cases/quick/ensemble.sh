@@ -24,8 +24,8 @@ for a in "$@"; do
 done
 [ ${#seeds[@]} -gt 0 ] || seeds=(1 2 3)
 [ -x build/wearsim ] || { echo "ensemble.sh: build/wearsim not found; run bash scripts/build.sh" >&2; exit 1; }
-jobs=${JOBS:-$(nproc)}
-[[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "ensemble.sh: JOBS='$jobs' is not a positive integer" >&2; exit 2; }
+source scripts/run_pool.sh
+pool_init quick "${JOBS:-$(nproc)}" || exit 2
 root=output/quick
 mkdir -p "$root"
 start=$(date +%s)
@@ -37,34 +37,13 @@ run_one() { # <kind> <seed>: one run, its case file and log beside its folder
   build/wearsim run --overwrite "$out.prm" > "$out.log" 2>&1
 }
 
-# a pool of $jobs runs; each finished run is reported as it ends
-declare -A pid_of=()
-failed=()
-reap() {
-  local pid=$1 name=${pid_of[$1]}
-  if wait "$pid"; then
-    echo "quick: $name done ($(( $(date +%s) - start )) s)"
-  else
-    failed+=("$name: $(grep -m1 -i 'error' "$root/$name.log" || tail -n1 "$root/$name.log") ($root/$name.log)")
-  fi
-  unset "pid_of[$pid]"
-}
 for seed in "${seeds[@]}"; do
   for kind in plain convex; do
-    while [ ${#pid_of[@]} -ge "$jobs" ]; do
-      wait -n -p done_pid "${!pid_of[@]}" || true
-      reap "$done_pid"
-    done
+    pool_run "$kind-$seed" "$root/$kind-$seed.log" run_one "$kind" "$seed"
     echo "quick: $kind, seed $seed started"
-    run_one "$kind" "$seed" &
-    pid_of[$!]="$kind-$seed"
   done
 done
-for pid in "${!pid_of[@]}"; do reap "$pid"; done
-if [ ${#failed[@]} -gt 0 ]; then
-  printf 'quick: failed: %s\n' "${failed[@]}" >&2
-  exit 1
-fi
+pool_wait || { printf 'quick: failed: %s\n' "${POOL_FAILED[@]}" >&2; exit 1; }
 
 plain=() convex=()
 for seed in "${seeds[@]}"; do plain+=("$root/plain-$seed"); convex+=("$root/convex-$seed"); done

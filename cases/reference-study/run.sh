@@ -12,7 +12,8 @@
 set -uo pipefail
 cd "$(dirname "$0")/../.."
 wearsim=${WEARSIM:-build/wearsim}
-jobs=${JOBS:-$(nproc)}
+source scripts/run_pool.sh
+pool_init "reference study" "${JOBS:-$(nproc)}" || exit 2
 cases=("$@")
 [ ${#cases[@]} -gt 0 ] || cases=(plain convex)
 for c in "${cases[@]}"; do
@@ -22,7 +23,7 @@ done
 [ -x "$wearsim" ] || { echo "run.sh: no wearsim binary at '$wearsim' (WEARSIM)" >&2; exit 2; }
 root=output/reference-study
 mkdir -p "$root"
-echo "reference study: $("$wearsim" --version), ${#cases[@]} case(s), $jobs at once"
+echo "reference study: $("$wearsim" --version), ${#cases[@]} case(s), $POOL_JOBS at once"
 
 run_one() { # <case>: start or continue one case, its log beside its folder
   local prm="cases/reference-study/$1.prm" out="$root/$1" mode=--overwrite
@@ -31,37 +32,14 @@ run_one() { # <case>: start or continue one case, its log beside its folder
   exec "$wearsim" run "$mode" "$prm" >> "$out.log" 2>&1
 }
 
-declare -A pid_of=()
-status=0
 stop_all() {
-  for p in "${!pid_of[@]}"; do kill -TERM "$p" 2>/dev/null; done
-  wait
+  pool_stop
   echo "reference study: stopped; continue with the same command"
   exit 130
 }
 trap stop_all INT TERM
-reap() {
-  local pid=$1 name=${pid_of[$1]} rc=0
-  wait "$pid" || rc=$?
-  if [ $rc -eq 0 ]; then
-    echo "reference study: $name done $(date -u +%TZ)"
-  else
-    echo "reference study: $name stopped with status $rc ($root/$name.log)"
-    status=1
-  fi
-  unset "pid_of[$pid]"
-}
 for c in "${cases[@]}"; do
-  while [ ${#pid_of[@]} -ge "$jobs" ]; do
-    wait -n -p done_pid "${!pid_of[@]}" || true
-    reap "$done_pid"
-  done
+  pool_run "$c" "$root/$c.log" run_one "$c"
   echo "reference study: $c started $(date -u +%TZ)"
-  run_one "$c" &
-  pid_of[$!]="$c"
 done
-while [ ${#pid_of[@]} -gt 0 ]; do
-  wait -n -p done_pid "${!pid_of[@]}" || true
-  reap "$done_pid"
-done
-exit $status
+pool_wait || { printf 'reference study: stopped with an error: %s\n' "${POOL_FAILED[@]}"; exit 1; }

@@ -189,12 +189,8 @@ TEST_CASE("scene run: a fill to a bed height settles before the run starts") {
 }
 
 TEST_CASE("scene run: a cylinder fills the bin to a count or a bed height, clear of its wall") {
-  SceneParameters scene = pinhole_bin();
-  scene.fill.region = "cylinder";
-  scene.fill.origin = {0, 0, 0.001};
-  scene.fill.axis = {0, 0, 0.2};
-  scene.fill.radius = 0.058; // 2 mm inside the bin's wall, which a box could not fill
-  scene.fill.count = 600;
+  // The cylinder 2 mm inside the bin's wall, which a box could not fill.
+  SceneParameters scene = testing::pinhole_bin_cylinder_fill("bin, floor");
   SceneRun counted(scene, gravel(), build_scene_walls(scene));
   counted.setup();
   const auto& p = counted.system().particles;

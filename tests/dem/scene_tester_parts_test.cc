@@ -114,19 +114,12 @@ TEST_CASE("scene walls: the tester's sample and holder refuse what they cannot b
 
 TEST_CASE("scene run: a part standing in the fill is left out of it, its volume off the count") {
   // A closed 20 x 20 x 10 mm box standing in the bin, wholly inside the fill cylinder.
-  SceneParameters scene = testing::flat_bottomed_bin("bin, floor, block", 0.06, 0.3, 0.025, 0.05);
-  scene.walls[1].radius_inner = 0.002;
-  scene.walls[1].mesh_size = 0.006;
+  SceneParameters scene = testing::pinhole_bin_cylinder_fill("bin, floor, block");
   auto& block = scene.walls[2];
   block.source = "box";
   block.origin = {-0.01, -0.01, 0.003};
   block.axis = {0.02, 0.02, 0.01};
   block.mesh_size = 0.005;
-  scene.fill.region = "cylinder";
-  scene.fill.origin = {0, 0, 0.001};
-  scene.fill.axis = {0, 0, 0.2};
-  scene.fill.radius = 0.058;
-  scene.fill.count = 600;
   SceneRun counted(scene, gravel(), build_scene_walls(scene));
   counted.setup();
   const auto& p = counted.system().particles;
@@ -156,20 +149,13 @@ TEST_CASE("scene run: a part standing in the fill is left out of it, its volume 
 }
 
 TEST_CASE("scene run: no particle is placed over a plate named in Fill/Clear above") {
-  SceneParameters scene = testing::flat_bottomed_bin("bin, floor, plate", 0.06, 0.3, 0.025, 0.05);
-  scene.walls[1].radius_inner = 0.002;
-  scene.walls[1].mesh_size = 0.006;
+  SceneParameters scene = testing::pinhole_bin_cylinder_fill("bin, floor, plate");
   auto& plate = scene.walls[2];
   plate.source = "plane";
   plate.origin = {-0.01, -0.01, 0.05};
   plate.edge_u = {0.02, 0, 0};
   plate.edge_v = {0, 0.02, 0};
   plate.mesh_size = 0.005;
-  scene.fill.region = "cylinder";
-  scene.fill.origin = {0, 0, 0.001};
-  scene.fill.axis = {0, 0, 0.2};
-  scene.fill.radius = 0.058;
-  scene.fill.count = 600;
   const auto over_plate = [](const SceneRun& run) {
     const auto& p = run.system().particles;
     std::size_t n = 0;

@@ -20,8 +20,8 @@ done
 [ ${#seeds[@]} -gt 0 ] || seeds=(1 2 3)
 wearsim=${WEARSIM:-build/wearsim}
 [ -x "$wearsim" ] || { echo "scene_vs_tester.sh: $wearsim not found; run bash scripts/build.sh" >&2; exit 1; }
-jobs=${JOBS:-$(nproc)}
-[[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "scene_vs_tester.sh: JOBS='$jobs' is not a positive integer" >&2; exit 2; }
+source scripts/run_pool.sh
+pool_init "scene vs tester" "${JOBS:-$(nproc)}" || exit 2
 root=${OUTPUT:-output/reference-scene}
 mkdir -p "$root"
 start=$(date +%s)
@@ -34,33 +34,13 @@ run_one() { # <path: tester|scene> <kind> <seed>
   "$wearsim" $command --overwrite "$out.prm" > "$out.log" 2>&1
 }
 
-declare -A pid_of=()
-failed=()
-reap() {
-  local pid=$1 name=${pid_of[$1]}
-  if wait "$pid"; then
-    echo "scene vs tester: $name done ($(( $(date +%s) - start )) s)"
-  else
-    failed+=("$name ($root/$name.log)")
-  fi
-  unset "pid_of[$pid]"
-}
 for seed in "${seeds[@]}"; do
   for kind in plain convex; do
     for path in tester scene; do
-      while [ ${#pid_of[@]} -ge "$jobs" ]; do
-        wait -n -p done_pid "${!pid_of[@]}" || true
-        reap "$done_pid"
-      done
-      run_one "$path" "$kind" "$seed" &
-      pid_of[$!]="$path-$kind-$seed"
+      pool_run "$path-$kind-$seed" "$root/$path-$kind-$seed.log" run_one "$path" "$kind" "$seed"
     done
   done
 done
-for pid in "${!pid_of[@]}"; do reap "$pid"; done
-if [ ${#failed[@]} -gt 0 ]; then
-  printf 'scene vs tester: failed: %s\n' "${failed[@]}" >&2
-  exit 1
-fi
+pool_wait || { printf 'scene vs tester: failed: %s\n' "${POOL_FAILED[@]}" >&2; exit 1; }
 /usr/bin/python3 cases/reference/scene/compare_scene.py --seconds $(( $(date +%s) - start )) \
   "$root" "${seeds[@]}"
