@@ -185,6 +185,9 @@ void System::check_particles_or_throw(const char* stage) {
   default:
     s << "touches more than " << wall_slots << " wall features at once.";
   }
+  const Vec3& x = p.position[i];
+  if (std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(x.z))
+    s << " " << describe_surroundings(i);
   throw std::runtime_error(s.str());
 }
 

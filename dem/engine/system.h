@@ -279,6 +279,9 @@ private:
   /// Closing half-kick of the previous step if `close_previous`; opening half-kick, drift,
   /// list rebuild if needed, forces.
   void advance(bool close_previous);
+  /// The walls within reach of particle i's surface and the particles overlapping it, for the
+  /// message of a run that stops on it (system_diagnostics.cc).
+  std::string describe_surroundings(std::size_t i) const;
   void close_step(); ///< closing half-kick, clock
   /// Particles [first, second) of `thread` in the drift and kick: equal counts.
   std::pair<std::size_t, std::size_t> kick_range(int thread) const;

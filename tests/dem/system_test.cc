@@ -335,7 +335,21 @@ TEST_CASE("bad input stops with a message naming the problem", "[dem][errors]") 
     s.particles.add({1e-4, 0, 0}, {}, 4e-3, 2650, g);
     s.setup();
     CHECK_THROWS_WITH(s.run(100), Catch::Contains("particle") && Catch::Contains("speed limit") &&
-                                      Catch::Contains("overlaps"));
+                                      Catch::Contains("overlaps") &&
+                                      Catch::Contains("1 particle(s) overlapping it, the deepest"));
+  }
+  {
+    System s; // a particle placed 1.2 mm into a wall is thrown out of it; the message says where
+    const int g = add_gravel(s, 0.5, 0.5, 0.0);
+    s.settings.gravity = {};
+    s.settings.max_speed = 5;
+    s.add_wall(MeshWall(box_walls(0.1), g, {}, false, "box"));
+    s.particles.add({0.03, 0.06, 4e-3 - 1.2e-3}, {}, 4e-3, 2650, g);
+    s.setup();
+    CHECK_THROWS_WITH(s.run(100), Catch::Contains("speed limit") &&
+                                      Catch::Contains("Around it now: wall 'box' ") &&
+                                      Catch::Contains("um deep at face") &&
+                                      Catch::Contains("0 particle(s) overlapping it."));
   }
   {
     System s; // no floor: the particle falls out of the domain
