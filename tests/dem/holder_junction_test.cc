@@ -22,13 +22,15 @@ double hertz(double delta) {
 }
 
 /// The sample box [-hx, hx] x [-hy, hy] x [0, T], its top (the wear face) moved by dz and its
-/// +x side by dx: a worn sample sunk into its holder, or parted from its pocket's wall.
-wear::meshes::SurfaceMesh sample_box(double hx, double hy, double T, double dz, double dx) {
+/// +x and +y sides by dx and dy: a worn sample sunk into its holder, or parted from its
+/// pocket's walls.
+wear::meshes::SurfaceMesh sample_box(double hx, double hy, double T, double dz, double dx,
+                                     double dy) {
   wear::meshes::SurfaceMesh m;
   for (int k = 0; k < 2; ++k)
     for (int j = 0; j < 2; ++j)
       for (int i = 0; i < 2; ++i)
-        m.vertices.push_back({(2 * i - 1) * hx + i * dx, (2 * j - 1) * hy, k * (T + dz)});
+        m.vertices.push_back({(2 * i - 1) * hx + i * dx, (2 * j - 1) * hy + j * dy, k * (T + dz)});
   const auto v = [](int i, int j, int k) { return std::uint32_t(i + 2 * j + 4 * k); };
   const auto quad = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d,
                         int l) { // counter-clockwise seen from outside
@@ -42,7 +44,7 @@ wear::meshes::SurfaceMesh sample_box(double hx, double hy, double T, double dz, 
   quad(v(0, 1, 0), v(0, 1, 1), v(1, 1, 1), v(1, 1, 0), label::side);
   quad(v(0, 0, 0), v(0, 0, 1), v(0, 1, 1), v(0, 1, 0), label::side);
   quad(v(1, 0, 0), v(1, 1, 0), v(1, 1, 1), v(1, 0, 1), label::side);
-  REQUIRE(wear::meshes::enclosed_volume(m) == Approx(4 * (hx + dx / 2) * hy * (T + dz)));
+  REQUIRE(wear::meshes::enclosed_volume(m) == Approx(4 * (hx + dx / 2) * (hy + dy / 2) * (T + dz)));
   return m;
 }
 
@@ -51,15 +53,15 @@ struct Seam {
   int sample = 0, holder = 0;
 };
 
-/// The sample (its top moved by dz, its +x side by dx) in the holder frame of
+/// The sample (its top moved by dz, its +x and +y sides by dx and dy) in the holder frame of
 /// meshes::generate_holder, covered faces named or not, one sphere at `centre`, set up.
-void set_up(Seam& s, double dz, double dx, bool covered, const Vec3& centre) {
+void set_up(Seam& s, double dz, double dx, double dy, bool covered, const Vec3& centre) {
   wear::meshes::SampleGeometry g;
   wear::meshes::TesterGeometry t;
   auto& sys = s.system;
   sys.settings.gravity = {0, 0, 0};
   const int m = add_gravel(sys, 0.5, 0.5, 0.0);
-  const auto box = sample_box(g.width / 2, g.length / 2, g.thickness, dz, dx);
+  const auto box = sample_box(g.width / 2, g.length / 2, g.thickness, dz, dx, dy);
   s.sample = sys.add_wall(
       MeshWall(box, m, {}, true, "sample",
                covered ? std::vector<int>{label::side, label::bottom} : std::vector<int>{}));
@@ -96,7 +98,7 @@ TEST_CASE("a sphere on the flush junction of a sample and its holder has one con
   for (const bool covered : {true, false})
     for (const double side : {1.0, -1.0}) { // over the rim, over the wear face
       Seam s;
-      set_up(s, 0, 0, covered, {hx + side * 0.05 * r, 0.013, T + r - delta});
+      set_up(s, 0, 0, 0, covered, {hx + side * 0.05 * r, 0.013, T + r - delta});
       const Vec3 f = s.system.particles.force[0];
       INFO((covered ? "covered" : "not covered")
            << ", centre over the " << (side > 0 ? "rim" : "wear face"));
@@ -147,7 +149,7 @@ TEST_CASE("a worn sample's seam with its holder holds a sphere on the deeper edg
     const double ex = c.x - edge.x, ez = std::sqrt(std::pow(r - delta, 2) - ex * ex);
     const Vec3 centre{c.x, y, edge.z + ez};
     Seam s;
-    set_up(s, c.dz, c.dx, true, centre);
+    set_up(s, c.dz, c.dx, 0, true, centre);
     const Vec3 f = s.system.particles.force[0];
     const Vec3 n = (centre - edge) * (1 / (r - delta));
     CHECK(norm(f) == Approx(hertz(delta)).epsilon(1e-6));
@@ -156,4 +158,29 @@ TEST_CASE("a worn sample's seam with its holder holds a sphere on the deeper edg
     CHECK(elsewhere == 0); // the covered sides take nothing, also from an edge contact
     CHECK((on_wear_face > 0) == c.sample_edge);
   }
+}
+
+TEST_CASE("a sample's corner standing proud of its holder holds a sphere on its vertex",
+          "[dem][walls][holder]") {
+  // The vertex form of a junction: the sample 100 um proud of the rim, the centre beyond its
+  // corner diagonally, over the rim but out of the rim's reach. The closest feature is the
+  // wear face's corner vertex, where the uncovered face meets two covered sides: a junction
+  // judged on the wear face's edges alone. It holds the sphere with its Hertz force along
+  // the line from the vertex to the centre, and its wear goes to the wear face only (the
+  // vertex's share of each face taken over the uncovered faces).
+  const wear::meshes::SampleGeometry g;
+  const double hx = g.width / 2, hy = g.length / 2, T = g.thickness, delta = 5e-5;
+  const double dz = 100e-6, e = 0.05 * r;
+  const Vec3 corner{hx, hy, T + dz};
+  const Vec3 centre{hx + e, hy + e, T + dz + std::sqrt(std::pow(r - delta, 2) - 2 * e * e)};
+  REQUIRE(centre.z - T > r); // the rim's face is out of reach
+  Seam s;
+  set_up(s, dz, 0, 0, true, centre);
+  const Vec3 f = s.system.particles.force[0];
+  const Vec3 n = (centre - corner) * (1 / (r - delta));
+  CHECK(norm(f) == Approx(hertz(delta)).epsilon(1e-6));
+  CHECK(dot(f, n) == Approx(hertz(delta)).epsilon(1e-6));
+  const auto [on_wear_face, elsewhere] = sample_contact_steps(s);
+  CHECK(on_wear_face > 0);
+  CHECK(elsewhere == 0);
 }
