@@ -40,24 +40,25 @@ pool_reap_() { # <pid>: collects one finished run
   unset "POOL_NAME[$pid]" "POOL_LOG[$pid]"
 }
 
-pool_run() { # <name> <log> <command> [argument ...]
-  local name=$1 log=$2 done_pid
-  shift 2
-  while [ ${#POOL_NAME[@]} -ge "$POOL_JOBS" ]; do
+pool_drain_() { # <n>: collects runs as they end until at most n still run
+  local done_pid
+  while [ ${#POOL_NAME[@]} -gt "$1" ]; do
     wait -n -p done_pid "${!POOL_NAME[@]}" || true
     pool_reap_ "$done_pid"
   done
+}
+
+pool_run() { # <name> <log> <command> [argument ...]
+  local name=$1 log=$2
+  shift 2
+  pool_drain_ $((POOL_JOBS - 1))
   "$@" &
   POOL_NAME[$!]=$name
   POOL_LOG[$!]=$log
 }
 
 pool_wait() {
-  local done_pid
-  while [ ${#POOL_NAME[@]} -gt 0 ]; do
-    wait -n -p done_pid "${!POOL_NAME[@]}" || true
-    pool_reap_ "$done_pid"
-  done
+  pool_drain_ 0
   [ ${#POOL_FAILED[@]} -eq 0 ]
 }
 

@@ -44,13 +44,19 @@ inline SceneParameters flat_bottomed_bin(const std::string& walls, double R, dou
   return s;
 }
 
-/// The 60 mm bin of flat_bottomed_bin (0.3 m tall) closed to a 2 mm pinhole, so nothing
-/// drains while a bed settles or stands, with the walls named `walls` (side, floor, others),
-/// and 600 particles to fill the cylinder 2 mm inside its side from 1 mm over the floor.
-inline SceneParameters pinhole_bin_cylinder_fill(const std::string& walls) {
-  SceneParameters s = flat_bottomed_bin(walls, 0.06, 0.3, 0.025, 0.05);
+/// Closes the orifice of a flat_bottomed_bin's floor (wall 1) to a 2 mm pinhole, so nothing
+/// drains while a bed settles or stands.
+inline void close_to_pinhole(SceneParameters& s) {
   s.walls[1].radius_inner = 0.002;
   s.walls[1].mesh_size = 0.006;
+}
+
+/// The 60 mm bin of flat_bottomed_bin (0.3 m tall) closed to a pinhole, with the walls named
+/// `walls` (side, floor, others), and 600 particles to fill the cylinder 2 mm inside its side
+/// from 1 mm over the floor.
+inline SceneParameters pinhole_bin_cylinder_fill(const std::string& walls) {
+  SceneParameters s = flat_bottomed_bin(walls, 0.06, 0.3, 0.025, 0.05);
+  close_to_pinhole(s);
   s.fill.region = "cylinder";
   s.fill.origin = {0, 0, 0.001};
   s.fill.axis = {0, 0, 0.2};

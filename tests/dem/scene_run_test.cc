@@ -34,8 +34,7 @@ SceneParameters bin(double orifice_radius) {
 /// The bin with a pinhole for an orifice: nothing drains while a bed settles or stands.
 SceneParameters pinhole_bin() {
   SceneParameters s = bin(0.025);
-  s.walls[1].radius_inner = 0.002;
-  s.walls[1].mesh_size = 0.006;
+  testing::close_to_pinhole(s);
   return s;
 }
 
