@@ -6,6 +6,7 @@
 // buffers, which are concatenated in thread order; each particle's partners are sorted, so the
 // list is identical for any thread count.
 #include "dem/engine/neighbor_list.h"
+#include "dem/engine/reused_buffer.h"
 
 #include "meshes/surface_mesh.h"
 
@@ -72,7 +73,7 @@ void NeighborList::bin(const Particles& p, const CellGrid& grid) {
   const std::size_t n_all = p.position.size(), n_cells = grid.n_cells();
   const int nx = grid.nx, ny = grid.ny, nz = grid.nz;
   cell_of_.resize(n_all);
-  cell_start_.assign(n_cells + 1, 0);
+  assign_reusing(cell_start_, n_cells + 1, 0u); // the cell count follows the bed's extent
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n_all; ++i) {
     const Vec3& x = p.position[i];
@@ -85,7 +86,8 @@ void NeighborList::bin(const Particles& p, const CellGrid& grid) {
   for (std::size_t c = 0; c < n_cells; ++c)
     cell_start_[c + 1] += cell_start_[c];
   cell_items_.resize(n_all);
-  offset_.assign(cell_start_.begin(), cell_start_.end() - 1); // fill cursor
+  resize_reusing(offset_, n_cells); // fill cursor
+  std::copy(cell_start_.begin(), cell_start_.end() - 1, offset_.begin());
   for (std::size_t i = 0; i < n_all; ++i)
     cell_items_[offset_[cell_of_[i]]++] = static_cast<std::uint32_t>(i);
   // Copies of the binned particles in cell order: the three cells of a stencil row are one

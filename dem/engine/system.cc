@@ -385,7 +385,21 @@ double System::bytes_per_particle() const {
                  sizeof(std::uint32_t) * wall_candidate_offset_.size() +
                  sizeof(FaceBound) * wall_candidate_bound_.size() + double(foreign) +
                  sizeof(WallSlot) * slots_.size();
-  return (bytes + sizeof(PairBlock) * pair_block_.size()) / n;
+  return (bytes + sizeof(PairBlock) * pair_block_.size() + double(rebuild_scratch_.bytes())) / n;
+}
+
+std::size_t System::RebuildScratch::bytes() const {
+  // Capacities, not sizes: the storage is kept between rebuilds.
+  const auto of = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
+  std::size_t b = of(old_histories) + of(old_by_id.bucket) + of(old_by_id.entry) + of(bucket_fill) +
+                  of(slots_of_id) + of(wrap) + of(n_candidates) + of(slots) + of(pair_touch) +
+                  of(sort_key) + of(sort_perm) + of(gather_vec3) + of(gather_double) +
+                  of(gather_int) + of(gather_id);
+  for (const auto& v : thread_histories)
+    b += of(v);
+  for (const auto& v : chunk_candidates)
+    b += of(v);
+  return b;
 }
 
 void System::set_wall_vertices(int w, const std::vector<Vec3>& vertices) {

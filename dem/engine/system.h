@@ -253,25 +253,39 @@ private:
   void rebuild(bool in_step = false, const ParticleChanges* changes = nullptr);
   /// Removes and appends real particles (rebuild's step for `changes`; ghosts dropped).
   void apply_particle_changes(const ParticleChanges& changes);
-  // The steps of rebuild(), in its order (system_rebuild.cc).
-  struct CarriedHistory; // a pair history in the canonical frame, keyed by the stable ids
-  struct HistoryTable;   // carried histories bucketed by the lower id
-  /// The histories of the current list, in the canonical frame and orientation.
-  std::vector<CarriedHistory> canonical_pair_histories() const;
+  // The steps of rebuild(), in its order (system_rebuild.cc). Each receives its inputs and
+  // fills its outputs through its arguments; the buffers are those of rebuild_scratch_, so that
+  // a rebuild in the step loop allocates nothing once they have grown to the bed's size.
+  /// A pair's tangential history in the canonical frame and orientation, keyed by the two
+  /// stable ids (lower << 32 | higher), so that it survives wrapping and reordering.
+  struct CarriedHistory {
+    std::uint64_t key;
+    std::uint32_t lower; ///< current index of the lower-id particle
+    Vec3 h;              ///< [m]
+  };
+  /// Carried histories bucketed by the lower id (counting sort, O(n)): those whose lower id
+  /// is l are entries [bucket[l], bucket[l + 1]), a few each.
+  struct HistoryTable {
+    std::vector<std::uint32_t> bucket;
+    std::vector<CarriedHistory> entry;
+  };
+  /// Collects the histories of the current list, in the canonical frame and orientation, into
+  /// `old` (in no particular order: lookups match the whole key).
+  void canonical_pair_histories(std::vector<CarriedHistory>& old);
   /// Where each particle's wall-contact slots are, by stable id: its index in
   /// wall_particles_, -1 for none.
-  std::vector<std::int32_t> wall_slots_by_id() const;
+  void wall_slots_by_id(std::vector<std::int32_t>& slots_of_id) const;
   /// Wraps the particles into [0, angle), rotating their state, their wall slots and the
   /// carried histories of which they are the lower-id particle.
   void wrap_into_sector(bool in_step, const std::vector<std::int32_t>& slots_of_id,
                         std::vector<CarriedHistory>& old);
-  HistoryTable bucket_by_lower_id(std::vector<CarriedHistory> old) const;
+  void bucket_by_lower_id(const std::vector<CarriedHistory>& old, HistoryTable& table);
   /// Ghosts: images of the particles within reach of the theta = angle plane.
   void make_ghosts();
   /// Histories of the new pair list from the carried ones (zero for a new pair).
   void carry_pair_histories(const HistoryTable& old);
-  /// Lists wall_candidate_ in particle order; returns the count per particle.
-  std::vector<std::uint32_t> find_wall_candidates();
+  /// Lists wall_candidate_ in particle order and the count per particle in `n_candidates`.
+  void find_wall_candidates(std::vector<std::uint32_t>& n_candidates);
   /// wall_candidate_offset_ and wall_particles_ from the counts per particle.
   void index_wall_particles(const std::vector<std::uint32_t>& n_candidates);
   /// slots_ to the new wall_particles_, from where `slots_of_id` had them.
@@ -355,7 +369,6 @@ private:
   // [wall_split_[t], ...) among them; ranges of equal estimated cost (particle_cost_, set at
   // each rebuild). The drift and kick split the particles in equal counts.
   std::vector<double> particle_cost_;
-  std::vector<std::uint8_t> pair_touch_; // rebuild scratch
   std::vector<std::size_t> owner_split_, pair_split_, wall_split_;
   void count_particle_costs();
   void split_ownership();
@@ -384,7 +397,6 @@ private:
   // revolution wall's entry).
   std::vector<FaceBound> wall_candidate_bound_;
   std::vector<std::uint32_t> wall_particles_; // particles with at least one candidate
-  std::vector<std::vector<std::uint32_t>> wall_chunk_found_; // rebuild scratch, per chunk
   // History slots of the wall contacts of near-wall particle q (in wall_particles_ order):
   // entries [wall_slots q, wall_slots q + wall_slots), valid entries first (wall >= 0).
   struct WallSlot {
@@ -392,6 +404,28 @@ private:
     std::int32_t wall = -1;
   };
   std::vector<WallSlot> slots_;
+  /// The buffers of the rebuild's steps (contents meaningful only within one rebuild).
+  struct RebuildScratch {
+    std::vector<std::vector<CarriedHistory>> thread_histories; ///< per thread
+    std::vector<CarriedHistory> old_histories;
+    HistoryTable old_by_id;
+    std::vector<std::uint32_t> bucket_fill;
+    std::vector<std::int32_t> slots_of_id;
+    std::vector<signed char> wrap;
+    std::vector<std::uint32_t> n_candidates;
+    std::vector<std::vector<std::uint32_t>> chunk_candidates; ///< per chunk of particles
+    std::vector<WallSlot> slots;
+    std::vector<std::uint8_t> pair_touch; ///< per listed pair
+    // sort_spatially(): cell keys, the permutation, a gathered copy of one array at a time
+    std::vector<std::uint64_t> sort_key;
+    std::vector<std::uint32_t> sort_perm;
+    std::vector<Vec3> gather_vec3;
+    std::vector<double> gather_double;
+    std::vector<int> gather_int;
+    std::vector<std::int64_t> gather_id;
+    std::size_t bytes() const; ///< [B] the storage held
+  };
+  RebuildScratch rebuild_scratch_;
   /// The history of the untaken old slot (of a near-wall particle) of this wall whose normal
   /// is closest to `normal` (within about 25 degrees), which it marks taken; zero if none.
   static Vec3 carried_wall_history(const WallSlot* old, bool* taken, std::uint32_t wall,

@@ -22,6 +22,7 @@
 // and a wrap across the cut change which of the two is listed first. Keys are stable ids, so
 // the periodic spatial reordering of the particle arrays (for cache locality) keeps every
 // history. Wall-contact slots are per particle, found again by stable id.
+#include "dem/engine/reused_buffer.h"
 #include "dem/engine/system.h"
 #include "meshes/surface_mesh.h"
 
@@ -76,26 +77,14 @@ inline signed char slab_wrap(const Vec3& x, const PeriodicSlab& slab) {
 constexpr std::size_t wall_scan_chunk = 512;
 } // namespace
 
-/// A pair's tangential history in the canonical frame and orientation, keyed by the two
-/// stable ids (lower << 32 | higher), so that it survives wrapping and reordering.
-struct System::CarriedHistory {
-  std::uint64_t key;
-  std::uint32_t lower; ///< current index of the lower-id particle
-  Vec3 h;              ///< [m]
-};
-
-/// Carried histories bucketed by the lower id (counting sort, O(n)): those whose lower id is
-/// l are entries [bucket[l], bucket[l + 1]), a few each.
-struct System::HistoryTable {
-  std::vector<std::uint32_t> bucket;
-  std::vector<CarriedHistory> entry;
-};
-
 void System::rebuild(bool in_step, const ParticleChanges* changes) {
   // Pair histories and wall slots leave the old lists keyed by stable id: the wrap, the
   // reordering, inserted and removed particles and the new lists keep them.
-  std::vector<CarriedHistory> old = canonical_pair_histories();
-  std::vector<std::int32_t> slots_of_id = wall_slots_by_id();
+  RebuildScratch& scratch = rebuild_scratch_;
+  std::vector<CarriedHistory>& old = scratch.old_histories;
+  std::vector<std::int32_t>& slots_of_id = scratch.slots_of_id;
+  canonical_pair_histories(old);
+  wall_slots_by_id(slots_of_id);
   if (periodic())
     wrap_into_sector(in_step, slots_of_id, old);
   if (changes) {
@@ -103,7 +92,8 @@ void System::rebuild(bool in_step, const ParticleChanges* changes) {
     slots_of_id.resize(std::size_t(next_id_), -1); // the new ids own no slots
   }
   const std::size_t n = particles.n_real;
-  const HistoryTable old_by_id = bucket_by_lower_id(std::move(old));
+  HistoryTable& old_by_id = scratch.old_by_id;
+  bucket_by_lower_id(old, old_by_id);
   // Every few rebuilds, reorder particles along the cell grid so that neighbours are
   // neighbours in memory (histories are keyed by id, so nothing is lost).
   if (n >= 1000 && n_rebuilds_ % 10 == 0)
@@ -112,7 +102,8 @@ void System::rebuild(bool in_step, const ParticleChanges* changes) {
   check_particles_or_throw("at a neighbour-list rebuild");
   neighbors_.build(particles, skin_);
   carry_pair_histories(old_by_id);
-  index_wall_particles(find_wall_candidates());
+  find_wall_candidates(scratch.n_candidates);
+  index_wall_particles(scratch.n_candidates);
   carry_wall_slots(slots_of_id);
   count_particle_costs();
   split_ownership();
@@ -124,16 +115,18 @@ void System::rebuild(bool in_step, const ParticleChanges* changes) {
   ++n_rebuilds_;
 }
 
-std::vector<System::CarriedHistory> System::canonical_pair_histories() const {
+void System::canonical_pair_histories(std::vector<CarriedHistory>& old) {
   const auto& p = particles;
   const std::size_t n = p.n_real;
   const double c = cos_t_, s = sin_t_;
   // Each thread collects a contiguous range; the order of the result does not matter (lookups
   // match the whole key).
-  std::vector<std::vector<CarriedHistory>> part(n_threads_);
+  auto& part = rebuild_scratch_.thread_histories;
+  part.resize(std::size_t(n_threads_));
 #pragma omp parallel num_threads(n_threads_)
   {
     auto& mine = part[omp_get_thread_num()];
+    mine.clear();
 #pragma omp for schedule(static)
     for (std::size_t k = 0; k < neighbors_.n_pairs(); ++k) {
       if (meshes::norm2(pair_history_[k]) == 0)
@@ -149,18 +142,16 @@ std::vector<System::CarriedHistory> System::canonical_pair_histories() const {
   std::size_t total = 0;
   for (const auto& v : part)
     total += v.size();
-  std::vector<CarriedHistory> old;
-  old.reserve(total);
+  old.clear();
+  reserve_reusing(old, total);
   for (const auto& v : part)
     old.insert(old.end(), v.begin(), v.end());
-  return old;
 }
 
-std::vector<std::int32_t> System::wall_slots_by_id() const {
-  std::vector<std::int32_t> slots_of_id(std::size_t(next_id_), -1);
+void System::wall_slots_by_id(std::vector<std::int32_t>& slots_of_id) const {
+  assign_reusing(slots_of_id, std::size_t(next_id_), std::int32_t(-1)); // ids grow with inlets
   for (std::size_t q = 0; q < wall_particles_.size(); ++q)
     slots_of_id[particles.id[wall_particles_[q]]] = std::int32_t(q);
-  return slots_of_id;
 }
 
 void System::wrap_into_sector(bool in_step, const std::vector<std::int32_t>& slots_of_id,
@@ -169,7 +160,8 @@ void System::wrap_into_sector(bool in_step, const std::vector<std::int32_t>& slo
   const std::size_t n = p.n_real;
   const double c = cos_t_, s = sin_t_, angle = settings.periodic.angle;
   const PeriodicSlab& slab = settings.periodic_slab;
-  std::vector<signed char> wrap(n, 0);
+  std::vector<signed char>& wrap = rebuild_scratch_.wrap;
+  wrap.resize(n);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     const signed char w =
@@ -199,19 +191,19 @@ void System::wrap_into_sector(bool in_step, const std::vector<std::int32_t>& slo
       e.h = rotate_z(e.h, c, wrap[e.lower] > 0 ? s : -s);
 }
 
-System::HistoryTable System::bucket_by_lower_id(std::vector<CarriedHistory> old) const {
+void System::bucket_by_lower_id(const std::vector<CarriedHistory>& old, HistoryTable& table) {
   const std::size_t n = std::size_t(next_id_); // ids lie below it
-  HistoryTable table;
-  table.bucket.assign(n + 1, 0);
+  assign_reusing(table.bucket, n + 1, 0u);
   for (const auto& e : old)
     ++table.bucket[(e.key >> 32) + 1];
   for (std::size_t i = 0; i < n; ++i)
     table.bucket[i + 1] += table.bucket[i];
-  table.entry.resize(old.size());
-  std::vector<std::uint32_t> fill(table.bucket.begin(), table.bucket.end() - 1);
+  resize_reusing(table.entry, old.size());
+  std::vector<std::uint32_t>& fill = rebuild_scratch_.bucket_fill;
+  resize_reusing(fill, n);
+  std::copy(table.bucket.begin(), table.bucket.end() - 1, fill.begin());
   for (const auto& e : old)
     table.entry[fill[e.key >> 32]++] = e;
-  return table;
 }
 
 void System::make_ghosts() {
@@ -259,7 +251,7 @@ void System::carry_pair_histories(const HistoryTable& old) {
   const auto& p = particles;
   const std::size_t n = p.n_real, np = neighbors_.n_pairs();
   const double c = cos_t_, s = sin_t_;
-  pair_history_.assign(np, {});
+  assign_reusing(pair_history_, np, Vec3{});
   if (old.entry.empty())
     return;
 #pragma omp parallel for schedule(static)
@@ -278,7 +270,7 @@ void System::carry_pair_histories(const HistoryTable& old) {
   }
 }
 
-std::vector<std::uint32_t> System::find_wall_candidates() {
+void System::find_wall_candidates(std::vector<std::uint32_t>& count) {
   // Faces within radius + skin/2 of each particle centre (of a revolution wall, its surface).
   // Until the next rebuild no particle moves more than skin/2 from here (the rebuild
   // trigger, which counts a moving wall's displacement too), and wall geometry changes only
@@ -287,10 +279,17 @@ std::vector<std::uint32_t> System::find_wall_candidates() {
   // relative 1e-9 against round-off.
   const auto& p = particles;
   const std::size_t n = p.n_real;
-  std::vector<std::uint32_t> count(n, 0);
+  count.resize(n);
   const auto scan = [&](std::size_t i, auto&& emit) {
     const Vec3& x = p.position[i];
     const double reach = (p.radius[i] + 0.5 * skin_) * (1 + 1e-9);
+    // A grid cell lists every face within reach of any of its points: on the 1 mm sample mesh
+    // several hundred (a flat patch through a cell and its reach is about 20 x 20 mm at s = 3),
+    // nearly all beyond reach of a given centre. The face bounds' tests
+    // (lower bounds of the distance, as in the step) skip those first; widened by a further
+    // 1e-9, far above their round-off, they skip only faces the closest-point test would
+    // reject too, so the candidates are the same.
+    const double cull = reach * (1 + 1e-9);
     for (std::size_t w = 0; w < wall_kind_.size(); ++w) {
       const std::size_t local = std::size_t(wall_local_[w]);
       if (wall_kind_[w] == WallKind::revolution) {
@@ -298,21 +297,24 @@ std::vector<std::uint32_t> System::find_wall_candidates() {
           emit(std::uint32_t(w << 24)); // its one "face", 0: the exact closest point
         continue;
       }
-      const Vec3 xb = walls_[local].to_body(x);
-      auto [b, e] = walls_[local].candidates(xb);
+      const MeshWall& wall = walls_[local];
+      const Vec3 xb = wall.to_body(x);
+      auto [b, e] = wall.candidates(xb);
       for (; b != e; ++b)
-        if (meshes::norm2(walls_[local].closest(*b, xb).point - xb) < reach * reach)
+        if (!wall.bound(*b).rejects(xb, cull) &&
+            meshes::norm2(wall.closest(*b, xb).point - xb) < reach * reach)
           emit(std::uint32_t(w << 24) | *b);
     }
   };
   // Each chunk has its own buffer and they are concatenated in chunk order, which is the
   // serial order.
   const std::size_t n_chunks = (n + wall_scan_chunk - 1) / wall_scan_chunk;
-  if (wall_chunk_found_.size() < n_chunks)
-    wall_chunk_found_.resize(n_chunks);
+  auto& found = rebuild_scratch_.chunk_candidates;
+  if (found.size() < n_chunks)
+    found.resize(n_chunks);
 #pragma omp parallel for schedule(dynamic) num_threads(n_threads_)
   for (std::size_t ch = 0; ch < n_chunks; ++ch) {
-    auto& mine = wall_chunk_found_[ch];
+    auto& mine = found[ch];
     mine.clear();
     for (std::size_t i = ch * wall_scan_chunk; i < std::min(n, (ch + 1) * wall_scan_chunk); ++i) {
       const std::size_t before = mine.size();
@@ -322,9 +324,7 @@ std::vector<std::uint32_t> System::find_wall_candidates() {
   }
   wall_candidate_.clear();
   for (std::size_t ch = 0; ch < n_chunks; ++ch)
-    wall_candidate_.insert(wall_candidate_.end(), wall_chunk_found_[ch].begin(),
-                           wall_chunk_found_[ch].end());
-  return count;
+    wall_candidate_.insert(wall_candidate_.end(), found[ch].begin(), found[ch].end());
 }
 
 void System::index_wall_particles(const std::vector<std::uint32_t>& n_candidates) {
@@ -339,7 +339,8 @@ void System::index_wall_particles(const std::vector<std::uint32_t>& n_candidates
 }
 
 void System::carry_wall_slots(const std::vector<std::int32_t>& slots_of_id) {
-  std::vector<WallSlot> slots(wall_slots * wall_particles_.size());
+  std::vector<WallSlot>& slots = rebuild_scratch_.slots;
+  assign_reusing(slots, wall_slots * wall_particles_.size(), WallSlot{});
   for (std::size_t q = 0; q < wall_particles_.size(); ++q) {
     const std::int32_t old_q = slots_of_id[particles.id[wall_particles_[q]]];
     if (old_q >= 0)
@@ -358,10 +359,14 @@ void System::sort_spatially() {
   // layer of columns instead of a whole horizontal layer), and the threads' contiguous ranges
   // meet across vertical planes instead of one horizontal plane through the whole bed.
   int axis[3] = {0, 1, 2};
-  std::stable_sort(axis, axis + 3, [&](int a, int b) { return extent[a] > extent[b]; });
+  for (int k = 1; k < 3; ++k) // a stable insertion sort (std::stable_sort allocates a buffer)
+    for (int m = k; m > 0 && extent[axis[m]] > extent[axis[m - 1]]; --m)
+      std::swap(axis[m], axis[m - 1]);
   const double cell = 2 * r_max_ + skin_;
-  std::vector<std::uint64_t> key(n);
-  std::vector<std::uint32_t> perm(n);
+  std::vector<std::uint64_t>& key = rebuild_scratch_.sort_key;
+  std::vector<std::uint32_t>& perm = rebuild_scratch_.sort_perm;
+  key.resize(n);
+  perm.resize(n);
 #pragma omp parallel for schedule(static) num_threads(n_threads_)
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 q = (p.position[i] - lo) / cell;
@@ -369,24 +374,36 @@ void System::sort_spatially() {
              std::uint64_t(q[axis[2]]);
     perm[i] = std::uint32_t(i);
   }
-  std::stable_sort(perm.begin(), perm.end(),
-                   [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
-  const auto apply = [&](auto& v) {
-    const auto copy = v;
-#pragma omp parallel for schedule(static) num_threads(n_threads_)
-    for (std::size_t k = 0; k < n; ++k)
-      v[k] = copy[perm[k]];
+  // The order of a stable sort by key (equal keys keep their index order), without the
+  // buffer std::stable_sort allocates.
+  std::sort(perm.begin(), perm.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return key[a] < key[b] || (key[a] == key[b] && a < b);
+  });
+  // Each array is gathered into a buffer of its type and copied back (its ghost slots, beyond
+  // n, are left as they are: make_ghosts() fills them anew).
+  const auto apply = [&](auto& v, auto& gathered) {
+    gathered.resize(n);
+#pragma omp parallel num_threads(n_threads_)
+    {
+#pragma omp for schedule(static)
+      for (std::size_t k = 0; k < n; ++k)
+        gathered[k] = v[perm[k]];
+#pragma omp for schedule(static)
+      for (std::size_t k = 0; k < n; ++k)
+        v[k] = gathered[k];
+    }
   };
-  apply(p.position);
-  apply(p.velocity);
-  apply(p.angular_velocity);
-  apply(p.force);
-  apply(p.torque);
-  apply(p.radius);
-  apply(p.mass);
-  apply(p.inertia);
-  apply(p.material);
-  apply(p.id);
+  RebuildScratch& scratch = rebuild_scratch_;
+  apply(p.position, scratch.gather_vec3);
+  apply(p.velocity, scratch.gather_vec3);
+  apply(p.angular_velocity, scratch.gather_vec3);
+  apply(p.force, scratch.gather_vec3);
+  apply(p.torque, scratch.gather_vec3);
+  apply(p.radius, scratch.gather_double);
+  apply(p.mass, scratch.gather_double);
+  apply(p.inertia, scratch.gather_double);
+  apply(p.material, scratch.gather_int);
+  apply(p.id, scratch.gather_id);
 }
 
 void System::refresh_ghosts() {
@@ -411,12 +428,13 @@ void System::count_particle_costs() {
   // 8 of its own.
   const auto& p = particles;
   const std::size_t n = p.n_real, np = neighbors_.n_pairs();
-  pair_touch_.resize(np);
+  std::vector<std::uint8_t>& pair_touch = rebuild_scratch_.pair_touch;
+  pair_touch.resize(np);
 #pragma omp parallel for schedule(static) num_threads(n_threads_)
   for (std::size_t k = 0; k < np; ++k) {
     const double rs = p.radius[neighbors_.pair_i[k]] + p.radius[neighbors_.pair_j[k]];
-    pair_touch_[k] = meshes::norm2(p.position[neighbors_.pair_i[k]] -
-                                   p.position[neighbors_.pair_j[k]]) < rs * rs;
+    pair_touch[k] = meshes::norm2(p.position[neighbors_.pair_i[k]] -
+                                  p.position[neighbors_.pair_j[k]]) < rs * rs;
   }
   particle_cost_.resize(n);
 #pragma omp parallel for schedule(static) num_threads(n_threads_)
@@ -434,7 +452,7 @@ void System::count_particle_costs() {
     const auto k0 = std::size_t(std::lower_bound(pi.begin(), pi.end(), first) - pi.begin());
     const auto k1 = std::size_t(std::lower_bound(pi.begin(), pi.end(), last) - pi.begin());
     for (std::size_t k = k0; k < k1; ++k)
-      particle_cost_[pi[k]] += 1.0 + 4.0 * pair_touch_[k];
+      particle_cost_[pi[k]] += 1.0 + 4.0 * pair_touch[k];
   }
 }
 
