@@ -54,6 +54,7 @@ void NeighborList::build(const Particles& p, double skin) {
       n_threads = omp_get_num_threads();
       chunk_i_.resize(n_threads);
       chunk_j_.resize(n_threads);
+      chunk_scan_.resize(n_threads);
     }
     const int t = omp_get_thread_num();
     auto& ci = chunk_i_[t];
@@ -62,7 +63,7 @@ void NeighborList::build(const Particles& p, double skin) {
     cj.clear();
 #pragma omp for schedule(static)
     for (std::size_t i = 0; i < p.n_real; ++i) {
-      const std::size_t m = list_partners(p, grid, skin, i, cj);
+      const std::size_t m = list_partners(p, grid, skin, i, chunk_scan_[t], cj);
       ci.insert(ci.end(), m, static_cast<std::uint32_t>(i));
     }
   }
@@ -102,6 +103,7 @@ void NeighborList::bin(const Particles& p, const CellGrid& grid) {
 
 inline std::size_t NeighborList::list_partners(const Particles& p, const CellGrid& grid,
                                                double skin, std::size_t i,
+                                               std::vector<std::uint32_t>& scan,
                                                std::vector<std::uint32_t>& out) const {
   const int nx = grid.nx, ny = grid.ny, nz = grid.nz;
   const Vec3& xi = p.position[i];
@@ -120,9 +122,11 @@ inline std::size_t NeighborList::list_partners(const Particles& p, const CellGri
       n_candidates += run_end[n_runs] - run_begin[n_runs];
       ++n_runs;
     }
-  const std::size_t first = out.size();
-  out.resize(first + n_candidates);
-  std::uint32_t* dst = out.data() + first;
+  // The candidates go to `scan`, which only grows: resizing `out` by the candidate count and
+  // back would zero some 100 entries per particle to keep about 4.
+  if (scan.size() < n_candidates)
+    resize_reusing(scan, n_candidates);
+  std::uint32_t* dst = scan.data();
   std::size_t m = 0;
   for (int r = 0; r < n_runs; ++r)
     // Branch-free: most candidates are rejected, unpredictably.
@@ -135,7 +139,7 @@ inline std::size_t NeighborList::list_partners(const Particles& p, const CellGri
       m += (dx * dx + dy * dy + dz * dz < cut * cut) & (o > i || o >= p.n_real);
     }
   std::sort(dst, dst + m);
-  out.resize(first + m);
+  out.insert(out.end(), dst, dst + m);
   return m;
 }
 

@@ -22,8 +22,10 @@ private:
   static CellGrid make_grid(const Particles& p, double skin);
   /// Bins the slots into the cells (counting sort: cell_start_, cell_items_, binned_).
   void bin(const Particles& p, const CellGrid& grid);
-  /// Appends to `out` the partners of real particle i, sorted; returns their count.
+  /// Appends to `out` the partners of real particle i, sorted; returns their count. `scan`
+  /// holds the stencil's candidates (grown as needed, never shrunk).
   std::size_t list_partners(const Particles& p, const CellGrid& grid, double skin, std::size_t i,
+                            std::vector<std::uint32_t>& scan,
                             std::vector<std::uint32_t>& out) const;
   /// pair_i, pair_j from the threads' buffers, in thread order.
   void concatenate(int n_threads);
@@ -33,7 +35,7 @@ private:
     double x, y, z, r; ///< [m] position and radius of cell_items_[s]
   };
   std::vector<Binned> binned_;
-  std::vector<std::vector<std::uint32_t>> chunk_i_, chunk_j_; // per thread, reused
+  std::vector<std::vector<std::uint32_t>> chunk_i_, chunk_j_, chunk_scan_; // per thread, reused
 };
 
 } // namespace wear::dem

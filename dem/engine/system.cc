@@ -395,8 +395,6 @@ std::size_t System::RebuildScratch::bytes() const {
                   of(slots_of_id) + of(wrap) + of(n_candidates) + of(slots) + of(pair_touch) +
                   of(sort_key) + of(sort_perm) + of(gather_vec3) + of(gather_double) +
                   of(gather_int) + of(gather_id);
-  for (const auto& v : thread_histories)
-    b += of(v);
   for (const auto& v : chunk_candidates)
     b += of(v);
   return b;

@@ -406,7 +406,7 @@ private:
   std::vector<WallSlot> slots_;
   /// The buffers of the rebuild's steps (contents meaningful only within one rebuild).
   struct RebuildScratch {
-    std::vector<std::vector<CarriedHistory>> thread_histories; ///< per thread
+    std::vector<std::size_t> thread_offset; ///< of each thread's carried histories
     std::vector<CarriedHistory> old_histories;
     HistoryTable old_by_id;
     std::vector<std::uint32_t> bucket_fill;

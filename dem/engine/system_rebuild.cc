@@ -117,18 +117,30 @@ void System::rebuild(bool in_step, const ParticleChanges* changes) {
 
 void System::canonical_pair_histories(std::vector<CarriedHistory>& old) {
   const auto& p = particles;
-  const std::size_t n = p.n_real;
+  const std::size_t n = p.n_real, np = neighbors_.n_pairs();
   const double c = cos_t_, s = sin_t_;
-  // Each thread collects a contiguous range; the order of the result does not matter (lookups
-  // match the whole key).
-  auto& part = rebuild_scratch_.thread_histories;
-  part.resize(std::size_t(n_threads_));
+  // Each thread counts the histories of its static range of the list, then writes them at its
+  // offset: the result is in list order, for any thread count (lookups match the whole key).
+  auto& offset = rebuild_scratch_.thread_offset;
+  offset.assign(std::size_t(n_threads_) + 1, 0);
 #pragma omp parallel num_threads(n_threads_)
   {
-    auto& mine = part[omp_get_thread_num()];
-    mine.clear();
+    const std::size_t t = std::size_t(omp_get_thread_num());
+    std::size_t count = 0;
 #pragma omp for schedule(static)
-    for (std::size_t k = 0; k < neighbors_.n_pairs(); ++k) {
+    for (std::size_t k = 0; k < np; ++k)
+      count += meshes::norm2(pair_history_[k]) != 0;
+    offset[t + 1] = count;
+#pragma omp barrier
+#pragma omp single
+    {
+      for (std::size_t u = 0; u < std::size_t(n_threads_); ++u)
+        offset[u + 1] += offset[u];
+      resize_reusing(old, offset.back());
+    }
+    std::size_t at = offset[t];
+#pragma omp for schedule(static)
+    for (std::size_t k = 0; k < np; ++k) {
       if (meshes::norm2(pair_history_[k]) == 0)
         continue;
       const std::uint32_t i = neighbors_.pair_i[k], j = neighbors_.pair_j[k];
@@ -136,16 +148,9 @@ void System::canonical_pair_histories(std::vector<CarriedHistory>& old) {
       const std::uint32_t b = ghost ? ghost_owner_[j - n] : j;
       const auto id_i = std::uint64_t(p.id[i]), id_b = std::uint64_t(p.id[b]);
       const Vec3 h = reorient_history(pair_history_[k], id_b < id_i, ghost, c, s);
-      mine.push_back({(std::min(id_i, id_b) << 32) | std::max(id_i, id_b), id_b < id_i ? b : i, h});
+      old[at++] = {(std::min(id_i, id_b) << 32) | std::max(id_i, id_b), id_b < id_i ? b : i, h};
     }
   }
-  std::size_t total = 0;
-  for (const auto& v : part)
-    total += v.size();
-  old.clear();
-  reserve_reusing(old, total);
-  for (const auto& v : part)
-    old.insert(old.end(), v.begin(), v.end());
 }
 
 void System::wall_slots_by_id(std::vector<std::int32_t>& slots_of_id) const {
