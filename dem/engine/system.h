@@ -270,7 +270,7 @@ private:
     std::vector<CarriedHistory> entry;
   };
   /// Collects the histories of the current list, in the canonical frame and orientation, into
-  /// `old` (in no particular order: lookups match the whole key).
+  /// `old`, in list order (lookups match the whole key, so no order is relied on).
   void canonical_pair_histories(std::vector<CarriedHistory>& old);
   /// Where each particle's wall-contact slots are, by stable id: its index in
   /// wall_particles_, -1 for none.
