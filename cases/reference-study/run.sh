@@ -7,11 +7,17 @@
 #
 # usage: bash cases/reference-study/run.sh [case ...]
 #        case: the name of a case file here without .prm (default: plain convex)
-#        WEARSIM=<binary> (default build/wearsim; the study's engine is named in its report),
+#        WEARSIM=<binary> (default: the study's engine, engine.sh, built on first use),
 #        JOBS=<n> runs at once (default: the number of cores)
+# A case with no checkpoint in output/reference-study but one kept in
+# cases/reference-study/state (save_state.sh, carried between machines in the repository)
+# continues from the kept one.
 set -uo pipefail
 cd "$(dirname "$0")/../.."
-wearsim=${WEARSIM:-build/wearsim}
+wearsim=${WEARSIM:-}
+if [ -z "$wearsim" ]; then
+  wearsim=$(bash cases/reference-study/engine.sh) || { echo "run.sh: no study engine" >&2; exit 2; }
+fi
 source scripts/run_pool.sh
 pool_init "reference study" "${JOBS:-$(nproc)}" || exit 2
 cases=("$@")
@@ -24,6 +30,14 @@ done
 root=output/reference-study
 mkdir -p "$root"
 echo "reference study: $("$wearsim" --version), ${#cases[@]} case(s), $POOL_JOBS at once"
+
+restore_kept() { # <case>: the kept state into an output folder that holds no run
+  local kept="cases/reference-study/state/$1" out="$root/$1"
+  [ -f "$kept/checkpoint.h5" ] && [ ! -f "$out/checkpoint.h5" ] || return 0
+  mkdir -p "$out"
+  cp -r "$kept/." "$out/"
+  echo "reference study: $1 continues from the kept state ($(cat "$kept/KEPT" 2>/dev/null))"
+}
 
 run_one() { # <case>: start or continue one case, its log beside its folder
   local prm="cases/reference-study/$1.prm" out="$root/$1" mode=--overwrite
@@ -39,6 +53,7 @@ stop_all() {
 }
 trap stop_all INT TERM
 for c in "${cases[@]}"; do
+  restore_kept "$c"
   pool_run "$c" "$root/$c.log" run_one "$c"
   echo "reference study: $c started $(date -u +%TZ)"
 done
