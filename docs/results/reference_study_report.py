@@ -2,13 +2,15 @@
 """The reference study's report (issue 32), generated from its run folders.
 
 Usage: /usr/bin/python3 docs/results/reference_study_report.py [--runs DIR] [--out DIR]
-           [--calibration RUN]
+           [--calibration RUN] [--check]
 
 --runs         the study's run folders (default output/reference-study): plain, convex (the
                study), plain-seed2/3 and convex-seed2/3 (seeds), plain-s4/s2 and
                convex-s4/s2 (particle size), as cases/reference-study/run.sh writes them
 --out          where reference-study.md and its plots go (default docs/results)
 --calibration  the calibration run (default output/calibration-plain)
+--check        only read the run folders and check them (the study pair present, one engine
+               version); print what would be reported from, write nothing
 
 Each run's summary.csv, history.h5 and surface/stage_*.h5 are read. The study pair is
 required; every other run missing is listed as not run. All runs present must name the same
@@ -522,6 +524,8 @@ def report(runs, missing, cal, out):
 
 def main(argv):
     args = {"--runs": "output/reference-study", "--out": "docs/results", "--calibration": "output/calibration-plain"}
+    check_only = "--check" in argv
+    argv = [a for a in argv if a != "--check"]
     k = 0
     while k < len(argv):
         if argv[k] in args and k + 1 < len(argv):
@@ -530,6 +534,10 @@ def main(argv):
         else:
             fail(f"unexpected argument '{argv[k]}'; {__doc__.splitlines()[2]}")
     runs, missing, cal = load_runs(args["--runs"], args["--calibration"])
+    if check_only:
+        print(f"{PROG}: {len(runs)} runs ({', '.join(runs)}), engine {runs['plain'].engine}, "
+              f"calibration {'present' if cal else 'not run'}; not run: {', '.join(missing) or 'none'}")
+        return
     out = args["--out"]
     os.makedirs(out, exist_ok=True)
     plot_wear(runs, out)
