@@ -42,6 +42,11 @@ NeighborList::CellGrid NeighborList::make_grid(const Particles& p, double skin) 
 }
 
 void NeighborList::build(const Particles& p, double skin) {
+  if (p.position.empty()) { // a rank of a decomposed bed may hold nothing
+    pair_i.clear();
+    pair_j.clear();
+    return;
+  }
   const CellGrid grid = make_grid(p, skin);
   bin(p, grid);
   // One pass: each thread takes a contiguous range of particles and appends to its own

@@ -46,7 +46,9 @@ double System::rayleigh_time() const {
 
 void System::setup() {
   auto& p = particles;
-  if (p.n_real == 0)
+  if (rank_link_)
+    distribute_over_ranks();
+  else if (p.n_real == 0)
     throw std::invalid_argument("DEM: no particles");
   for (std::size_t i = 0; i < p.n_real; ++i) {
     if (!(p.radius[i] > 0) || !std::isfinite(p.radius[i]))
@@ -58,7 +60,15 @@ void System::setup() {
   }
   contact_ = materials.contact_table();
   n_mat_ = materials.n_materials();
-  const double t_r = rayleigh_time();
+  double t_r = rayleigh_time();
+  // A rank may hold no particle: the extremes start from the neutral values.
+  double r_max = settings.max_radius, r_min = std::numeric_limits<double>::infinity();
+  if (p.n_real > 0) {
+    r_max = std::max(r_max, *std::max_element(p.radius.begin(), p.radius.begin() + p.n_real));
+    r_min = *std::min_element(p.radius.begin(), p.radius.begin() + p.n_real);
+  }
+  if (rank_link_)
+    reduce_setup_values(t_r, r_max, r_min);
   dt_ = settings.time_step > 0 ? settings.time_step : settings.time_step_fraction * t_r;
   if (!(dt_ > 0) || !std::isfinite(dt_))
     throw std::invalid_argument("DEM/Time step: must be positive");
@@ -69,9 +79,7 @@ void System::setup() {
       << " s of the smallest particle; the limit is 40 % (set 'Force time step' to override)";
     throw std::invalid_argument(s.str());
   }
-  r_max_ = std::max(settings.max_radius,
-                    *std::max_element(p.radius.begin(), p.radius.begin() + p.n_real));
-  double r_min = *std::min_element(p.radius.begin(), p.radius.begin() + p.n_real);
+  r_max_ = r_max;
   skin_ = settings.skin > 0 ? settings.skin : 0.5 * r_min;
   if (settings.periodic.enabled) {
     const double a = settings.periodic.angle;
@@ -106,6 +114,8 @@ void System::setup() {
     throw std::invalid_argument(
         "DEM: walls with a rigid motion cannot be combined with a periodic boundary");
   next_id_ = first_free_id(p.id.data(), p.n_real);
+  if (rank_link_)
+    check_ranks_at_setup();
   set_n_threads(omp_get_max_threads());
   set_up_ = true;
   time_ = settings.start_time;
@@ -114,6 +124,8 @@ void System::setup() {
   rebuild();
   reset_forces();
   compute_forces();
+  if (rank_link_)
+    return_ghost_forces();
 }
 
 void System::set_n_threads(int n) {
@@ -129,7 +141,7 @@ void System::set_n_threads(int n) {
   phase_times_ = {};
   error_particle_.assign(n_threads_, -1);
   error_kind_.assign(n_threads_, no_error);
-  if (!particle_cost_.empty())
+  if (!owner_split_.empty()) // split once by a rebuild (a rank's slab may hold no particle)
     split_ownership();
 }
 
@@ -263,14 +275,18 @@ void System::advance(bool close_previous) {
       check_particles_or_throw("in the drift");
   const double t_drift = omp_get_wtime();
   phase_times_.integration += t_drift - t_begin;
-  if (need_rebuild) {
-    rebuild(true);
-    phase_times_.rebuild += omp_get_wtime() - t_drift;
+  if (rank_link_) {
+    ranked_forces(need_rebuild, t_drift);
   } else {
-    refresh_ghosts();
-    phase_times_.integration += omp_get_wtime() - t_drift;
+    if (need_rebuild) {
+      rebuild(true);
+      phase_times_.rebuild += omp_get_wtime() - t_drift;
+    } else {
+      refresh_ghosts();
+      phase_times_.integration += omp_get_wtime() - t_drift;
+    }
+    compute_forces();
   }
-  compute_forces();
   for (int t = 0; t < n_threads_; ++t)
     if (error_kind_[t] != no_error)
       check_particles_or_throw("in the force computation");

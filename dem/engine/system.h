@@ -5,6 +5,7 @@
 #include "dem/engine/neighbor_list.h"
 #include "dem/engine/pair_kernel.h"
 #include "dem/engine/particles.h"
+#include "dem/engine/rank_link.h"
 #include "dem/engine/revolution_wall.h"
 
 #include <cstdint>
@@ -240,6 +241,13 @@ public:
   WearIntegrals wear_integrals(int wall) const;
   void reset_wear_integrals();
 
+  /// Decomposes the bed over ranks, one slab each (docs/dem.md, "A bed decomposed over
+  /// ranks"); before setup(), which passes each particle to the rank that owns it and refuses
+  /// slabs narrower than the reach. Every rank then calls the same functions in the same order
+  /// (the steps exchange messages). `link` and `slabs` must outlive the System. No link or one
+  /// rank: the engine of one process, bit for bit.
+  void set_rank_link(RankLink* link, const RankSlabs* slabs);
+
 private:
   /// Particles to add and a rule for those to remove, applied by a rebuild between steps.
   struct ParticleChanges {
@@ -280,7 +288,8 @@ private:
   void wrap_into_sector(bool in_step, const std::vector<std::int32_t>& slots_of_id,
                         std::vector<CarriedHistory>& old);
   void bucket_by_lower_id(const std::vector<CarriedHistory>& old, HistoryTable& table);
-  /// Ghosts: images of the particles within reach of the theta = angle plane.
+  /// Ghosts: images of the particles within reach of the theta = angle plane, then those of
+  /// the rank below (over ranks).
   void make_ghosts();
   /// Histories of the new pair list from the carried ones (zero for a new pair).
   void carry_pair_histories(const HistoryTable& old);
@@ -328,6 +337,37 @@ private:
   void take_particles(const SystemState& s);
   /// Ghost slots of ghost_owner_ with their owners' properties and current state.
   void fill_ghost_slots();
+
+  // A bed over ranks (system_ranks.cc); rank_link_ is null on one rank.
+  RankLink* rank_link_ = nullptr;
+  const RankSlabs* rank_slabs_ = nullptr;
+  SlabCuts slab_cuts_;
+  /// Ghost slots [n_real, n_real + this) are periodic images; the rest, ghosts of the rank below.
+  std::size_t n_periodic_ghosts_ = 0;
+  /// The rank messages' buffers and what the last rebuild decided (kept between steps).
+  struct RankScratch {
+    std::vector<signed char> leaving; ///< per real particle: -1 to the rank below, +1 above
+    std::vector<std::uint8_t> leaves_by_id;
+    std::vector<std::uint32_t> sent_up; ///< particles the rank above holds ghosts of, in order
+    std::vector<double> up, down, from_below, from_above;
+  };
+  RankScratch rank_scratch_;
+  /// setup(): every particle to its owner (each keeps its own when all ranks hold the same bed).
+  void distribute_over_ranks();
+  /// setup(): the Rayleigh time and the smallest radius as minima, r_max as maximum, over ranks.
+  void reduce_setup_values(double& t_r, double& r_max, double& r_min);
+  /// setup(): no periodic boundary, next_id_ over ranks, ids unique, slabs as wide as the reach.
+  void check_ranks_at_setup();
+  void move_particle(std::size_t to, std::size_t from); ///< real particle `from` into slot `to`
+  /// rebuild(): particles that left the slab go to the neighbour with their wall slots; the
+  /// histories of their pairs go to both neighbours (appended to `old`, slots_of_id extended).
+  void migrate_over_ranks(std::vector<std::int32_t>& slots_of_id, std::vector<CarriedHistory>& old);
+  void exchange_rank_ghosts(); ///< sends the ghosts up, appends those from below to ghost_owner_
+  void place_rank_ghosts();    ///< their slots from the message
+  void refresh_rank_ghosts();  ///< each step: positions, velocities and spins from the owners
+  void return_ghost_forces();  ///< each step: forces on the ghosts back to the owners
+  /// advance() over ranks: the common rebuild decision, ghosts, forces and their return.
+  void ranked_forces(bool need_rebuild, double t_drift);
 
   // Walls in one numbering w: wall_kind_[w] says which array holds it, at wall_local_[w].
   std::vector<MeshWall> walls_;

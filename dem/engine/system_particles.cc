@@ -99,7 +99,7 @@ void System::apply_particle_changes(const ParticleChanges& changes) {
       ++kept;
     }
     n = kept;
-    if (n == 0)
+    if (n == 0 && !rank_link_) // over ranks, another may still hold particles
       throw std::runtime_error(
           "DEM: the outlets removed every particle at t = " + std::to_string(time_) + " s");
   }
@@ -107,6 +107,12 @@ void System::apply_particle_changes(const ParticleChanges& changes) {
   p.resize_ghosts(0); // make_ghosts() sizes the ghost region anew
   if (changes.insert)
     for (const NewParticle& q : *changes.insert) {
+      // Over ranks every rank is given the whole batch and keeps those in its slab; the ids
+      // are counted on all of them alike.
+      if (rank_link_ && slab_cuts_.owner(q.position) != rank_link_->rank()) {
+        ++next_id_;
+        continue;
+      }
       p.add(q.position, q.velocity, q.radius, q.density, q.material);
       p.angular_velocity.back() = q.angular_velocity;
       p.force.back() = settings.gravity * p.mass.back();

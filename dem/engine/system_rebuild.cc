@@ -87,6 +87,8 @@ void System::rebuild(bool in_step, const ParticleChanges* changes) {
   wall_slots_by_id(slots_of_id);
   if (periodic())
     wrap_into_sector(in_step, slots_of_id, old);
+  if (rank_link_)
+    migrate_over_ranks(slots_of_id, old);
   if (changes) {
     apply_particle_changes(*changes);
     slots_of_id.resize(std::size_t(next_id_), -1); // the new ids own no slots
@@ -144,10 +146,11 @@ void System::canonical_pair_histories(std::vector<CarriedHistory>& old) {
       if (meshes::norm2(pair_history_[k]) == 0)
         continue;
       const std::uint32_t i = neighbors_.pair_i[k], j = neighbors_.pair_j[k];
-      const bool ghost = j >= n;
-      const std::uint32_t b = ghost ? ghost_owner_[j - n] : j;
+      const std::uint32_t b = j >= n ? ghost_owner_[j - n] : j;
       const auto id_i = std::uint64_t(p.id[i]), id_b = std::uint64_t(p.id[b]);
-      const Vec3 h = reorient_history(pair_history_[k], id_b < id_i, ghost, c, s);
+      // Only the periodic images are rotated (ghosts of another rank are not).
+      const bool rotated = j >= n && j < n + n_periodic_ghosts_;
+      const Vec3 h = reorient_history(pair_history_[k], id_b < id_i, rotated, c, s);
       old[at++] = {(std::min(id_i, id_b) << 32) | std::max(id_i, id_b), id_b < id_i ? b : i, h};
     }
   }
@@ -232,7 +235,12 @@ void System::make_ghosts() {
         ghost_owner_.push_back(i);
     }
   }
+  n_periodic_ghosts_ = ghost_owner_.size();
+  if (rank_link_)
+    exchange_rank_ghosts();
   fill_ghost_slots();
+  if (rank_link_)
+    place_rank_ghosts();
 }
 
 void System::fill_ghost_slots() {
@@ -241,7 +249,7 @@ void System::fill_ghost_slots() {
   p.resize_ghosts(ghost_owner_.size());
   packed_position_.resize(p.position.size());
   packed_motion_.resize(p.position.size());
-  for (std::size_t g = 0; g < ghost_owner_.size(); ++g) {
+  for (std::size_t g = 0; g < n_periodic_ghosts_; ++g) {
     const auto o = ghost_owner_[g];
     p.radius[n + g] = p.radius[o];
     p.mass[n + g] = p.mass[o];
@@ -262,14 +270,14 @@ void System::carry_pair_histories(const HistoryTable& old) {
 #pragma omp parallel for schedule(static)
   for (std::size_t k = 0; k < np; ++k) {
     const std::uint32_t i = neighbors_.pair_i[k], j = neighbors_.pair_j[k];
-    const bool ghost = j >= n;
-    const std::uint32_t b = ghost ? ghost_owner_[j - n] : j;
+    const std::uint32_t b = j >= n ? ghost_owner_[j - n] : j;
+    const bool rotated = j >= n && j < n + n_periodic_ghosts_;
     const auto id_i = std::uint64_t(p.id[i]), id_b = std::uint64_t(p.id[b]);
     const std::uint64_t key = (std::min(id_i, id_b) << 32) | std::max(id_i, id_b);
     const std::size_t lower = std::min(id_i, id_b);
     for (auto q = old.bucket[lower]; q < old.bucket[lower + 1]; ++q)
       if (old.entry[q].key == key) {
-        pair_history_[k] = reorient_history(old.entry[q].h, id_b < id_i, ghost, c, -s);
+        pair_history_[k] = reorient_history(old.entry[q].h, id_b < id_i, rotated, c, -s);
         break;
       }
   }
@@ -415,7 +423,7 @@ void System::refresh_ghosts() {
   auto& p = particles;
   const std::size_t n = p.n_real;
   const double c = cos_t_, s = -sin_t_; // ghosts are rotated by -angle
-  for (std::size_t g = 0; g < ghost_owner_.size(); ++g) {
+  for (std::size_t g = 0; g < n_periodic_ghosts_; ++g) {
     const auto o = ghost_owner_[g];
     p.position[n + g] = rotate_z(p.position[o], c, s) - shift_;
     packed_position_[n + g] = {p.position[n + g].x, p.position[n + g].y, p.position[n + g].z,

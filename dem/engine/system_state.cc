@@ -29,6 +29,8 @@ namespace wear::dem {
 SystemState System::export_state() const {
   if (!set_up_)
     throw std::logic_error("System::export_state() before setup()");
+  if (rank_link_)
+    throw std::logic_error("System::export_state(): not over ranks yet (docs/dem.md)");
   const auto& p = particles;
   const std::size_t n = p.n_real;
   SystemState s;
@@ -156,6 +158,7 @@ void System::take_particles(const SystemState& s) {
   p.id = s.id;
   next_id_ = std::max(s.next_id, first_free_id(s.id.data(), s.id.size()));
   ghost_owner_ = s.ghost_owner;
+  n_periodic_ghosts_ = ghost_owner_.size();
   neighbors_.pair_i = s.pair_i;
   neighbors_.pair_j = s.pair_j;
   pair_history_ = s.pair_history;
@@ -171,6 +174,8 @@ void System::take_particles(const SystemState& s) {
 void System::import_state(const SystemState& s) {
   if (!set_up_)
     throw std::logic_error("System::import_state() before setup()");
+  if (rank_link_)
+    throw std::logic_error("System::import_state(): not over ranks yet (docs/dem.md)");
   check_importable(s);
   take_particles(s);
   particles.resize_ghosts(s.ghost_owner.size());
@@ -182,6 +187,8 @@ void System::import_state(const SystemState& s) {
 void System::resume_state(const SystemState& s) {
   if (!set_up_)
     throw std::logic_error("System::resume_state() before setup()");
+  if (rank_link_)
+    throw std::logic_error("System::resume_state(): not over ranks yet (docs/dem.md)");
   check_importable(s);
   check_resumable(s);
   take_particles(s);

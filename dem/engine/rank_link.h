@@ -1,0 +1,89 @@
+#pragma once
+// The engine's view of a bed decomposed over ranks (processes), without MPI: the slabs that
+// say which rank owns a point, and the messages between neighbouring ranks. dem/parallel
+// implements both over MPI (MpiRankLink, SlabDecomposition); the engine never includes mpi.h.
+#include "meshes/vec3.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace wear::dem {
+
+using meshes::Vec3;
+
+/// One slab per rank along one coordinate: rank r owns the points whose coordinate lies in
+/// [bound[r], bound[r + 1]); points below bound[0] belong to rank 0, beyond the last bound to
+/// the last rank. A plain struct, so that the owner of a particle costs no virtual call.
+struct SlabCuts {
+  /// true: the coordinate is theta = atan2(y, x) about the z axis, taken in [bound[0] - gap/2,
+  /// bound[0] + 2 pi - gap/2) with gap = 2 pi - (bound.back() - bound[0]) (the gap outside a
+  /// sector split at its middle); false: the Cartesian coordinate x_axis.
+  bool angular = false;
+  int axis = 0;              ///< 0, 1, 2 for Cartesian slabs
+  std::vector<double> bound; ///< [rad] or [m] n_ranks + 1 values, increasing
+
+  int n_ranks() const { return int(bound.size()) - 1; }
+  /// [rad] or [m] the slab coordinate of x.
+  double coordinate(const Vec3& x) const {
+    if (!angular)
+      return x[axis];
+    constexpr double two_pi = 2 * 3.14159265358979323846;
+    const double gap = two_pi - (bound.back() - bound.front());
+    double theta = std::atan2(x.y, x.x);
+    while (theta < bound.front() - 0.5 * gap)
+      theta += two_pi;
+    while (theta >= bound.front() - 0.5 * gap + two_pi)
+      theta -= two_pi;
+    return theta;
+  }
+  /// The rank that owns point x.
+  int owner(const Vec3& x) const {
+    const double c = coordinate(x);
+    return int(std::upper_bound(bound.begin() + 1, bound.end() - 1, c) - (bound.begin() + 1));
+  }
+  /// [m] How far x lies below the upper cut of rank r (negative beyond it): along the axis, or
+  /// the distance to the plane through the z axis at theta = bound[r + 1].
+  double below_upper_cut(int r, const Vec3& x) const {
+    const double cut = bound[std::size_t(r) + 1];
+    if (!angular)
+      return cut - x[axis];
+    return std::sin(cut) * x.x - std::cos(cut) * x.y;
+  }
+};
+
+/// The messages of a rank with its neighbours (rank - 1 below, rank + 1 above; the first rank
+/// has none below, the last none above) and the reductions over all ranks. One virtual call
+/// per message; buffers keep their storage (the step loop allocates nothing once they grew).
+class RankLink {
+public:
+  virtual ~RankLink() = default;
+  virtual int rank() const = 0;
+  virtual int n_ranks() const = 0;
+  /// Sends `send` to the neighbour in `direction` (+1 above, -1 below) and receives into
+  /// `receive` what the opposite neighbour sent in the same direction (empty without one).
+  /// Every rank calls it together.
+  virtual void shift(int direction, const std::vector<double>& send,
+                     std::vector<double>& receive) = 0;
+  /// values[k] becomes the largest over the ranks (every rank gets the same).
+  virtual void max_over_ranks(double* values, std::size_t n) = 0;
+  /// values[k] becomes the sum over the ranks, added in rank order 0, 1, 2, ... (every rank
+  /// gets the same bits, independently of timing).
+  virtual void sum_in_rank_order(double* values, std::size_t n) = 0;
+};
+
+/// The decomposition as the engine takes it at setup: the slabs, and the check of their widths
+/// against the interaction reach, which is known only once every rank's particles are.
+class RankSlabs {
+public:
+  virtual ~RankSlabs() = default;
+  virtual const SlabCuts& cuts() const = 0;
+  /// Throws std::invalid_argument when a slab is narrower than `reach` [m] (a particle could
+  /// then touch one two ranks away), naming the rank count, the narrowest width, the reach and
+  /// the most ranks that fit.
+  virtual void check_widths(double reach) const = 0;
+};
+
+} // namespace wear::dem

@@ -1,0 +1,394 @@
+// A DEM bed decomposed over ranks (docs/dem.md, "A bed decomposed over ranks"): one slab per
+// rank (SlabCuts), the messages through a RankLink.
+//
+// Ownership: rank r owns the particles whose centre lay in its slab at the last list rebuild
+// and computes their walls, kicks and drift. Between rebuilds a particle moves at most half a
+// skin; every slab is at least the reach 2 r_max + skin wide (checked at setup), so a
+// particle only ever passes to an adjacent rank, and only adjacent ranks' particles interact.
+//
+// Ghosts go up: rank r receives, at each rebuild, copies of the particles of rank r - 1 within
+// the reach of its lower cut (position, velocity, spin, radius, mass, inertia, material, id)
+// and lists every pair across that cut, each once over all ranks: a pair within the list's
+// cut-off r_i + r_j + skin has its lower particle within reach of the cut. Each step the
+// ghosts' positions, velocities and spins are refreshed from their owners, and the forces and
+// torques on them go back down to the owners, which add them after their own contacts (in the
+// order the ghosts were sent). Ghosts of another rank are not rotated: they follow the
+// periodic ghosts in the ghost slots, their owner slot their own, so the pair kernel sends
+// their forces to the thread lists (ForeignForces) that are added into their slots.
+//
+// At a rebuild, particles whose centre left the slab go to the neighbour with their state,
+// last forces and wall-contact slots; the tangential histories of every listed pair with a
+// leaving particle go to both neighbours, keyed by the two stable ids in the canonical
+// orientation (CarriedHistory): the pair is listed next by the rank owning its upper
+// particle, which changes by at most one rank, and only when one of the two leaves. The
+// rebuild decision is the same on every rank (the largest displacement over all ranks), so all
+// rebuild on the same step.
+//
+// Assumptions: no periodic boundary (refused with more than one rank); stable ids unique over
+// all ranks (checked at setup) unless every rank holds the same bed, of which each then keeps
+// its own; an exception on one rank (a particle too fast, outside the domain) leaves the
+// others waiting in the next message: the caller aborts the ranks.
+#include "dem/engine/reused_buffer.h"
+#include "dem/engine/system.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace wear::dem {
+
+namespace {
+/// Doubles per record: a migrating particle (position, velocity, spin, force, torque, radius,
+/// mass, inertia, material, id, slot count; then its slots), a wall slot (normal, delta,
+/// wall), a history (lower id, higher id, vector), a ghost (position, velocity, spin, radius,
+/// mass, inertia, material, id), a ghost's motion each step, the load going back.
+constexpr std::size_t particle_values = 21, slot_values = 7, history_values = 5, ghost_values = 14,
+                      motion_values = 9, load_values = 6;
+
+inline void put(std::vector<double>& b, const Vec3& v) {
+  b.push_back(v.x);
+  b.push_back(v.y);
+  b.push_back(v.z);
+}
+inline Vec3 vec(const double* a) {
+  return {a[0], a[1], a[2]};
+}
+
+/// An order-free fingerprint of the particles (ids and position bits), below 2^52 so that it
+/// travels exactly as a double.
+double fingerprint(const Particles& p) {
+  std::uint64_t h = 0;
+  for (std::size_t i = 0; i < p.n_real; ++i) {
+    std::uint64_t x = std::uint64_t(p.id[i]) * 0x9E3779B97F4A7C15ull;
+    for (double c : {p.position[i].x, p.position[i].y, p.position[i].z}) {
+      std::uint64_t bits;
+      std::copy_n(reinterpret_cast<const unsigned char*>(&c), 8,
+                  reinterpret_cast<unsigned char*>(&bits));
+      x = (x ^ bits) * 0xBF58476D1CE4E5B9ull;
+      x ^= x >> 31;
+    }
+    h += x;
+  }
+  return double(h & ((std::uint64_t(1) << 52) - 1));
+}
+} // namespace
+
+void System::set_rank_link(RankLink* link, const RankSlabs* slabs) {
+  if (set_up_)
+    throw std::logic_error("System::set_rank_link() after setup()");
+  if (link && link->n_ranks() > 1 && !slabs)
+    throw std::invalid_argument("System::set_rank_link(): the slabs of the ranks are missing");
+  const bool ranked = link && link->n_ranks() > 1;
+  rank_link_ = ranked ? link : nullptr;
+  rank_slabs_ = ranked ? slabs : nullptr;
+  if (ranked) {
+    slab_cuts_ = slabs->cuts();
+    if (slab_cuts_.n_ranks() != link->n_ranks())
+      throw std::invalid_argument(
+          "System::set_rank_link(): " + std::to_string(slab_cuts_.n_ranks()) + " slabs for " +
+          std::to_string(link->n_ranks()) + " ranks");
+  }
+}
+
+void System::distribute_over_ranks() {
+  auto& p = particles;
+  RankLink& link = *rank_link_;
+  const double n = double(p.n_real), h = fingerprint(p);
+  double stats[4] = {n, -n, h, -h};
+  link.max_over_ranks(stats, 4);
+  if (stats[0] == 0)
+    throw std::invalid_argument("DEM: no particles (on any rank)");
+  std::vector<std::int32_t> no_slots;
+  std::vector<CarriedHistory> no_histories;
+  if (stats[0] == -stats[1] && stats[2] == -stats[3]) {
+    // Every rank holds the same bed: each keeps its own (a migration that sends nothing).
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < p.n_real; ++i)
+      if (slab_cuts_.owner(p.position[i]) == link.rank())
+        move_particle(kept++, i);
+    p.n_real = kept;
+    p.resize_ghosts(0);
+  } else {
+    // Passed along rank by rank until every particle is with its owner.
+    for (int hop = 0;; ++hop) {
+      double misplaced = 0;
+      for (std::size_t i = 0; i < p.n_real; ++i)
+        misplaced += slab_cuts_.owner(p.position[i]) != link.rank();
+      link.max_over_ranks(&misplaced, 1);
+      if (misplaced == 0 || hop > link.n_ranks())
+        break;
+      migrate_over_ranks(no_slots, no_histories);
+    }
+  }
+}
+
+void System::check_ranks_at_setup() {
+  RankLink& link = *rank_link_;
+  if (periodic())
+    throw std::invalid_argument("DEM over " + std::to_string(link.n_ranks()) +
+                                " ranks: a periodic sector or slab is not decomposed over ranks "
+                                "yet (run it on one rank)");
+  double next = double(next_id_);
+  link.max_over_ranks(&next, 1);
+  next_id_ = std::int64_t(next);
+  // Ids unique over the ranks: each id counted once in a sum over the ranks.
+  std::vector<double> count(std::size_t(next_id_), 0.0);
+  for (std::size_t i = 0; i < particles.n_real; ++i)
+    count[std::size_t(particles.id[i])] += 1;
+  link.sum_in_rank_order(count.data(), count.size());
+  for (std::size_t k = 0; k < count.size(); ++k)
+    if (count[k] > 1)
+      throw std::invalid_argument("DEM: particle id " + std::to_string(k) + " is held by " +
+                                  std::to_string(int(count[k])) +
+                                  " ranks (ids must be unique over the ranks)");
+  rank_slabs_->check_widths(2 * r_max_ + skin_);
+}
+
+void System::reduce_setup_values(double& t_r, double& r_max, double& r_min) {
+  double v[3] = {-t_r, r_max, -r_min};
+  rank_link_->max_over_ranks(v, 3);
+  t_r = -v[0];
+  r_max = v[1];
+  r_min = -v[2];
+}
+
+void System::move_particle(std::size_t to, std::size_t from) {
+  if (to == from)
+    return;
+  auto& p = particles;
+  p.position[to] = p.position[from];
+  p.velocity[to] = p.velocity[from];
+  p.angular_velocity[to] = p.angular_velocity[from];
+  p.force[to] = p.force[from];
+  p.torque[to] = p.torque[from];
+  p.radius[to] = p.radius[from];
+  p.mass[to] = p.mass[from];
+  p.inertia[to] = p.inertia[from];
+  p.material[to] = p.material[from];
+  p.id[to] = p.id[from];
+}
+
+void System::migrate_over_ranks(std::vector<std::int32_t>& slots_of_id,
+                                std::vector<CarriedHistory>& old) {
+  auto& p = particles;
+  RankScratch& rs = rank_scratch_;
+  const int rank = rank_link_->rank();
+  const std::size_t n = p.n_real;
+  resize_reusing(rs.leaving, n);
+  std::size_t n_leaving = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const int o = slab_cuts_.owner(p.position[i]);
+    rs.leaving[i] = o < rank ? -1 : o > rank ? 1 : 0;
+    n_leaving += o != rank;
+  }
+  // Messages: [particle count, particles with their slots..., history count, histories...].
+  rs.up.assign(1, 0.0);
+  rs.down.assign(1, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (rs.leaving[i] == 0)
+      continue;
+    std::vector<double>& b = rs.leaving[i] > 0 ? rs.up : rs.down;
+    b[0] += 1;
+    put(b, p.position[i]);
+    put(b, p.velocity[i]);
+    put(b, p.angular_velocity[i]);
+    put(b, p.force[i]);
+    put(b, p.torque[i]);
+    b.push_back(p.radius[i]);
+    b.push_back(p.mass[i]);
+    b.push_back(p.inertia[i]);
+    b.push_back(double(p.material[i]));
+    b.push_back(double(p.id[i]));
+    const std::int32_t q = slots_of_id.empty() ? -1 : slots_of_id[std::size_t(p.id[i])];
+    int k = 0;
+    while (q >= 0 && k < wall_slots && slots_[wall_slots * std::size_t(q) + k].wall >= 0)
+      ++k;
+    b.push_back(double(k));
+    for (int s = 0; s < k; ++s) {
+      const WallSlot& sl = slots_[wall_slots * std::size_t(q) + s];
+      put(b, sl.normal);
+      put(b, sl.delta);
+      b.push_back(double(sl.wall));
+    }
+  }
+  // Histories of the pairs with a leaving particle, to both neighbours.
+  const std::size_t history_at = rs.up.size();
+  rs.up.push_back(0.0);
+  if (n_leaving > 0 && !old.empty()) {
+    if (rs.leaves_by_id.size() < std::size_t(next_id_))
+      resize_reusing(rs.leaves_by_id, std::size_t(next_id_));
+    for (std::size_t i = 0; i < n; ++i)
+      rs.leaves_by_id[std::size_t(p.id[i])] = rs.leaving[i] != 0;
+    for (const CarriedHistory& e : old) {
+      const std::uint64_t lower = e.key >> 32, higher = e.key & 0xFFFFFFFFull;
+      if (!rs.leaves_by_id[lower] && !rs.leaves_by_id[higher])
+        continue;
+      rs.up[history_at] += 1;
+      rs.up.push_back(double(lower));
+      rs.up.push_back(double(higher));
+      put(rs.up, e.h);
+    }
+    for (std::size_t i = 0; i < n; ++i)
+      rs.leaves_by_id[std::size_t(p.id[i])] = 0;
+  }
+  rs.down.insert(rs.down.end(), rs.up.begin() + std::ptrdiff_t(history_at), rs.up.end());
+  rank_link_->shift(+1, rs.up, rs.from_below);
+  rank_link_->shift(-1, rs.down, rs.from_above);
+
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    if (rs.leaving[i] == 0)
+      move_particle(kept++, i);
+  p.n_real = kept;
+  p.resize_ghosts(0);
+  for (const std::vector<double>* message : {&rs.from_below, &rs.from_above}) {
+    if (message->empty())
+      continue;
+    const double* a = message->data();
+    const std::size_t n_particles = std::size_t(*a++);
+    for (std::size_t k = 0; k < n_particles; ++k) {
+      p.position.push_back(vec(a));
+      p.velocity.push_back(vec(a + 3));
+      p.angular_velocity.push_back(vec(a + 6));
+      p.force.push_back(vec(a + 9));
+      p.torque.push_back(vec(a + 12));
+      p.radius.push_back(a[15]);
+      p.mass.push_back(a[16]);
+      p.inertia.push_back(a[17]);
+      p.material.push_back(int(a[18]));
+      p.id.push_back(std::int64_t(a[19]));
+      ++p.n_real;
+      const int n_slots = int(a[20]);
+      a += particle_values;
+      if (n_slots > 0) {
+        // Its slots after the others, found by id (wall_slots_by_id's table).
+        const std::size_t q = slots_.size() / wall_slots;
+        resize_reusing(slots_, slots_.size() + wall_slots);
+        for (int s = 0; s < n_slots; ++s, a += slot_values)
+          slots_[wall_slots * q + std::size_t(s)] = {vec(a), vec(a + 3), std::int32_t(a[6])};
+        slots_of_id[std::size_t(p.id.back())] = std::int32_t(q);
+      }
+    }
+    const std::size_t n_histories = std::size_t(*a++);
+    reserve_reusing(old, old.size() + n_histories);
+    for (std::size_t k = 0; k < n_histories; ++k, a += history_values)
+      old.push_back({(std::uint64_t(a[0]) << 32) | std::uint64_t(a[1]), 0, vec(a + 2)});
+  }
+}
+
+void System::exchange_rank_ghosts() {
+  auto& p = particles;
+  RankScratch& rs = rank_scratch_;
+  const int rank = rank_link_->rank();
+  const double reach = 2 * r_max_ + skin_;
+  rs.sent_up.clear();
+  rs.up.clear();
+  if (rank + 1 < rank_link_->n_ranks())
+    for (std::size_t i = 0; i < p.n_real; ++i) {
+      if (!(slab_cuts_.below_upper_cut(rank, p.position[i]) < reach))
+        continue;
+      rs.sent_up.push_back(std::uint32_t(i));
+      put(rs.up, p.position[i]);
+      put(rs.up, p.velocity[i]);
+      put(rs.up, p.angular_velocity[i]);
+      rs.up.push_back(p.radius[i]);
+      rs.up.push_back(p.mass[i]);
+      rs.up.push_back(p.inertia[i]);
+      rs.up.push_back(double(p.material[i]));
+      rs.up.push_back(double(p.id[i]));
+    }
+  rank_link_->shift(+1, rs.up, rs.from_below);
+  // The ghosts of the rank below own their slots: their forces stay there and go back down.
+  const std::size_t first = p.n_real + ghost_owner_.size();
+  for (std::size_t g = 0; g < rs.from_below.size() / ghost_values; ++g)
+    ghost_owner_.push_back(std::uint32_t(first + g));
+}
+
+void System::place_rank_ghosts() {
+  auto& p = particles;
+  const std::vector<double>& m = rank_scratch_.from_below;
+  const std::size_t first = p.n_real + n_periodic_ghosts_;
+  for (std::size_t g = 0; g < m.size() / ghost_values; ++g) {
+    const double* a = &m[ghost_values * g];
+    const std::size_t k = first + g;
+    p.position[k] = vec(a);
+    p.velocity[k] = vec(a + 3);
+    p.angular_velocity[k] = vec(a + 6);
+    p.radius[k] = a[9];
+    p.mass[k] = a[10];
+    p.inertia[k] = a[11];
+    p.material[k] = int(a[12]);
+    p.id[k] = std::int64_t(a[13]);
+    p.force[k] = {};
+    p.torque[k] = {};
+  }
+}
+
+void System::refresh_rank_ghosts() {
+  auto& p = particles;
+  RankScratch& rs = rank_scratch_;
+  resize_reusing(rs.up, motion_values * rs.sent_up.size());
+  for (std::size_t g = 0; g < rs.sent_up.size(); ++g) {
+    const std::size_t i = rs.sent_up[g];
+    double* a = &rs.up[motion_values * g];
+    const Vec3 &x = p.position[i], &v = p.velocity[i], &w = p.angular_velocity[i];
+    a[0] = x.x, a[1] = x.y, a[2] = x.z, a[3] = v.x, a[4] = v.y, a[5] = v.z;
+    a[6] = w.x, a[7] = w.y, a[8] = w.z;
+  }
+  rank_link_->shift(+1, rs.up, rs.from_below);
+  const std::size_t first = p.n_real + n_periodic_ghosts_, n_rank = p.position.size() - first;
+  if (rs.from_below.size() != motion_values * n_rank)
+    throw std::logic_error("DEM over ranks: the ghosts of the rank below do not match its message");
+  for (std::size_t g = 0; g < n_rank; ++g) {
+    const double* a = &rs.from_below[motion_values * g];
+    const std::size_t k = first + g;
+    p.position[k] = vec(a);
+    p.velocity[k] = vec(a + 3);
+    p.angular_velocity[k] = vec(a + 6);
+    packed_position_[k] = {a[0], a[1], a[2], p.radius[k]};
+    pack_motion(k);
+    p.force[k] = {};
+    p.torque[k] = {};
+  }
+}
+
+void System::return_ghost_forces() {
+  auto& p = particles;
+  RankScratch& rs = rank_scratch_;
+  const std::size_t first = p.n_real + n_periodic_ghosts_, n_rank = p.position.size() - first;
+  resize_reusing(rs.down, load_values * n_rank);
+  for (std::size_t g = 0; g < n_rank; ++g) {
+    const Vec3 &f = p.force[first + g], &t = p.torque[first + g];
+    double* a = &rs.down[load_values * g];
+    a[0] = f.x, a[1] = f.y, a[2] = f.z, a[3] = t.x, a[4] = t.y, a[5] = t.z;
+  }
+  rank_link_->shift(-1, rs.down, rs.from_above);
+  if (rs.from_above.size() != load_values * rs.sent_up.size())
+    throw std::logic_error("DEM over ranks: the forces of the rank above do not match its ghosts");
+  for (std::size_t g = 0; g < rs.sent_up.size(); ++g) {
+    const double* a = &rs.from_above[load_values * g];
+    p.force[rs.sent_up[g]] += vec(a);
+    p.torque[rs.sent_up[g]] += vec(a + 3);
+  }
+}
+
+void System::ranked_forces(bool need_rebuild, double t_drift) {
+  double rebuild_now = need_rebuild ? 1 : 0;
+  rank_link_->max_over_ranks(&rebuild_now, 1);
+  if (rebuild_now > 0) {
+    rebuild(true);
+    phase_times_.rebuild += omp_get_wtime() - t_drift;
+  } else {
+    refresh_ghosts();
+    refresh_rank_ghosts();
+    phase_times_.integration += omp_get_wtime() - t_drift;
+  }
+  compute_forces();
+  return_ghost_forces();
+}
+
+} // namespace wear::dem
