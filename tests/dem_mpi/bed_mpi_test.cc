@@ -1,0 +1,248 @@
+// Beds decomposed over the ranks of the test (1, 2 or 3; slabs along x) against the same bed
+// in one plain System that every rank runs: a pile resting across the cuts on a wearing floor
+// (its positions, its per-face wear integrals summed in rank order, a repeated run bitwise),
+// a sphere sliding across a cut on the floor (wall history migrating), a stack of two spheres
+// sliding across a cut together (both leaving the rank in the same rebuild with the pair's
+// history), a dense collisional gas in a box (momentum and energy), and slabs too narrow.
+#include "tests/dem_mpi/dem_mpi_fixtures.h"
+
+#include <cstdint>
+
+using namespace wear::dem;
+using namespace wear::dem::testing;
+namespace meshes = wear::meshes;
+
+namespace {
+
+constexpr double r = 0.005; ///< [m] radius; the reach is 2 r + r / 2 = 12.5 mm
+
+/// Gravel (E = 5e7 Pa) on a floor z = 0 of [-0.1, 0.1] x [-0.05, 0.05] (20 x 10 quads).
+int gravel_on_floor(System& s, bool wearing) {
+  const int g = s.materials.add({"gravel", 5e7, 0.25, 2650});
+  s.materials.set_pair(g, g, {0.5, 0.5, 0.1});
+  s.add_wall(MeshWall(floor_mesh(-0.1, 0.1, -0.05, 0.05, 20, 10), g, {}, wearing, "floor"));
+  s.settings.domain = {{-0.2, -0.2, -0.05}, {0.2, 0.2, 0.2}};
+  return g;
+}
+
+/// Slabs along x with cuts through the beds below (widths at least 19 mm, above the reach).
+SlabDecomposition slabs_across_x() {
+  return x_slabs({{-1, 1}, {-1, 0.002, 1}, {-1, -0.006, 0.013, 1}});
+}
+
+/// Runs `n_steps` steps of the bed `make` builds, over the ranks or in one System, and
+/// returns the state by id (gathered over the ranks) every `every` steps.
+template <class Make>
+std::vector<BedState> run(bool ranked, Make make, std::size_t n_ids, int n_steps, int every,
+                          System* keep = nullptr, int n_threads = 1,
+                          const SlabDecomposition& slabs = slabs_across_x()) {
+  System local;
+  System& s = keep ? *keep : local;
+  make(s);
+  if (ranked)
+    s.set_rank_link(&world(), &slabs);
+  s.setup();
+  s.set_n_threads(n_threads);
+  std::vector<BedState> states;
+  for (int k = 0; k < n_steps; k += every) {
+    s.run(std::uint64_t(every));
+    states.push_back(ranked ? gather(s, n_ids, world()) : by_id(s, n_ids));
+  }
+  return states;
+}
+
+/// A square pyramid of 2 x 2 layers: 8 x 2 spheres on the floor, 7 x 1 in their hollows.
+void pile(System& s, bool wearing) {
+  const int g = gravel_on_floor(s, wearing);
+  for (int i = 0; i < 8; ++i)
+    for (int j = 0; j < 2; ++j)
+      s.particles.add({-0.035 + 2 * r * i, 2 * r * j, r}, {}, r, 2650, g);
+  for (int i = 0; i < 7; ++i)
+    s.particles.add({-0.03 + 2 * r * i, r, r + r * std::sqrt(2.0)}, {}, r, 2650, g);
+}
+
+} // namespace
+
+TEST_CASE("a pile across the cuts stays put as on one rank; its wear sums in rank order",
+          "[dem_mpi][pile]") {
+  const std::size_t n = 23;
+  System ranked_system, plain_system;
+  const auto make = [](System& s) { pile(s, true); };
+  const auto ranked = run(true, make, n, 2000, 500, &ranked_system);
+  const auto plain = run(false, make, n, 2000, 500, &plain_system);
+  for (std::size_t k = 0; k < ranked.size(); ++k) {
+    INFO("after " << 500 * (k + 1) << " steps");
+    for (std::size_t id = 0; id < n; ++id)
+      CHECK(ranked[k].held[id] == 1);
+    CHECK(max_difference(ranked[k].x, plain[k].x) <= 1e-12);
+    CHECK(max_difference(ranked[k].v, plain[k].v) <= 1e-10);
+  }
+  // Stays put: the upper layer sank into the hollows by the overlaps only.
+  CHECK(max_difference(ranked.back().x, ranked.front().x) < 1e-4);
+  const WearIntegrals w = wear_integrals_over_ranks(ranked_system, 0, world());
+  const WearIntegrals w1 = plain_system.wear_integrals(0);
+  double scale = 0, diff = 0;
+  for (std::size_t f = 0; f < w.normal_impulse.size(); ++f) {
+    scale = std::max(scale, w1.normal_impulse[f]);
+    diff = std::max(diff, std::abs(w.normal_impulse[f] - w1.normal_impulse[f]));
+  }
+  CHECK(scale > 0);
+  CHECK(diff <= 1e-12 * scale);
+  CHECK(w.total_normal_impulse == Approx(w1.total_normal_impulse).epsilon(1e-12));
+  CHECK(meshes::norm(w.total_impulse - w1.total_impulse) <= 1e-12 * meshes::norm(w1.total_impulse));
+  // The same run again over the same ranks: the same bits.
+  System again;
+  const auto repeated = run(true, make, n, 2000, 500, &again);
+  const WearIntegrals w2 = wear_integrals_over_ranks(again, 0, world());
+  CHECK(w2.normal_impulse == w.normal_impulse);
+  CHECK(w2.archard == w.archard);
+  CHECK(w2.total_impulse_moment.x == w.total_impulse_moment.x);
+  for (std::size_t id = 0; id < n; ++id)
+    CHECK(repeated.back().x[id].x == ranked.back().x[id].x);
+}
+
+TEST_CASE("a sphere sliding across a cut follows its one-rank trajectory",
+          "[dem_mpi][trajectory]") {
+  // Sliding at 0.5 m/s with a spin against it: the floor's friction turns it to rolling
+  // while it crosses the cuts (x = 0.002; -0.006 and 0.013 on three ranks) with the
+  // wall-contact slot that migrates with it.
+  const auto make = [](System& s) {
+    const int g = gravel_on_floor(s, false);
+    s.particles.add({-0.009, 0, r - 1e-6}, {0.5, 0, 0}, r, 2650, g);
+    s.particles.angular_velocity[0] = {0, -30, 0};
+  };
+  const auto ranked = run(true, make, 1, 2500, 100);
+  const auto plain = run(false, make, 1, 2500, 100);
+  for (std::size_t k = 0; k < ranked.size(); ++k) {
+    INFO("after " << 100 * (k + 1) << " steps: x = " << plain[k].x[0].x);
+    CHECK(meshes::norm(ranked[k].x[0] - plain[k].x[0]) <= 1e-12 * meshes::norm(plain[k].x[0]));
+    CHECK(meshes::norm(ranked[k].v[0] - plain[k].v[0]) <= 1e-12 * 0.5);
+    CHECK(meshes::norm(ranked[k].w[0] - plain[k].w[0]) <= 1e-12 * 80);
+  }
+  CHECK(plain.back().x[0].x > 0.02); // it crossed every cut
+}
+
+TEST_CASE("two touching spheres leave a rank together with their history", "[dem_mpi][history]") {
+  // Sphere 1 rests on sphere 0, which slides on a slippery floor (mu = 0.1) at 0.3 m/s: the
+  // floor turns sphere 0, so the pair (mu = 0.5) slips and holds a tangential history. Both
+  // start in the middle slab on three ranks (rank 0 on two) and cross x = 0.013 (0.002) in
+  // the same rebuild.
+  const double x0 = world().n_ranks() == 3 ? 0.0102 : -0.0008;
+  const auto make = [x0](System& s) {
+    const int g = s.materials.add({"gravel", 5e7, 0.25, 2650});
+    const int f = s.materials.add({"floor", 5e7, 0.25, 2650});
+    s.materials.set_pair(g, g, {0.5, 0.5, 0.0});
+    s.materials.set_pair(g, f, {0.5, 0.1, 0.0});
+    s.materials.set_pair(f, f, {0.5, 0.1, 0.0});
+    s.add_wall(MeshWall(floor_mesh(-0.1, 0.1, -0.05, 0.05, 20, 10), f, {}, false, "floor"));
+    s.settings.domain = {{-0.2, -0.2, -0.05}, {0.2, 0.2, 0.2}};
+    s.particles.add({x0, 0, r - 1e-6}, {0.3, 0, 0}, r, 2650, g);
+    s.particles.add({x0, 0, 3 * r - 3e-6}, {0.3, 0, 0}, r, 2650, g);
+  };
+  const auto ranked = run(true, make, 2, 1200, 1);
+  const auto plain = run(false, make, 2, 1200, 1);
+  int n_together = 0;
+  for (std::size_t k = 1; k < ranked.size(); ++k) {
+    const bool moved0 = ranked[k].rank[0] != ranked[k - 1].rank[0];
+    const bool moved1 = ranked[k].rank[1] != ranked[k - 1].rank[1];
+    CHECK(moved0 == moved1);
+    n_together += moved0 && moved1;
+  }
+  if (world().n_ranks() > 1)
+    CHECK(n_together == 1);
+  double worst = 0;
+  for (std::size_t k = 0; k < ranked.size(); ++k)
+    for (int id = 0; id < 2; ++id)
+      worst = std::max({worst, meshes::norm(ranked[k].x[id] - plain[k].x[id]) / 0.01,
+                        meshes::norm(ranked[k].v[id] - plain[k].v[id]) / 0.3,
+                        meshes::norm(ranked[k].w[id] - plain[k].w[id]) / 60});
+  INFO("largest relative departure from the one-rank run: " << worst);
+  CHECK(worst <= 1e-12);
+  // The pair slipped: sphere 1 turns the other way to sphere 0.
+  CHECK(plain.back().w[0].y * plain.back().w[1].y < 0);
+}
+
+TEST_CASE("a dense collisional gas keeps the one-rank momentum and energy", "[dem_mpi][gas]") {
+  // 343 spheres on a 12 mm lattice in a closed box of 0.1 m, no gravity, random velocities of
+  // about 1 m/s (the same generator on every rank), e = 0.9, mu = 0.3: 1000 steps.
+  const std::size_t n = 343;
+  const auto make = [](System& s) {
+    const int g = s.materials.add({"gravel", 5e7, 0.25, 2650});
+    s.materials.set_pair(g, g, {0.9, 0.3, 0.0});
+    s.settings.gravity = {};
+    s.settings.domain = {{-0.01, -0.01, -0.01}, {0.11, 0.11, 0.11}};
+    std::uint64_t seed = 12345;
+    const auto uniform = [&seed]() {
+      seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+      return double(seed >> 11) / double(std::uint64_t(1) << 53) - 0.5;
+    };
+    for (int i = 0; i < 7; ++i)
+      for (int j = 0; j < 7; ++j)
+        for (int k = 0; k < 7; ++k)
+          s.particles.add({0.014 + 0.012 * i, 0.014 + 0.012 * j, 0.014 + 0.012 * k},
+                          {2 * uniform(), 2 * uniform(), 2 * uniform()}, r, 2650, g);
+    const auto walls = [](double L) {
+      meshes::SurfaceMesh m;
+      for (int k = 0; k < 2; ++k)
+        for (int j = 0; j < 2; ++j)
+          for (int i = 0; i < 2; ++i)
+            m.vertices.push_back({i * L, j * L, k * L});
+      const auto v = [](int i, int j, int k) { return std::uint32_t(i + 2 * j + 4 * k); };
+      const auto quad = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
+        m.triangles.push_back({a, b, c});
+        m.triangles.push_back({a, c, d});
+      };
+      quad(v(0, 0, 0), v(1, 0, 0), v(1, 1, 0), v(0, 1, 0));
+      quad(v(0, 0, 1), v(0, 1, 1), v(1, 1, 1), v(1, 0, 1));
+      quad(v(0, 0, 0), v(0, 0, 1), v(1, 0, 1), v(1, 0, 0));
+      quad(v(0, 1, 0), v(1, 1, 0), v(1, 1, 1), v(0, 1, 1));
+      quad(v(0, 0, 0), v(0, 1, 0), v(0, 1, 1), v(0, 0, 1));
+      quad(v(1, 0, 0), v(1, 0, 1), v(1, 1, 1), v(1, 1, 0));
+      m.face_labels.assign(m.triangles.size(), meshes::label::wall);
+      return m;
+    };
+    s.add_wall(MeshWall(walls(0.1), g, {}, false, "box"));
+  };
+  System ranked_system, plain_system;
+  // Two threads per rank: ghosts of the rank below meet the threads' split (ForeignForces).
+  const SlabDecomposition thirds = x_slabs({{-1, 1}, {-1, 0.05, 1}, {-1, 0.035, 0.065, 1}});
+  run(true, make, n, 1000, 1000, &ranked_system, 2, thirds);
+  run(false, make, n, 1000, 1000, &plain_system);
+  const auto a = over_ranks(momentum_and_energy(ranked_system), world());
+  const auto b = momentum_and_energy(plain_system);
+  double mv = 0; // [kg m/s] sum of m |v|, the momentum's scale
+  for (std::size_t i = 0; i < plain_system.particles.n_real; ++i)
+    mv += plain_system.particles.mass[i] * meshes::norm(plain_system.particles.velocity[i]);
+  INFO("momentum " << a[0] << " " << a[1] << " " << a[2] << " (one rank " << b[0] << " " << b[1]
+                   << " " << b[2] << ", scale " << mv << "); kinetic " << a[3] << " (" << b[3]
+                   << "), rotational " << a[4] << " (" << b[4] << "), elastic " << a[5] << " ("
+                   << b[5] << ")");
+  for (int k = 0; k < 3; ++k)
+    CHECK(std::abs(a[k] - b[k]) <= 1e-12 * mv);
+  const double total = b[3] + b[4] + b[5];
+  CHECK(std::abs(a[3] - b[3]) <= 1e-9 * total);
+  CHECK(std::abs(a[4] - b[4]) <= 1e-9 * total);
+  CHECK(std::abs(a[5] - b[5]) <= 1e-9 * total);
+  CHECK(plain_system.n_pair_contacts() > 0);
+}
+
+TEST_CASE("slabs narrower than the reach are refused before any step", "[dem_mpi][bad-input]") {
+  const int n_ranks = world().n_ranks();
+  if (n_ranks < 2)
+    return;
+  // The pile is 80 mm long; cut into slabs of 20 mm / (n_ranks - 1) near its middle.
+  System s;
+  pile(s, false);
+  std::vector<double> b{-1.0};
+  for (int k = 1; k < n_ranks; ++k)
+    b.push_back(0.02 * k / n_ranks);
+  b.push_back(1.0);
+  if (n_ranks == 2)
+    b = {-1.0, 0.0, 0.01}; // the last slab 10 mm wide
+  const SlabDecomposition slabs = SlabDecomposition::along_axis(0, b);
+  s.set_rank_link(&world(), &slabs);
+  using Catch::Matchers::Contains;
+  CHECK_THROWS_WITH(s.setup(), Contains(std::to_string(n_ranks) + " ranks") &&
+                                   Contains("0.0125 m") && Contains("at most"));
+  CHECK(s.n_steps() == 0);
+}
