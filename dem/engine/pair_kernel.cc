@@ -148,8 +148,11 @@ contact_law_lanes(const PairKernelData& d, const std::uint32_t* pi, const std::u
     Vec3 fo = -f, to = tj;
     if (j >= d.n_real) {
       o = d.ghost_owner[j - d.n_real];
-      fo = -Vec3{co * f.x - si * f.y, si * f.x + co * f.y, f.z};
-      to = Vec3{co * tj.x - si * tj.y, si * tj.x + co * tj.y, tj.z};
+      // A select, not a branch: every ghost of one process is an image.
+      const bool image = j < d.rotated_end;
+      const double c = image ? co : 1.0, s = image ? si : 0.0;
+      fo = -Vec3{c * f.x - s * f.y, s * f.x + c * f.y, f.z};
+      to = Vec3{c * tj.x - s * tj.y, s * tj.x + c * tj.y, tj.z};
     }
     if (o >= d.own_begin && o < d.own_end) {
       force[o] += fo;

@@ -66,6 +66,9 @@ struct PairKernelData {
   std::uint8_t* touching;           ///< per listed pair: in contact at the last evaluation
   const std::uint32_t* ghost_owner; ///< real particle behind ghost slot j - n_real
   std::size_t n_real;
+  /// Ghost slots below this are periodic images (their forces go back rotated by +angle), the
+  /// others ghosts of the rank below on the same side of the seam.
+  std::size_t rotated_end;
   std::uint32_t own_begin, own_end; ///< the particles this thread owns
   ForeignForces* foreign;           ///< where forces on the other particles go
   double cos_angle, sin_angle;      ///< [-] of the periodic sector angle (ghost forces go back)

@@ -54,14 +54,18 @@ struct SlabCuts {
   }
 };
 
-/// The messages of a rank with its neighbours (rank - 1 below, rank + 1 above; the first rank
-/// has none below, the last none above) and the reductions over all ranks. One virtual call
-/// per message; buffers keep their storage (the step loop allocates nothing once they grew).
+/// The messages of a rank with its neighbours (rank - 1 below, rank + 1 above; on a line the
+/// first rank has none below and the last none above, on a ring they are each other's) and the
+/// reductions over all ranks. One virtual call per message; buffers keep their storage (the step
+/// loop allocates nothing once they grew).
 class RankLink {
 public:
   virtual ~RankLink() = default;
   virtual int rank() const = 0;
   virtual int n_ranks() const = 0;
+  /// True when the ranks form a ring: the last rank's neighbour above is rank 0 (a periodic
+  /// sector or slab, whose seam joins them).
+  virtual bool ring() const = 0;
   /// Sends `send` to the neighbour in `direction` (+1 above, -1 below) and receives into
   /// `receive` what the opposite neighbour sent in the same direction (empty without one).
   /// Every rank calls it together.

@@ -342,8 +342,10 @@ private:
   RankLink* rank_link_ = nullptr;
   const RankSlabs* rank_slabs_ = nullptr;
   SlabCuts slab_cuts_;
-  /// Ghost slots [n_real, n_real + this) are periodic images; the rest, ghosts of the rank below.
-  std::size_t n_periodic_ghosts_ = 0;
+  /// Ghost slots [n_real, n_real + n_periodic_ghosts_) are periodic images of this rank's
+  /// particles, the rest ghosts of the rank below; the first n_image_ghosts_ of all are images
+  /// across the periodic boundary (rotated; over ranks, rank 0's ghosts from the last rank).
+  std::size_t n_periodic_ghosts_ = 0, n_image_ghosts_ = 0;
   /// The rank messages' buffers and what the last rebuild decided (kept between steps).
   struct RankScratch {
     std::vector<signed char> leaving; ///< per real particle: -1 to the rank below, +1 above

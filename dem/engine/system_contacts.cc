@@ -240,6 +240,7 @@ std::size_t System::pair_forces(int thread, Vec3* F, Vec3* T) {
       pair_touching_.data(),
       ghost_owner_.data(),
       p.n_real,
+      p.n_real + n_image_ghosts_,
       std::uint32_t(owner_split_[thread]),
       std::uint32_t(owner_split_[thread + 1]),
       &foreign_[thread],

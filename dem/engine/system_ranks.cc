@@ -12,9 +12,9 @@
 // cut-off r_i + r_j + skin has its lower particle within reach of the cut. Each step the
 // ghosts' positions, velocities and spins are refreshed from their owners, and the forces and
 // torques on them go back down to the owners, which add them after their own contacts (in the
-// order the ghosts were sent). Ghosts of another rank are not rotated: they follow the
-// periodic ghosts in the ghost slots, their owner slot their own, so the pair kernel sends
-// their forces to the thread lists (ForeignForces) that are added into their slots.
+// order the ghosts were sent). Ghosts of another rank follow the periodic ghosts in the ghost
+// slots and own their slot, so the pair kernel sends their forces to the threads' lists
+// (ForeignForces), added into their slots; off the seam they are plain copies, not rotated.
 //
 // At a rebuild, particles whose centre left the slab go to the neighbour with their state,
 // last forces and wall-contact slots; the tangential histories of every listed pair with a
@@ -24,10 +24,17 @@
 // rebuild decision is the same on every rank (the largest displacement over all ranks), so all
 // rebuild on the same step.
 //
-// Assumptions: no periodic boundary (refused with more than one rank); stable ids unique over
-// all ranks (checked at setup) unless every rank holds the same bed, of which each then keeps
-// its own; an exception on one rank (a particle too fast, outside the domain) leaves the
-// others waiting in the next message: the caller aborts the ranks.
+// Periodic seam: a periodic sector or slab decomposed over ranks is a ring whose slabs span
+// the period; the last rank's ghosts reach rank 0 as periodic images (x -> R(-angle) x - L,
+// vectors rotated), flagged as images in rank 0's ghost slots, so the kernel returns their
+// forces rotated by +angle and their histories are turned as a periodic ghost's. A particle
+// wraps on its own rank (wrap_into_sector) and passes round the seam; the receiver turns its
+// own histories in the particle's frame by the wrap, which travels with it.
+//
+// Assumptions: stable ids unique over all ranks (checked at setup) unless every rank holds
+// the same bed, of which each then keeps its own; an exception on one rank (a particle too
+// fast, outside the domain) leaves the others waiting in the next message: the caller aborts
+// the ranks.
 #include "dem/engine/reused_buffer.h"
 #include "dem/engine/system.h"
 
@@ -43,10 +50,11 @@ namespace wear::dem {
 
 namespace {
 /// Doubles per record: a migrating particle (position, velocity, spin, force, torque, radius,
-/// mass, inertia, material, id, slot count; then its slots), a wall slot (normal, delta,
-/// wall), a history (lower id, higher id, vector), a ghost (position, velocity, spin, radius,
-/// mass, inertia, material, id), a ghost's motion each step, the load going back.
-constexpr std::size_t particle_values = 21, slot_values = 7, history_values = 5, ghost_values = 14,
+/// mass, inertia, material, id, the wrap it took across the seam, slot count; then its slots), a
+/// wall slot (normal, delta, wall), a history (lower id, higher id, vector), a ghost (position,
+/// velocity, spin, radius, mass, inertia, material, id), a ghost's motion each step, the load going
+/// back.
+constexpr std::size_t particle_values = 22, slot_values = 7, history_values = 5, ghost_values = 14,
                       motion_values = 9, load_values = 6;
 
 inline void put(std::vector<double>& b, const Vec3& v) {
@@ -56,6 +64,9 @@ inline void put(std::vector<double>& b, const Vec3& v) {
 }
 inline Vec3 vec(const double* a) {
   return {a[0], a[1], a[2]};
+}
+inline Vec3 rotate_z(const Vec3& v, double c, double s) {
+  return {c * v.x - s * v.y, s * v.x + c * v.y, v.z};
 }
 
 /// An order-free fingerprint of the particles (ids and position bits), below 2^52 so that it
@@ -128,10 +139,24 @@ void System::distribute_over_ranks() {
 
 void System::check_ranks_at_setup() {
   RankLink& link = *rank_link_;
-  if (periodic())
-    throw std::invalid_argument("DEM over " + std::to_string(link.n_ranks()) +
-                                " ranks: a periodic sector or slab is not decomposed over ranks "
-                                "yet (run it on one rank)");
+  // A periodic boundary is the seam between the last rank and rank 0: the ranks form a ring
+  // and the slabs span the period exactly.
+  const std::vector<double>& b = slab_cuts_.bound;
+  const auto at = [](double x, double y) { return std::abs(x - y) <= 1e-12 * (1 + std::abs(y)); };
+  const std::string what = "DEM over " + std::to_string(link.n_ranks()) + " ranks: ";
+  if (periodic() != link.ring())
+    throw std::invalid_argument(what + (link.ring() ? "ranks in a ring need a periodic boundary"
+                                                    : "a periodic boundary needs the ranks in a "
+                                                      "ring (MpiRankLink's `ring`)"));
+  if (settings.periodic.enabled &&
+      !(slab_cuts_.angular && at(b.front(), 0) && at(b.back(), settings.periodic.angle)))
+    throw std::invalid_argument(what + "the slabs of a periodic sector must be angular and span "
+                                       "it, 0 to its angle");
+  const PeriodicSlab& sl = settings.periodic_slab;
+  if (sl.enabled && !(!slab_cuts_.angular && slab_cuts_.axis == sl.axis && at(b.front(), sl.lo) &&
+                      at(b.back(), sl.hi)))
+    throw std::invalid_argument(what + "the slabs of a periodic slab must lie along its axis and "
+                                       "span it, lo to hi");
   double next = double(next_id_);
   link.max_over_ranks(&next, 1);
   next_id_ = std::int64_t(next);
@@ -176,15 +201,23 @@ void System::migrate_over_ranks(std::vector<std::int32_t>& slots_of_id,
                                 std::vector<CarriedHistory>& old) {
   auto& p = particles;
   RankScratch& rs = rank_scratch_;
-  const int rank = rank_link_->rank();
+  const int rank = rank_link_->rank(), n_ranks = rank_link_->n_ranks();
+  const bool ring = rank_link_->ring();
   const std::size_t n = p.n_real;
   resize_reusing(rs.leaving, n);
   std::size_t n_leaving = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const int o = slab_cuts_.owner(p.position[i]);
-    rs.leaving[i] = o < rank ? -1 : o > rank ? 1 : 0;
+    // Round the seam on a ring (a particle that wrapped), else towards the owner (at setup,
+    // over several ranks).
+    const bool up = ring ? o == (rank + 1) % n_ranks : o > rank;
+    const bool down = ring ? o == (rank + n_ranks - 1) % n_ranks : o < rank;
+    rs.leaving[i] = o == rank ? 0 : up ? 1 : down ? -1 : o > rank ? 1 : -1;
     n_leaving += o != rank;
   }
+  // The wrap each particle took in this rebuild (wrap_into_sector): the receiver turns its own
+  // histories of it alike.
+  const std::vector<signed char>* wrapped = periodic() ? &rebuild_scratch_.wrap : nullptr;
   // Messages: [particle count, particles with their slots..., history count, histories...].
   rs.up.assign(1, 0.0);
   rs.down.assign(1, 0.0);
@@ -203,6 +236,7 @@ void System::migrate_over_ranks(std::vector<std::int32_t>& slots_of_id,
     b.push_back(p.inertia[i]);
     b.push_back(double(p.material[i]));
     b.push_back(double(p.id[i]));
+    b.push_back(wrapped && i < wrapped->size() ? double((*wrapped)[i]) : 0.0);
     const std::int32_t q = slots_of_id.empty() ? -1 : slots_of_id[std::size_t(p.id[i])];
     int k = 0;
     while (q >= 0 && k < wall_slots && slots_[wall_slots * std::size_t(q) + k].wall >= 0)
@@ -245,6 +279,7 @@ void System::migrate_over_ranks(std::vector<std::int32_t>& slots_of_id,
       move_particle(kept++, i);
   p.n_real = kept;
   p.resize_ghosts(0);
+  const std::size_t n_local_histories = old.size();
   for (const std::vector<double>* message : {&rs.from_below, &rs.from_above}) {
     if (message->empty())
       continue;
@@ -262,7 +297,15 @@ void System::migrate_over_ranks(std::vector<std::int32_t>& slots_of_id,
       p.material.push_back(int(a[18]));
       p.id.push_back(std::int64_t(a[19]));
       ++p.n_real;
-      const int n_slots = int(a[20]);
+      const int wrap = int(a[20]), n_slots = int(a[21]);
+      if (wrap != 0) {
+        // It crossed the seam: this rank's own histories in its frame (it was a ghost here)
+        // turn with it, as wrap_into_sector turns those of a particle wrapping on its rank.
+        const auto id = std::uint64_t(p.id.back());
+        for (std::size_t e = 0; e < n_local_histories; ++e)
+          if ((old[e].key >> 32) == id)
+            old[e].h = rotate_z(old[e].h, cos_t_, wrap > 0 ? sin_t_ : -sin_t_);
+      }
       a += particle_values;
       if (n_slots > 0) {
         // Its slots after the others, found by id (wall_slots_by_id's table).
@@ -283,18 +326,23 @@ void System::migrate_over_ranks(std::vector<std::int32_t>& slots_of_id,
 void System::exchange_rank_ghosts() {
   auto& p = particles;
   RankScratch& rs = rank_scratch_;
-  const int rank = rank_link_->rank();
+  const int rank = rank_link_->rank(), n_ranks = rank_link_->n_ranks();
+  const bool ring = rank_link_->ring();
   const double reach = 2 * r_max_ + skin_;
+  // Across the seam the ghosts are the periodic images (rotated by -angle, shifted by -L).
+  const bool seam = ring && rank + 1 == n_ranks;
+  const double c = cos_t_, s = seam ? -sin_t_ : 0.0;
+  const Vec3 shift = seam ? shift_ : Vec3{0, 0, 0};
   rs.sent_up.clear();
   rs.up.clear();
-  if (rank + 1 < rank_link_->n_ranks())
+  if (ring || rank + 1 < n_ranks)
     for (std::size_t i = 0; i < p.n_real; ++i) {
       if (!(slab_cuts_.below_upper_cut(rank, p.position[i]) < reach))
         continue;
       rs.sent_up.push_back(std::uint32_t(i));
-      put(rs.up, p.position[i]);
-      put(rs.up, p.velocity[i]);
-      put(rs.up, p.angular_velocity[i]);
+      put(rs.up, seam ? rotate_z(p.position[i], c, s) - shift : p.position[i]);
+      put(rs.up, seam ? rotate_z(p.velocity[i], c, s) : p.velocity[i]);
+      put(rs.up, seam ? rotate_z(p.angular_velocity[i], c, s) : p.angular_velocity[i]);
       rs.up.push_back(p.radius[i]);
       rs.up.push_back(p.mass[i]);
       rs.up.push_back(p.inertia[i]);
@@ -303,9 +351,11 @@ void System::exchange_rank_ghosts() {
     }
   rank_link_->shift(+1, rs.up, rs.from_below);
   // The ghosts of the rank below own their slots: their forces stay there and go back down.
-  const std::size_t first = p.n_real + ghost_owner_.size();
-  for (std::size_t g = 0; g < rs.from_below.size() / ghost_values; ++g)
+  const std::size_t first = p.n_real + ghost_owner_.size(), m = rs.from_below.size() / ghost_values;
+  for (std::size_t g = 0; g < m; ++g)
     ghost_owner_.push_back(std::uint32_t(first + g));
+  if (ring && rank == 0) // the last rank's, across the seam
+    n_image_ghosts_ += m;
 }
 
 void System::place_rank_ghosts() {
@@ -332,10 +382,16 @@ void System::refresh_rank_ghosts() {
   auto& p = particles;
   RankScratch& rs = rank_scratch_;
   resize_reusing(rs.up, motion_values * rs.sent_up.size());
+  const bool seam = rank_link_->ring() && rank_link_->rank() + 1 == rank_link_->n_ranks();
+  const double c = cos_t_, s = seam ? -sin_t_ : 0.0;
+  const Vec3 shift = seam ? shift_ : Vec3{0, 0, 0};
   for (std::size_t g = 0; g < rs.sent_up.size(); ++g) {
     const std::size_t i = rs.sent_up[g];
     double* a = &rs.up[motion_values * g];
-    const Vec3 &x = p.position[i], &v = p.velocity[i], &w = p.angular_velocity[i];
+    // Exact copies off the seam (c = 1, s = 0, no shift: the same bits).
+    const Vec3 x = seam ? rotate_z(p.position[i], c, s) - shift : p.position[i];
+    const Vec3 v = seam ? rotate_z(p.velocity[i], c, s) : p.velocity[i];
+    const Vec3 w = seam ? rotate_z(p.angular_velocity[i], c, s) : p.angular_velocity[i];
     a[0] = x.x, a[1] = x.y, a[2] = x.z, a[3] = v.x, a[4] = v.y, a[5] = v.z;
     a[6] = w.x, a[7] = w.y, a[8] = w.z;
   }

@@ -149,7 +149,7 @@ void System::canonical_pair_histories(std::vector<CarriedHistory>& old) {
       const std::uint32_t b = j >= n ? ghost_owner_[j - n] : j;
       const auto id_i = std::uint64_t(p.id[i]), id_b = std::uint64_t(p.id[b]);
       // Only the periodic images are rotated (ghosts of another rank are not).
-      const bool rotated = j >= n && j < n + n_periodic_ghosts_;
+      const bool rotated = j >= n && j < n + n_image_ghosts_;
       const Vec3 h = reorient_history(pair_history_[k], id_b < id_i, rotated, c, s);
       old[at++] = {(std::min(id_i, id_b) << 32) | std::max(id_i, id_b), id_b < id_i ? b : i, h};
     }
@@ -195,7 +195,7 @@ void System::wrap_into_sector(bool in_step, const std::vector<std::int32_t>& slo
     wrap[i] = w;
   }
   for (auto& e : old)
-    if (wrap[e.lower] != 0)
+    if (e.lower < n && wrap[e.lower] != 0) // (over ranks a ghost's owner wraps it)
       e.h = rotate_z(e.h, c, wrap[e.lower] > 0 ? s : -s);
 }
 
@@ -220,12 +220,12 @@ void System::make_ghosts() {
   const double c = cos_t_, s = sin_t_;
   ghost_owner_.clear();
   const PeriodicSlab& slab = settings.periodic_slab;
-  if (slab.enabled) {
+  if (slab.enabled && !rank_link_) { // over ranks the seam is a cut between ranks
     const double reach = 2 * r_max_ + skin_;
     for (std::uint32_t i = 0; i < n; ++i)
       if (slab.hi - p.position[i][slab.axis] < reach) // near the upper plane
         ghost_owner_.push_back(i);
-  } else if (settings.periodic.enabled) {
+  } else if (settings.periodic.enabled && !rank_link_) {
     const double reach = 2 * r_max_ + skin_;
     for (std::uint32_t i = 0; i < n; ++i) {
       const Vec3& x = p.position[i];
@@ -235,7 +235,7 @@ void System::make_ghosts() {
         ghost_owner_.push_back(i);
     }
   }
-  n_periodic_ghosts_ = ghost_owner_.size();
+  n_periodic_ghosts_ = n_image_ghosts_ = ghost_owner_.size();
   if (rank_link_)
     exchange_rank_ghosts();
   fill_ghost_slots();
@@ -271,7 +271,7 @@ void System::carry_pair_histories(const HistoryTable& old) {
   for (std::size_t k = 0; k < np; ++k) {
     const std::uint32_t i = neighbors_.pair_i[k], j = neighbors_.pair_j[k];
     const std::uint32_t b = j >= n ? ghost_owner_[j - n] : j;
-    const bool rotated = j >= n && j < n + n_periodic_ghosts_;
+    const bool rotated = j >= n && j < n + n_image_ghosts_;
     const auto id_i = std::uint64_t(p.id[i]), id_b = std::uint64_t(p.id[b]);
     const std::uint64_t key = (std::min(id_i, id_b) << 32) | std::max(id_i, id_b);
     const std::size_t lower = std::min(id_i, id_b);

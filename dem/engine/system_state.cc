@@ -158,7 +158,7 @@ void System::take_particles(const SystemState& s) {
   p.id = s.id;
   next_id_ = std::max(s.next_id, first_free_id(s.id.data(), s.id.size()));
   ghost_owner_ = s.ghost_owner;
-  n_periodic_ghosts_ = ghost_owner_.size();
+  n_periodic_ghosts_ = n_image_ghosts_ = ghost_owner_.size();
   neighbors_.pair_i = s.pair_i;
   neighbors_.pair_j = s.pair_j;
   pair_history_ = s.pair_history;

@@ -2,8 +2,9 @@
 //
 // A shift sends a buffer of doubles to the neighbour above (or below) and receives the one the
 // neighbour below (or above) sent the same way: two MPI_Sendrecv, the count first, then the
-// values, so that a receiver sizes its buffer before the values arrive. The first and last
-// ranks talk to MPI_PROC_NULL on their open side (nothing sent, nothing received).
+// values, so that a receiver sizes its buffer before the values arrive. On a line the first
+// and last ranks talk to MPI_PROC_NULL on their open side (nothing sent, nothing received); on
+// a ring (a periodic bed) they are each other's neighbours across the seam.
 //
 // Sums over ranks are taken in rank order, v_0 + v_1 + v_2 + ..., on rank 0 and broadcast: an
 // MPI_Allreduce may add in an order that depends on the implementation and the timing, and
@@ -19,15 +20,15 @@
 
 namespace wear::dem {
 
-MpiRankLink::MpiRankLink(MPI_Comm comm) : comm_(comm) {
+MpiRankLink::MpiRankLink(MPI_Comm comm, bool ring) : comm_(comm), ring_(ring) {
   MPI_Comm_rank(comm_, &rank_);
   MPI_Comm_size(comm_, &n_ranks_);
 }
 
 void MpiRankLink::shift(int direction, const std::vector<double>& send,
                         std::vector<double>& receive) {
-  const int up = rank_ + 1 < n_ranks_ ? rank_ + 1 : MPI_PROC_NULL;
-  const int down = rank_ > 0 ? rank_ - 1 : MPI_PROC_NULL;
+  const int up = rank_ + 1 < n_ranks_ ? rank_ + 1 : ring_ ? 0 : MPI_PROC_NULL;
+  const int down = rank_ > 0 ? rank_ - 1 : ring_ ? n_ranks_ - 1 : MPI_PROC_NULL;
   const int to = direction > 0 ? up : down, from = direction > 0 ? down : up;
   const int tag = direction > 0 ? 1 : 2;
   std::uint64_t n_send = send.size(), n_receive = 0;

@@ -10,12 +10,14 @@
 
 namespace wear::dem {
 
-/// The ranks of one communicator as a line: rank r's neighbours are r - 1 and r + 1.
+/// The ranks of one communicator as a line (rank r's neighbours are r - 1 and r + 1) or, for a
+/// periodic sector or slab, a ring (the last rank's neighbour above is rank 0).
 class MpiRankLink final : public RankLink {
 public:
-  explicit MpiRankLink(MPI_Comm comm);
+  explicit MpiRankLink(MPI_Comm comm, bool ring = false);
   int rank() const override { return rank_; }
   int n_ranks() const override { return n_ranks_; }
+  bool ring() const override { return ring_; }
   /// MPI_Sendrecv of the count, then of the values.
   void shift(int direction, const std::vector<double>& send, std::vector<double>& receive) override;
   void max_over_ranks(double* values, std::size_t n) override;
@@ -25,6 +27,7 @@ public:
 private:
   MPI_Comm comm_;
   int rank_ = 0, n_ranks_ = 1;
+  bool ring_ = false;
   std::vector<double> gathered_; ///< rank 0's copy of every rank's values
 };
 
