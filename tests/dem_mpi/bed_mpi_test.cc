@@ -326,3 +326,24 @@ TEST_CASE("slabs narrower than the reach are refused before any step", "[dem_mpi
                                    Contains("0.0125 m") && Contains("at most"));
   CHECK(s.n_steps() == 0);
 }
+
+TEST_CASE("balanced slabs carry equal shares of a cost histogram", "[dem_mpi][slabs]") {
+  // Bins of [0, 4) with costs 1, 1, 2, 0: the cumulative cost is linear within a bin.
+  const std::vector<double> cost{1, 1, 2, 0};
+  CHECK(SlabDecomposition::balanced_slabs(cost, 0, 4, 1) == std::vector<double>{0, 4});
+  CHECK(SlabDecomposition::balanced_slabs(cost, 0, 4, 2) == std::vector<double>{0, 2, 4});
+  const auto three = SlabDecomposition::balanced_slabs(cost, 0, 4, 3);
+  REQUIRE(three.size() == 4);
+  CHECK(three[1] == Approx(4.0 / 3).epsilon(1e-15));
+  CHECK(three[2] == Approx(7.0 / 3).epsilon(1e-15));
+  // No cost at all: equal widths.
+  CHECK(SlabDecomposition::balanced_slabs({0, 0}, 0, 1, 2) == std::vector<double>{0, 0.5, 1});
+  // Angular slabs are measured as arcs at the inner radius: 10 degrees at 0.05 m is 8.7 mm.
+  const auto a = SlabDecomposition::angular({0, pi / 18, pi / 9}, 0.05);
+  CHECK(a.width(0) == Approx(0.05 * pi / 18));
+  using Catch::Matchers::Contains;
+  CHECK_THROWS_WITH(a.check_widths(0.0125), Contains("2 ranks") && Contains("0.0125 m") &&
+                                                Contains("arc at the inner radius") &&
+                                                Contains("at most 1 slabs"));
+  CHECK_NOTHROW(a.check_widths(0.008));
+}
