@@ -7,18 +7,21 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdint>
 
 namespace wear::dem::testing {
 
 constexpr double pi = 3.14159265358979323846;
 
-/// Inward-facing closed box [0, L]^3 as one wall mesh.
-inline meshes::SurfaceMesh box_walls(double L) {
+/// The planes y = 0, y = L, z = 0, z = L facing inwards, reaching `margin` past x = 0 and
+/// x = L: a closed box [0, L]^3 with `closed` (the planes x = 0 and x = L too, no margin), else
+/// a channel along x (for a period along x).
+inline meshes::SurfaceMesh box_or_channel(double L, bool closed, double margin) {
   meshes::SurfaceMesh m;
   for (int k = 0; k < 2; ++k)
     for (int j = 0; j < 2; ++j)
       for (int i = 0; i < 2; ++i)
-        m.vertices.push_back({i * L, j * L, k * L});
+        m.vertices.push_back({closed ? i * L : (i ? L + margin : -margin), j * L, k * L});
   const auto v = [](int i, int j, int k) { return std::uint32_t(i + 2 * j + 4 * k); };
   const auto quad = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
     m.triangles.push_back({a, b, c});
@@ -28,10 +31,17 @@ inline meshes::SurfaceMesh box_walls(double L) {
   quad(v(0, 0, 1), v(0, 1, 1), v(1, 1, 1), v(1, 0, 1));
   quad(v(0, 0, 0), v(0, 0, 1), v(1, 0, 1), v(1, 0, 0));
   quad(v(0, 1, 0), v(1, 1, 0), v(1, 1, 1), v(0, 1, 1));
-  quad(v(0, 0, 0), v(0, 1, 0), v(0, 1, 1), v(0, 0, 1));
-  quad(v(1, 0, 0), v(1, 0, 1), v(1, 1, 1), v(1, 1, 0));
+  if (closed) {
+    quad(v(0, 0, 0), v(0, 1, 0), v(0, 1, 1), v(0, 0, 1));
+    quad(v(1, 0, 0), v(1, 0, 1), v(1, 1, 1), v(1, 1, 0));
+  }
   m.face_labels.assign(m.triangles.size(), meshes::label::wall);
   return m;
+}
+
+/// Inward-facing closed box [0, L]^3 as one wall mesh.
+inline meshes::SurfaceMesh box_walls(double L) {
+  return box_or_channel(L, true, 0);
 }
 
 /// Gravel-like material of the anchor workload (E = 5e7 Pa, nu = 0.25, rho = 2650).

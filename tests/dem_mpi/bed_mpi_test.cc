@@ -58,31 +58,6 @@ MpiRankLink& ring() {
   return link;
 }
 
-/// The planes y = 0, y = L, z = 0, z = L facing inwards, reaching `margin` past x = 0 and
-/// x = L: a closed box with `closed`, else a channel along x (for a period along x).
-meshes::SurfaceMesh box_or_channel(double L, bool closed, double margin) {
-  meshes::SurfaceMesh m;
-  for (int k = 0; k < 2; ++k)
-    for (int j = 0; j < 2; ++j)
-      for (int i = 0; i < 2; ++i)
-        m.vertices.push_back({closed ? i * L : (i ? L + margin : -margin), j * L, k * L});
-  const auto v = [](int i, int j, int k) { return std::uint32_t(i + 2 * j + 4 * k); };
-  const auto quad = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
-    m.triangles.push_back({a, b, c});
-    m.triangles.push_back({a, c, d});
-  };
-  quad(v(0, 0, 0), v(1, 0, 0), v(1, 1, 0), v(0, 1, 0));
-  quad(v(0, 0, 1), v(0, 1, 1), v(1, 1, 1), v(1, 0, 1));
-  quad(v(0, 0, 0), v(0, 0, 1), v(1, 0, 1), v(1, 0, 0));
-  quad(v(0, 1, 0), v(1, 1, 0), v(1, 1, 1), v(0, 1, 1));
-  if (closed) {
-    quad(v(0, 0, 0), v(0, 1, 0), v(0, 1, 1), v(0, 0, 1));
-    quad(v(1, 0, 0), v(1, 0, 1), v(1, 1, 1), v(1, 1, 0));
-  }
-  m.face_labels.assign(m.triangles.size(), meshes::label::wall);
-  return m;
-}
-
 /// 343 spheres on a 12 mm lattice in a box of 0.1 m, no gravity, random velocities of about
 /// 1 m/s (the same generator on every rank), e = 0.9, mu = 0.3; periodic along x if asked.
 void gas(System& s, bool periodic) {

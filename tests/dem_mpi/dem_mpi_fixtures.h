@@ -5,6 +5,7 @@
 #include "dem/parallel/mpi_rank_link.h"
 #include "dem/parallel/slab_decomposition.h"
 #include "meshes/structured_grid.h"
+#include "tests/dem/dem_fixtures.h"
 
 #include <catch2/catch.hpp>
 
@@ -13,8 +14,6 @@
 #include <vector>
 
 namespace wear::dem::testing {
-
-constexpr double pi = 3.14159265358979323846;
 
 inline MpiRankLink& world() {
   static MpiRankLink link(MPI_COMM_WORLD);
