@@ -9,9 +9,9 @@
 #        case: the name of a case file here without .prm (default: plain convex)
 #        WEARSIM=<binary> (default: the study's engine, engine.sh, built on first use),
 #        JOBS=<n> runs at once (default: the number of cores)
-# A case with no checkpoint in output/reference-study but one kept in
+# A case with no checkpoint in output/reference-study but a run kept in
 # cases/reference-study/state (save_state.sh, carried between machines in the repository)
-# continues from the kept one.
+# continues from the kept run.
 set -uo pipefail
 cd "$(dirname "$0")/../.."
 wearsim=${WEARSIM:-}
@@ -31,12 +31,13 @@ root=output/reference-study
 mkdir -p "$root"
 echo "reference study: $("$wearsim" --version), ${#cases[@]} case(s), $POOL_JOBS at once"
 
-restore_kept() { # <case>: the kept state into an output folder that holds no run
-  local kept="cases/reference-study/state/$1" out="$root/$1"
-  [ -f "$kept/checkpoint.h5" ] && [ ! -f "$out/checkpoint.h5" ] || return 0
+restore_kept() { # <case>: the kept run (save_state.sh) into an output folder that holds none
+  local kept="cases/reference-study/state/$1.tar.xz" out="$root/$1"
+  [ -f "$kept" ] && [ ! -f "$out/checkpoint.h5" ] || return 0
   mkdir -p "$out"
-  cp -r "$kept/." "$out/"
-  echo "reference study: $1 continues from the kept state ($(cat "$kept/KEPT" 2>/dev/null))"
+  tar -C "$out" -xJf "$kept" ||
+    { echo "run.sh: cannot unpack $kept into $out" >&2; exit 2; }
+  echo "reference study: continues from the kept run: $(cat "${kept%.tar.xz}.txt" 2>/dev/null)"
 }
 
 run_one() { # <case>: start or continue one case, its log beside its folder

@@ -1,54 +1,68 @@
 #!/usr/bin/env bash
 # Keeps the study's runs in the repository, so that a run stopped at the end of a working
 # session continues on the next machine (run.sh restores a kept run into an output folder that
-# holds none). Only what the continuation and the report need is kept: the latest checkpoint
-# (it holds the particles, the worn sample, every revolution and stage record), the resolved
-# parameters (the engine version the report checks), the summaries, the field history and the
-# stage surfaces. The volume files (about 11 MB per stage, for ParaView) and the snapshots are
-# left out: the run writes them again from the next stage on.
+# holds none). Only what the continuation and the report need is kept, as one xz archive per
+# run, state/<case>.tar.xz, with a line saying what it holds in state/<case>.txt:
+#   checkpoint.h5 (particles, worn sample, every revolution and stage record), parameters.prm
+#   (the engine version the report checks), summary.csv, stages.csv, history.h5, surface/*.h5
+#   (the stage surfaces the report maps);
+#   volume/stage_*.h5 as stubs holding only their index entry (the root attribute "xdmf"): a
+#   resume re-reads that entry of every stage and nothing else, and the fields themselves,
+#   about 11 MB per stage, are for ParaView. The kept run's volume.xdmf therefore lists
+#   stages whose fields are gone; the stages run after the restore have theirs.
+# Left out: the initial sample mesh (mesh/), the .vtu copies, the xdmf indexes (rewritten on
+# resume) and the snapshots.
 #
 # usage: bash cases/reference-study/save_state.sh [case ...]   (default: plain convex)
-#        BUDGET_MB=<n>: refuse when the kept state would exceed n MB in all (default 120),
-#        since every save adds its files to the repository's history.
+#        BUDGET_MB=<n>: refuse when the kept archives would exceed n MB in all (default 60),
+#        since every save adds its archives to the repository's history.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 root=output/reference-study
 kept_root=cases/reference-study/state
 cases=("$@")
 [ ${#cases[@]} -gt 0 ] || cases=(plain convex)
-keep=(checkpoint.h5 parameters.prm summary.csv stages.csv history.h5 surface)
 staging=$(mktemp -d)
 trap 'rm -rf "$staging"' EXIT
+mkdir -p "$kept_root"
 for c in "${cases[@]}"; do
   out="$root/$c"
   [ -f "$out/checkpoint.h5" ] ||
     { echo "save_state.sh: $out holds no checkpoint.h5 (nothing to keep for '$c')" >&2; exit 2; }
-  mkdir -p "$staging/$c"
-  for f in "${keep[@]}"; do
-    [ -e "$out/$f" ] && cp -r "$out/$f" "$staging/$c/"
+  s="$staging/$c"
+  mkdir -p "$s/surface" "$s/volume"
+  for f in checkpoint.h5 parameters.prm summary.csv stages.csv history.h5; do
+    [ -f "$out/$f" ] && cp "$out/$f" "$s/"
   done
-  # What the kept run is: for the run.sh message and the status in the README.
+  cp "$out"/surface/stage_*.h5 "$s/surface/" 2>/dev/null || true
+  for v in "$out"/volume/stage_*.h5; do
+    [ -f "$v" ] || continue
+    /usr/bin/python3 - "$v" "$s/volume/$(basename "$v")" <<'EOF'
+import sys, h5py
+with h5py.File(sys.argv[1], "r") as src, h5py.File(sys.argv[2], "w") as dst:
+    dst.attrs["xdmf"] = src.attrs["xdmf"]
+EOF
+  done
   revs=$(($(wc -l < "$out/summary.csv") - 1))
   engine=$(sed -n 2p "$out/parameters.prm" | sed 's/^# Engine version: //')
-  echo "$revs revolutions done, engine $engine, kept $(date -u +%FT%TZ)" > "$staging/$c/KEPT"
+  echo "$c: $revs revolutions done, engine $engine, kept $(date -u +%FT%TZ)" > "$staging/$c.txt"
+  tar -C "$s" -cf - . | xz -6 -T1 > "$staging/$c.tar.xz"
 done
-size_mb=$(du -sm "$staging" | cut -f1)
-others=0
-for d in "$kept_root"/*/; do
-  [ -d "$d" ] || continue
-  n=$(basename "$d")
-  [[ " ${cases[*]} " == *" $n "* ]] || others=$((others + $(du -sm "$d" | cut -f1)))
+new_kb=0
+for c in "${cases[@]}"; do new_kb=$((new_kb + $(du -k "$staging/$c.tar.xz" | cut -f1))); done
+others_kb=0
+for a in "$kept_root"/*.tar.xz; do
+  [ -f "$a" ] || continue
+  n=$(basename "$a" .tar.xz)
+  [[ " ${cases[*]} " == *" $n "* ]] || others_kb=$((others_kb + $(du -k "$a" | cut -f1)))
 done
-budget=${BUDGET_MB:-120}
-if [ $((size_mb + others)) -gt "$budget" ]; then
-  echo "save_state.sh: the kept state would be $((size_mb + others)) MB, above BUDGET_MB=$budget" >&2
+budget=${BUDGET_MB:-60}
+if [ $(((new_kb + others_kb) / 1024)) -gt "$budget" ]; then
+  echo "save_state.sh: the kept archives would be $(((new_kb + others_kb) / 1024)) MB, above BUDGET_MB=$budget" >&2
   exit 1
 fi
 for c in "${cases[@]}"; do
-  rm -rf "$kept_root/$c.new"
-  mkdir -p "$kept_root"
-  mv "$staging/$c" "$kept_root/$c.new"
-  rm -rf "$kept_root/$c"
-  mv "$kept_root/$c.new" "$kept_root/$c"
-  echo "save_state.sh: $c: $(cat "$kept_root/$c/KEPT") ($(du -sh "$kept_root/$c" | cut -f1))"
+  mv "$staging/$c.tar.xz" "$kept_root/$c.tar.xz.tmp" && mv "$kept_root/$c.tar.xz.tmp" "$kept_root/$c.tar.xz"
+  mv "$staging/$c.txt" "$kept_root/$c.txt"
+  echo "save_state.sh: $(cat "$kept_root/$c.txt") ($(du -h "$kept_root/$c.tar.xz" | cut -f1))"
 done
