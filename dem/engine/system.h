@@ -261,6 +261,8 @@ private:
   void rebuild(bool in_step = false, const ParticleChanges* changes = nullptr);
   /// Removes and appends real particles (rebuild's step for `changes`; ghosts dropped).
   void apply_particle_changes(const ParticleChanges& changes);
+  /// Real particle `from` into slot `to` (compaction after outlets and migration).
+  void move_particle(std::size_t to, std::size_t from);
   // The steps of rebuild(), in its order (system_rebuild.cc). Each receives its inputs and
   // fills its outputs through its arguments; the buffers are those of rebuild_scratch_, so that
   // a rebuild in the step loop allocates nothing once they have grown to the bed's size.
@@ -360,7 +362,6 @@ private:
   void reduce_setup_values(double& t_r, double& r_max, double& r_min);
   /// setup(): no periodic boundary, next_id_ over ranks, ids unique, slabs as wide as the reach.
   void check_ranks_at_setup();
-  void move_particle(std::size_t to, std::size_t from); ///< real particle `from` into slot `to`
   /// rebuild(): particles that left the slab go to the neighbour with their wall slots; the
   /// histories of their pairs go to both neighbours (appended to `old`, slots_of_id extended).
   void migrate_over_ranks(std::vector<std::int32_t>& slots_of_id, std::vector<CarriedHistory>& old);

@@ -73,6 +73,22 @@ System::remove_particles(const std::function<bool(const Vec3&, double)>& remove)
   return removed;
 }
 
+void System::move_particle(std::size_t to, std::size_t from) {
+  if (to == from)
+    return;
+  auto& p = particles;
+  p.position[to] = p.position[from];
+  p.velocity[to] = p.velocity[from];
+  p.angular_velocity[to] = p.angular_velocity[from];
+  p.force[to] = p.force[from];
+  p.torque[to] = p.torque[from];
+  p.radius[to] = p.radius[from];
+  p.mass[to] = p.mass[from];
+  p.inertia[to] = p.inertia[from];
+  p.material[to] = p.material[from];
+  p.id[to] = p.id[from];
+}
+
 void System::apply_particle_changes(const ParticleChanges& changes) {
   auto& p = particles;
   std::size_t n = p.n_real;
@@ -84,19 +100,7 @@ void System::apply_particle_changes(const ParticleChanges& changes) {
           changes.removed->push_back({p.id[i], p.position[i], p.velocity[i], p.mass[i]});
         continue;
       }
-      if (kept != i) {
-        p.position[kept] = p.position[i];
-        p.velocity[kept] = p.velocity[i];
-        p.angular_velocity[kept] = p.angular_velocity[i];
-        p.force[kept] = p.force[i];
-        p.torque[kept] = p.torque[i];
-        p.radius[kept] = p.radius[i];
-        p.mass[kept] = p.mass[i];
-        p.inertia[kept] = p.inertia[i];
-        p.material[kept] = p.material[i];
-        p.id[kept] = p.id[i];
-      }
-      ++kept;
+      move_particle(kept++, i);
     }
     n = kept;
     if (n == 0 && !rank_link_) // over ranks, another may still hold particles

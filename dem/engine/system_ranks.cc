@@ -181,22 +181,6 @@ void System::reduce_setup_values(double& t_r, double& r_max, double& r_min) {
   r_min = -v[2];
 }
 
-void System::move_particle(std::size_t to, std::size_t from) {
-  if (to == from)
-    return;
-  auto& p = particles;
-  p.position[to] = p.position[from];
-  p.velocity[to] = p.velocity[from];
-  p.angular_velocity[to] = p.angular_velocity[from];
-  p.force[to] = p.force[from];
-  p.torque[to] = p.torque[from];
-  p.radius[to] = p.radius[from];
-  p.mass[to] = p.mass[from];
-  p.inertia[to] = p.inertia[from];
-  p.material[to] = p.material[from];
-  p.id[to] = p.id[from];
-}
-
 void System::migrate_over_ranks(std::vector<std::int32_t>& slots_of_id,
                                 std::vector<CarriedHistory>& old) {
   auto& p = particles;
