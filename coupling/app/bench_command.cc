@@ -6,9 +6,14 @@
 // what they leave out is printed as "other". Memory per particle: the engine's arrays
 // (System::bytes_per_particle) plus the contact history, 2 x 4 bytes of pair indices and
 // 24 of tangential overlap per listed neighbour pair; peak resident memory from getrusage.
+// Under mpirun the workload is built on every rank and cut into angular slabs (the engine
+// keeps each rank's own); the rate counts the particles of all ranks over the loop time, and
+// each timed loop is followed by the ranks' own figures (bench_ranks.h). The phase split,
+// memory and contacts are then rank 0's.
 #include "coupling/app/bench_command.h"
 
 #include "coupling/app/bench_fem.h"
+#include "coupling/app/bench_ranks.h"
 #include "coupling/app/bench_tester.h"
 #include "coupling/output/progress_line.h"
 #include "dem/engine/benchmark.h"
@@ -129,14 +134,23 @@ BenchDemArguments bench_dem_arguments(const std::vector<std::string>& args) {
   return a;
 }
 
+// [-] The real particles of all ranks.
+double n_particles(const dem::System& s) {
+  double n = double(s.particles.n_real);
+  if (dem::RankLink* link = s.rank_link())
+    link->sum_in_rank_order(&n, 1);
+  return n;
+}
+
 // Sets the workload up and settles it with the floor rotating; returns the wall time [s].
 double settle(dem::System& s, const dem::BenchmarkOptions& o, int threads, std::ostream& out) {
   const meshes::Stopwatch clock;
   s.setup();
-  out << format("workload %s: %zu particles, %d walls, dt %.4e s, %d threads; settling %llu "
-                "steps\n",
-                o.workload.c_str(), s.particles.n_real, s.n_walls(), s.time_step(), threads,
-                (unsigned long long)o.settle_steps)
+  const dem::RankLink* link = s.rank_link();
+  out << format("workload %s: %.0f particles, %d walls, dt %.4e s, %d ranks x %d threads; "
+                "settling %llu steps\n",
+                o.workload.c_str(), n_particles(s), s.n_walls(), s.time_step(),
+                link ? link->n_ranks() : 1, threads, (unsigned long long)o.settle_steps)
       << std::flush;
   for (std::uint64_t k = 0; k < o.settle_steps; k += 1000)
     s.run(std::min<std::uint64_t>(1000, o.settle_steps - k));
@@ -151,6 +165,7 @@ struct PhaseSplit {
 struct TimedRun {
   double rate = 0; ///< [particle-steps/s]
   PhaseSplit ns;
+  std::vector<RankRow> ranks; ///< under mpirun: every rank's share
   bool operator<(const TimedRun& o) const { return rate < o.rate; }
 };
 
@@ -169,9 +184,9 @@ std::string split_text(const PhaseSplit& s) {
 // Rate and phase split of every repeat, per thread count. Repeats interleave the thread
 // counts, so each pair of figures shares one time window.
 std::map<int, std::vector<TimedRun>> timed_runs(dem::System& s, const BenchDemArguments& a,
-                                                std::ostream& out) {
+                                                dem::MpiRankLink* ranks, std::ostream& out) {
   const auto& o = a.options;
-  const double n = double(s.particles.n_real);
+  const double n = n_particles(s);
   std::map<int, std::vector<TimedRun>> runs;
   for (int r = 0; r < o.repeats; ++r)
     for (int th : a.thread_counts) {
@@ -179,20 +194,33 @@ std::map<int, std::vector<TimedRun>> timed_runs(dem::System& s, const BenchDemAr
       s.run(o.warm_steps);
       const auto n0 = s.n_rebuilds();
       s.reset_phase_times();
+      if (ranks)
+        ranks->reset_traffic();
       const meshes::Stopwatch clock;
       s.run(o.timed_steps);
-      const double secs = clock.seconds();
+      double secs = clock.seconds();
+      std::vector<RankRow> rows;
+      if (ranks) {
+        rows = gather_rank_rows(s, *ranks, secs);
+        for (const RankRow& w : rows) // the slowest rank's loop is the run's
+          secs = std::max(secs, w.loop_seconds);
+      }
       const double steps = n * double(o.timed_steps);
-      const TimedRun run{steps / secs, phase_split(s.phase_times(), secs, steps)};
-      runs[th].push_back(run);
+      // The phases per particle-step of this rank's own particles (rank 0's, printed).
+      const double own_steps = double(s.particles.n_real) * double(o.timed_steps);
+      TimedRun run{steps / secs, phase_split(s.phase_times(), secs, own_steps), std::move(rows)};
       out << format("repeat %d, %d threads: %llu steps in %.3f s, %.4e particle-steps/s, rebuild "
                     "every %.1f steps, %.2f neighbour pairs and %.2f contacts per particle\n"
                     "  %s\n",
                     r + 1, th, (unsigned long long)o.timed_steps, secs, run.rate,
                     double(o.timed_steps) / std::max<double>(1, double(s.n_rebuilds() - n0)),
-                    double(s.n_neighbor_pairs()) / n, double(s.n_pair_contacts()) / n,
+                    double(s.n_neighbor_pairs()) / double(s.particles.n_real),
+                    double(s.n_pair_contacts()) / double(s.particles.n_real),
                     split_text(run.ns).c_str())
           << std::flush;
+      if (!run.ranks.empty())
+        print_rank_table(run.ranks, o.timed_steps, out);
+      runs[th].push_back(std::move(run));
     }
   return runs;
 }
@@ -234,14 +262,20 @@ void report_contacts(const dem::System& s, std::ostream& out) {
 // L_z / sum r^2), memory and contacts. Returns the median rate per thread count.
 std::map<int, double> report(dem::System& s, double settle_seconds,
                              std::map<int, std::vector<TimedRun>>& runs, std::ostream& out) {
-  double z_top = 0, lz = 0, r2 = 0;
+  double z_top = 0, sums[2] = {0, 0}; // L_z, sum r^2
   for (std::size_t i = 0; i < s.particles.n_real; ++i) {
     const auto& x = s.particles.position[i];
     const auto& v = s.particles.velocity[i];
     z_top = std::max(z_top, x.z);
-    lz += x.x * v.y - x.y * v.x;
-    r2 += x.x * x.x + x.y * x.y;
+    sums[0] += x.x * v.y - x.y * v.x;
+    sums[1] += x.x * x.x + x.y * x.y;
   }
+  dem::RankLink* link = s.rank_link();
+  if (link) {
+    link->max_over_ranks(&z_top, 1);
+    link->sum_in_rank_order(sums, 2);
+  }
+  const double lz = sums[0], r2 = sums[1];
   std::map<int, double> medians;
   for (auto& [th, v] : runs) {
     std::sort(v.begin(), v.end());
@@ -252,13 +286,24 @@ std::map<int, double> report(dem::System& s, double settle_seconds,
   }
   out << format("settle %.1f s; bed top %.4f m, mean bed angular velocity %.3f rad/s\n",
                 settle_seconds, z_top, lz / r2);
+  if (link)
+    for (const auto& [th, v] : runs)
+      out << format("median with %d threads per rank: load imbalance %.3f (computation, "
+                    "largest / mean over the ranks)\n",
+                    th, compute_imbalance(v[v.size() / 2].ranks));
+  if (link)
+    out << "rank 0's share: ";
   report_memory(s, out);
-  report_contacts(s, out);
+  if (!link) // the wall slots are read through a state export, which is per process
+    report_contacts(s, out);
   return medians;
 }
 } // namespace
 
-int run_bench_command(const std::vector<std::string>& args, std::ostream& out) {
+int run_bench_command(const std::vector<std::string>& args, std::ostream& out_to,
+                      dem::MpiRankLink* ranks) {
+  std::ostream silent(nullptr); // the ranks after the first compute without a word
+  std::ostream& out = ranks && ranks->rank() > 0 ? silent : out_to;
   if (!args.empty() && args[0] == "fem")
     return run_bench_fem({args.begin() + 1, args.end()}, out);
   if (args.empty() || args[0] != "dem")
@@ -270,14 +315,22 @@ int run_bench_command(const std::vector<std::string>& args, std::ostream& out) {
   std::unique_ptr<dem::WearTester> tester;
   dem::System workload;
   double settle_seconds = 0;
-  if (a.options.workload == "tester")
+  dem::SlabDecomposition slabs;
+  if (a.options.workload == "tester") {
+    if (ranks && ranks->n_ranks() > 1)
+      throw std::invalid_argument("wearsim bench: --workload tester runs on one process; under "
+                                  "mpirun use the annulus or a sector, or `wearsim dem`");
     tester = tester_workload(a.tester, a.options.settle_steps > 0, threads, settle_seconds, out);
-  else {
+  } else {
     dem::build_benchmark(workload, a.options);
+    if (ranks && ranks->n_ranks() > 1) {
+      slabs = dem::benchmark_slabs(workload, ranks->n_ranks());
+      workload.set_rank_link(ranks, &slabs);
+    }
     settle_seconds = settle(workload, a.options, threads, out);
   }
   dem::System& s = tester ? tester->system() : workload;
-  auto runs = timed_runs(s, a, out);
+  auto runs = timed_runs(s, a, ranks && ranks->n_ranks() > 1 ? ranks : nullptr, out);
   const auto medians = report(s, settle_seconds, runs, out);
   if (tester)
     report_tester(*tester, medians, out);

@@ -2,6 +2,8 @@
 // Order: resolved parameters -> sample surface (gmsh, no volume mesh) -> bed filled and
 // settled -> revolutions, each followed by the evaluation row and a rewrite of the output
 // files (atomic), so a killed run leaves complete files of the revolutions it finished.
+// Under mpirun every rank runs the same command on its slab of the bed (WearTester over
+// ranks); the records are the same on every rank and rank 0 alone writes and logs.
 #include "coupling/app/dem_command.h"
 
 #include "coupling/output/progress_line.h"
@@ -99,7 +101,8 @@ bool stop_after_steady(const dem::TesterDemParameters& d, int r, const dem::Revo
 
 // The revolutions, each logged and written; returns their wall time [s].
 double run_revolutions(const dem::TesterDemParameters& d, dem::WearTester& tester,
-                       TesterOutput& output, TesterProgressLine& progress, std::ostream& log) {
+                       TesterOutput& output, TesterProgressLine& progress, std::ostream& log,
+                       bool writer) {
   log << "rev    time[s]  wear[mm^3]  cum[mm^3]  F_n[N]  v_bottom[m/s]  cv_v   cv_h   cv_rate "
          "steady  p-steps/s\n";
   const auto show = [&](const dem::TesterProgress& pr) { progress.show(pr); };
@@ -113,7 +116,8 @@ double run_revolutions(const dem::TesterDemParameters& d, dem::WearTester& teste
     const bool snapshot =
         r == d.revolutions || std::find(snaps.begin(), snaps.end(), r) != snaps.end();
     output.add_revolution(tester, snapshot);
-    output.write();
+    if (writer)
+      output.write();
     log_revolution(r, rec, log);
     if (stop_after_steady(d, r, rec, log))
       break;
@@ -131,14 +135,27 @@ void log_fits(const dem::TesterEvaluation& evaluation, std::ostream& log) {
 
 } // namespace
 
-void run_dem_command(const CaseParameters& p, std::ostream& log, const DemCommandOptions& options) {
+void run_dem_command(const CaseParameters& p, std::ostream& log_to,
+                     const DemCommandOptions& options) {
+  const int rank = options.ranks ? options.ranks->rank() : 0;
+  const int n_ranks = options.ranks ? options.ranks->n_ranks() : 1;
+  const bool writer = rank == 0;
+  std::ostream silent(nullptr); // the ranks after the first compute without a word
+  std::ostream& log = writer ? log_to : silent;
   const std::string dir = p.output.directory;
-  meshes::ensure_directory(dir);
-  write_resolved_parameters(p, dir + "/parameters.prm");
+  if (writer) {
+    meshes::ensure_directory(dir);
+    write_resolved_parameters(p, dir + "/parameters.prm");
+  }
   const auto sample = sample_surface(p.geometry.sample, log);
 
   dem::WearTester tester(p.geometry, p.dem, p.wear_law, p.deformation, sample.surface);
-  TesterProgressLine progress(options.progress, tester, p.dem.revolutions);
+  tester.set_rank_link(options.ranks);
+  if (n_ranks > 1)
+    log << format("over %d MPI ranks, %d threads each: angular slabs of %.2f degrees\n", n_ranks,
+                  p.dem.n_threads, p.geometry.tester.sector_angle_deg / n_ranks)
+        << std::flush;
+  TesterProgressLine progress(options.progress && writer, tester, p.dem.revolutions);
   const auto fill =
       tester.fill_and_settle([&](const dem::TesterProgress& pr) { progress.show(pr); });
   progress.line().keep();
@@ -147,8 +164,9 @@ void run_dem_command(const CaseParameters& p, std::ostream& log, const DemComman
   TesterOutput output(dir, tester.sample_mesh(), tester.evaluation().element_labels(),
                       tester.evaluation().n_columns());
   output.add_snapshot(tester, 0);
-  output.write();
-  const double total_wall = run_revolutions(p.dem, tester, output, progress, log);
+  if (writer)
+    output.write();
+  const double total_wall = run_revolutions(p.dem, tester, output, progress, log, writer);
   log_fits(tester.evaluation(), log);
   log << "wrote " << output.h5_path() << ", " << output.xdmf_path() << ", " << output.csv_path()
       << " (" << human_duration(total_wall) << " of revolutions)\n";

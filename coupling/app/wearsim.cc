@@ -10,6 +10,7 @@
 #include "coupling/app/scene_run_command.h"
 #include "coupling/parameters/case_parameters.h"
 #include "coupling/parameters/engine_version.h"
+#include "dem/parallel/mpi_rank_link.h"
 
 #include <deal.II/base/mpi.h>
 
@@ -64,7 +65,9 @@ void usage(std::ostream& out) {
          "                           FEM benchmark on the reference convex sample: stress\n"
          "                           solves, mesh motion, remeshing\n"
          "  --print-parameters       list every case-file parameter with default and meaning\n"
-         "  --version                the engine version (git describe at build time)\n"
+         "  --version                the engine version (git describe at build time)\n\n"
+         "under mpirun -np N: 'dem' and 'bench dem' decompose the bed over the N ranks (angular\n"
+         "slabs; DEM/Threads or --threads per rank); rank 0 writes and prints\n"
          "  --help                   this text\n";
 }
 
@@ -72,14 +75,35 @@ void usage(std::ostream& out) {
 
 int main(int argc, char** argv) {
   using namespace wear::coupling;
-  // MPI for deal.II's Trilinos solvers (one process; threads through TBB and OpenMP).
+  // MPI for deal.II's Trilinos solvers and, under mpirun, for the DEM over ranks.
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, dealii::numbers::invalid_unsigned_int);
   if (argc < 2) {
     usage(std::cerr);
     return 2;
   }
   const std::string cmd = argv[1];
+  int rank = 0, n_ranks = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &n_ranks);
   try {
+    if (n_ranks > 1) {
+      // The tester and the benchmark's sectors and annulus are rings of angular slabs.
+      wear::dem::MpiRankLink ranks(MPI_COMM_WORLD, true);
+      if (cmd == "dem" && argc == 3) {
+        const CaseParameters p = read_case(argv[2]);
+        require_no_scene(p, "dem");
+        DemCommandOptions options;
+        options.ranks = &ranks;
+        run_dem_command(p, std::cout, options);
+        return 0;
+      }
+      if (cmd == "bench" && argc >= 3 && std::string(argv[2]) == "dem")
+        return run_bench_command({argv + 2, argv + argc}, std::cout, &ranks);
+      throw std::invalid_argument(
+          "under mpirun (" + std::to_string(n_ranks) +
+          " ranks) wearsim decomposes 'dem <case.prm>' and 'bench dem'; run the other commands "
+          "as one process (the coupled run over ranks is not there yet)");
+    }
     if (cmd == "--help" || cmd == "-h") {
       usage(std::cout);
       return 0;
@@ -134,7 +158,12 @@ int main(int argc, char** argv) {
     usage(std::cerr);
     return 2;
   } catch (const std::exception& e) {
-    std::cerr << "wearsim " << cmd << ": error: " << e.what() << "\n";
+    std::cerr << "wearsim " << cmd << ": error"
+              << (n_ranks > 1 ? " on rank " + std::to_string(rank) : std::string()) << ": "
+              << e.what() << "\n";
+    // The other ranks may wait in a message of the step loop: stop them all.
+    if (n_ranks > 1)
+      MPI_Abort(MPI_COMM_WORLD, 1);
     return 1;
   }
 }

@@ -48,7 +48,7 @@ TesterOutput::TesterOutput(std::string directory, const meshes::SurfaceMesh& ini
     : directory_(std::move(directory)), initial_(initial_surface), element_labels_(element_labels),
       n_columns_(n_columns) {}
 
-void TesterOutput::add_revolution(const dem::WearTester& tester, bool snapshot) {
+void TesterOutput::add_revolution(dem::WearTester& tester, bool snapshot) {
   const auto& loads = tester.last_loads();
   const auto& mesh = tester.sample_mesh();
   Revolution r;
@@ -82,9 +82,9 @@ void TesterOutput::add_revolution(const dem::WearTester& tester, bool snapshot) 
     add_snapshot(tester, tester.n_revolutions_done());
 }
 
-void TesterOutput::add_snapshot(const dem::WearTester& tester, int revolution) {
+void TesterOutput::add_snapshot(dem::WearTester& tester, int revolution) {
   {
-    const auto& p = tester.system().particles;
+    const dem::Particles& p = tester.bed_particles(); // over ranks: every rank's
     Snapshot s;
     s.revolution = revolution;
     s.time = tester.system().time();

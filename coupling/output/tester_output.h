@@ -24,9 +24,9 @@ public:
                const std::vector<int>& element_labels, int n_columns);
 
   /// Stores the fields of the revolution just completed (and a particle snapshot if asked).
-  void add_revolution(const dem::WearTester& tester, bool snapshot);
+  void add_revolution(dem::WearTester& tester, bool snapshot);
   /// Stores the particles now, as revolution `revolution` (0: the settled bed).
-  void add_snapshot(const dem::WearTester& tester, int revolution);
+  void add_snapshot(dem::WearTester& tester, int revolution);
   /// Rewrites history.h5, history.xdmf and summary.csv.
   void write() const;
 

@@ -155,4 +155,10 @@ void build_benchmark(System& s, const std::string& workload, bool mesh_walls) {
   add_sector(s, g, target, workload == "sample45k", mesh_walls);
 }
 
+SlabDecomposition benchmark_slabs(const System& s, int n_ranks) {
+  const double angle =
+      s.settings.periodic.enabled ? s.settings.periodic.angle : 2 * 3.14159265358979323846;
+  return SlabDecomposition::angular(SlabDecomposition::uniform_slabs(0, angle, n_ranks), ri);
+}
+
 } // namespace wear::dem

@@ -1,5 +1,6 @@
 #pragma once
 // The DEM performance workloads of shared/anchors/liggghts, rebuilt in this engine.
+#include "dem/engine/slab_decomposition.h"
 #include "dem/engine/system.h"
 
 #include <string>
@@ -30,5 +31,9 @@ struct BenchmarkOptions {
 void build_benchmark(System& s, const std::string& workload, bool mesh_walls = false);
 /// The same from the options (workload, mesh_walls).
 void build_benchmark(System& s, const BenchmarkOptions& o);
+
+/// Equal angular slabs of a built workload for `n_ranks` ranks (a ring: the sector's periodic
+/// seam or, for the annulus, the full circle), measured at the inner cylinder.
+SlabDecomposition benchmark_slabs(const System& s, int n_ranks);
 
 } // namespace wear::dem

@@ -5,6 +5,9 @@
 // reproducible. Filling to a height: N = 0.6 A h / mean particle volume, inserted loosely,
 // then settled under gravity; the bed height is the mean top-layer centre height plus a
 // radius, the packing fraction is counted in the bed core by particle centres.
+// Over ranks (System::set_rank_link) every rank inserts the same bed from the same seed and
+// keeps its slab's particles at setup, so the bed is the same whatever the rank count; the
+// settling test and the bed's figures are taken over all ranks.
 #include "dem/engine/filling.h"
 
 #include "dem/engine/insertion_grid.h"
@@ -185,27 +188,35 @@ FillReport fill_to_height(System& system, const std::function<FillRegion(double)
                              " particles fit into the insertion region; "
                              "raise the loose factor or lower the fill height");
   system.setup();
+  RankLink* link = system.rank_link(); // over ranks: the figures of the whole bed
   const double check_every = 0.02;
   while (system.time() < max_time) {
     system.run(std::max<std::uint64_t>(1, std::uint64_t(check_every / system.time_step())));
     // Settled when the mean speed is below the tolerance and no particle is still falling
     // (a few late arrivals barely move the mean).
-    double v = 0, v_max = 0;
+    double v[2] = {0, double(system.particles.n_real)}, v_max = 0;
     for (std::size_t i = 0; i < system.particles.n_real; ++i) {
       const double s = meshes::norm(system.particles.velocity[i]);
-      v += s;
+      v[0] += s;
       v_max = std::max(v_max, s);
+    }
+    if (link) {
+      link->sum_in_rank_order(v, 2);
+      link->max_over_ranks(&v_max, 1);
     }
     if (on_check)
       on_check(system.time());
-    if (v / double(system.particles.n_real) < speed_tolerance && v_max < 10 * speed_tolerance &&
-        system.time() > 0.1)
+    if (v[0] / v[1] < speed_tolerance && v_max < 10 * speed_tolerance && system.time() > 0.1)
       break;
   }
   const Particles& p = system.particles;
   std::vector<double> z(p.n_real);
   for (std::size_t i = 0; i < p.n_real; ++i)
     z[i] = p.position[i].z;
+  if (link) {
+    std::vector<double> mine = std::move(z);
+    link->gather_in_rank_order(mine, z);
+  }
   std::sort(z.begin(), z.end());
   // Top layer: the highest particles that would cover the area once.
   const double d = psd.max_diameter();
@@ -216,9 +227,11 @@ FillReport fill_to_height(System& system, const std::function<FillRegion(double)
   for (std::size_t k = z.size() - m; k < z.size(); ++k)
     top += z[k];
   FillReport r;
-  r.n_particles = p.n_real;
+  r.n_particles = z.size();
   r.bed_height = top / double(m) + 0.5 * d - z_floor;
   r.packing_fraction = packing_fraction(p, area, z_floor + d, z_floor + r.bed_height - d);
+  if (link)
+    link->sum_in_rank_order(&r.packing_fraction, 1);
   r.settle_time = system.time();
   return r;
 }

@@ -1,7 +1,8 @@
 #pragma once
 // The engine's view of a bed decomposed over ranks (processes), without MPI: the slabs that
 // say which rank owns a point, and the messages between neighbouring ranks. dem/parallel
-// implements both over MPI (MpiRankLink, SlabDecomposition); the engine never includes mpi.h.
+// implements the messages over MPI (MpiRankLink), slab_decomposition.h cuts the slabs; the
+// engine never includes mpi.h.
 #include "meshes/vec3.h"
 
 #include <algorithm>
@@ -45,12 +46,15 @@ struct SlabCuts {
     return int(std::upper_bound(bound.begin() + 1, bound.end() - 1, c) - (bound.begin() + 1));
   }
   /// [m] How far x lies below the upper cut of rank r (negative beyond it): along the axis, or
-  /// the distance to the plane through the z axis at theta = bound[r + 1].
+  /// the distance to the half-plane from the z axis at theta = bound[r + 1] (a point behind the
+  /// axis, more than 90 degrees from it, is as far as the axis: a slab over 180 degrees wide
+  /// has its lower cut on the same plane, on the other side).
   double below_upper_cut(int r, const Vec3& x) const {
     const double cut = bound[std::size_t(r) + 1];
     if (!angular)
       return cut - x[axis];
-    return std::sin(cut) * x.x - std::cos(cut) * x.y;
+    const double c = std::cos(cut), s = std::sin(cut);
+    return c * x.x + s * x.y >= 0 ? s * x.x - c * x.y : std::hypot(x.x, x.y);
   }
 };
 
@@ -76,6 +80,9 @@ public:
   /// values[k] becomes the sum over the ranks, added in rank order 0, 1, 2, ... (every rank
   /// gets the same bits, independently of timing).
   virtual void sum_in_rank_order(double* values, std::size_t n) = 0;
+  /// `all` becomes every rank's `mine` one after the other in rank order 0, 1, 2, ... (every
+  /// rank gets the same). For evaluations over a few particles, not for the step loop.
+  virtual void gather_in_rank_order(const std::vector<double>& mine, std::vector<double>& all) = 0;
 };
 
 /// The decomposition as the engine takes it at setup: the slabs, and the check of their widths

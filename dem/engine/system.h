@@ -247,6 +247,11 @@ public:
   /// (the steps exchange messages). `link` and `slabs` must outlive the System. No link or one
   /// rank: the engine of one process, bit for bit.
   void set_rank_link(RankLink* link, const RankSlabs* slabs);
+  /// The ranks' messages (set_rank_link), null on one rank.
+  RankLink* rank_link() const { return rank_link_; }
+  /// wear_integrals(wall) added over the ranks field by field in rank order, the same bits on
+  /// every rank (every rank calls it together); on one rank wear_integrals(wall).
+  WearIntegrals wear_integrals_over_ranks(int wall) const;
 
 private:
   /// Particles to add and a rule for those to remove, applied by a rebuild between steps.

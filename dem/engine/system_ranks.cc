@@ -25,11 +25,12 @@
 // rebuild on the same step.
 //
 // Periodic seam: a periodic sector or slab decomposed over ranks is a ring whose slabs span
-// the period; the last rank's ghosts reach rank 0 as periodic images (x -> R(-angle) x - L,
-// vectors rotated), flagged as images in rank 0's ghost slots, so the kernel returns their
-// forces rotated by +angle and their histories are turned as a periodic ghost's. A particle
-// wraps on its own rank (wrap_into_sector) and passes round the seam; the receiver turns its
-// own histories in the particle's frame by the wrap, which travels with it.
+// the period (so are angular slabs round a full circle, whose seam turns by 2 pi: the identity);
+// the last rank's ghosts reach rank 0 as periodic images (x -> R(-angle) x - L, vectors rotated),
+// flagged as images in rank 0's ghost slots, so the kernel returns their forces rotated by +angle
+// and their histories are turned as a periodic ghost's. A particle wraps on its own rank
+// (wrap_into_sector) and passes round the seam; the receiver turns its own histories in the
+// particle's frame by the wrap, which travels with it.
 //
 // Assumptions: stable ids unique over all ranks (checked at setup) unless every rank holds
 // the same bed, of which each then keeps its own; an exception on one rank (a particle too
@@ -144,10 +145,19 @@ void System::check_ranks_at_setup() {
   const std::vector<double>& b = slab_cuts_.bound;
   const auto at = [](double x, double y) { return std::abs(x - y) <= 1e-12 * (1 + std::abs(y)); };
   const std::string what = "DEM over " + std::to_string(link.n_ranks()) + " ranks: ";
-  if (periodic() != link.ring())
-    throw std::invalid_argument(what + (link.ring() ? "ranks in a ring need a periodic boundary"
-                                                    : "a periodic boundary needs the ranks in a "
-                                                      "ring (MpiRankLink's `ring`)"));
+  // Angular slabs round the full circle (an annulus) are a ring too, whose seam turns by
+  // 2 pi: the identity of a system without a periodic boundary (cos_t_ = 1, sin_t_ = 0).
+  constexpr double two_pi = 2 * 3.14159265358979323846;
+  const bool full_circle = slab_cuts_.angular && at(b.back() - b.front(), two_pi);
+  if (settings.periodic.enabled && full_circle)
+    throw std::invalid_argument(what + "the slabs of a periodic sector span the sector, not the "
+                                       "full circle");
+  if (link.ring() != (periodic() || full_circle))
+    throw std::invalid_argument(
+        what + (link.ring() ? "ranks in a ring need a periodic boundary or slabs round the full "
+                              "circle"
+                            : "a periodic boundary or slabs round the full circle need the ranks "
+                              "in a ring (MpiRankLink's `ring`)"));
   if (settings.periodic.enabled &&
       !(slab_cuts_.angular && at(b.front(), 0) && at(b.back(), settings.periodic.angle)))
     throw std::invalid_argument(what + "the slabs of a periodic sector must be angular and span "
@@ -429,6 +439,44 @@ void System::ranked_forces(bool need_rebuild, double t_drift) {
   }
   compute_forces();
   return_ghost_forces();
+}
+
+WearIntegrals System::wear_integrals_over_ranks(int wall) const {
+  WearIntegrals w = wear_integrals(wall);
+  if (!rank_link_)
+    return w;
+  const std::size_t nf = w.archard.size();
+  // Flattened in WearIntegrals' order, then the totals.
+  std::vector<double> v;
+  v.reserve(n_wear_values * nf + 12);
+  for (std::size_t f = 0; f < nf; ++f)
+    v.insert(v.end(), {w.impulse[f].x, w.impulse[f].y, w.impulse[f].z, w.normal_impulse[f],
+                       w.archard[f], w.sliding_work[f], w.contact_steps[f], w.normal_moment[f].x,
+                       w.normal_moment[f].y, w.normal_moment[f].z, w.impulse_moment[f].x,
+                       w.impulse_moment[f].y, w.impulse_moment[f].z});
+  v.insert(v.end(), {w.total_archard, w.total_normal_impulse, w.total_sliding_work,
+                     w.total_impulse.x, w.total_impulse.y, w.total_impulse.z,
+                     w.total_normal_moment.x, w.total_normal_moment.y, w.total_normal_moment.z,
+                     w.total_impulse_moment.x, w.total_impulse_moment.y, w.total_impulse_moment.z});
+  rank_link_->sum_in_rank_order(v.data(), v.size());
+  for (std::size_t f = 0; f < nf; ++f) {
+    const double* a = &v[n_wear_values * f];
+    w.impulse[f] = vec(a);
+    w.normal_impulse[f] = a[3];
+    w.archard[f] = a[4];
+    w.sliding_work[f] = a[5];
+    w.contact_steps[f] = a[6];
+    w.normal_moment[f] = vec(a + 7);
+    w.impulse_moment[f] = vec(a + 10);
+  }
+  const double* t = &v[n_wear_values * nf];
+  w.total_archard = t[0];
+  w.total_normal_impulse = t[1];
+  w.total_sliding_work = t[2];
+  w.total_impulse = vec(t + 3);
+  w.total_normal_moment = vec(t + 6);
+  w.total_impulse_moment = vec(t + 9);
+  return w;
 }
 
 } // namespace wear::dem

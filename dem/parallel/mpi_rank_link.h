@@ -1,14 +1,23 @@
 #pragma once
 // RankLink over MPI (the C API of Open MPI): the engine's messages between neighbouring ranks
-// and its reductions, and the wear integrals of a wearing wall summed over the ranks.
+// and its reductions, with the time and bytes they took.
 #include "dem/engine/rank_link.h"
-#include "dem/engine/system.h"
 
 #include <mpi.h>
 
+#include <cstdint>
 #include <vector>
 
 namespace wear::dem {
+
+/// What a rank's messages cost since the last reset: the time inside MPI (which includes
+/// waiting for a neighbour that is still computing: the load imbalance shows here) and what
+/// it sent.
+struct RankTraffic {
+  double seconds = 0;         ///< [s] wall time in MPI calls
+  double bytes_sent = 0;      ///< [B] payload sent to neighbours and in reductions
+  std::uint64_t messages = 0; ///< [-] MPI calls that sent something
+};
 
 /// The ranks of one communicator as a line (rank r's neighbours are r - 1 and r + 1) or, for a
 /// periodic sector or slab, a ring (the last rank's neighbour above is rank 0).
@@ -23,20 +32,23 @@ public:
   void max_over_ranks(double* values, std::size_t n) override;
   /// Gathered to rank 0, added there in rank order, broadcast.
   void sum_in_rank_order(double* values, std::size_t n) override;
+  /// MPI_Allgather of the counts, then MPI_Allgatherv.
+  void gather_in_rank_order(const std::vector<double>& mine, std::vector<double>& all) override;
+
+  const RankTraffic& traffic() const { return traffic_; }
+  void reset_traffic() { traffic_ = {}; }
 
 private:
   MPI_Comm comm_;
   int rank_ = 0, n_ranks_ = 1;
   bool ring_ = false;
   std::vector<double> gathered_; ///< rank 0's copy of every rank's values
+  std::vector<int> counts_, offsets_;
+  RankTraffic traffic_;
 };
 
 /// Adds vectors over the ranks of `comm` in rank order (gather to rank 0, add 0, 1, 2, ...,
 /// broadcast): every rank gets the same bits whatever the timing.
 void sum_in_rank_order(MPI_Comm comm, std::vector<double>& values);
-
-/// The window integrals of a wearing wall over every rank: each rank's System::wear_integrals,
-/// added field by field in rank order (sum_in_rank_order), the same on every rank.
-WearIntegrals wear_integrals_over_ranks(const System& system, int wall, RankLink& link);
 
 } // namespace wear::dem

@@ -221,9 +221,9 @@ void TesterEvaluation::sample(const Particles& p, const meshes::SurfaceMesh& pla
   double speed = 0, n_over = 0, n_bottom = 0;
   std::vector<double> tops;
   for (std::size_t i = 0; i < p.n_real; ++i) {
-    const Vec3 x = frame_.point_to_sample(p.position[i]);
-    if (std::abs(x.x) > W / 2 || std::abs(x.y) > L / 2 || x.z < geometry_.thickness - 1e-3)
+    if (!over_sample(p.position[i]))
       continue;
+    const Vec3 x = frame_.point_to_sample(p.position[i]);
     const double v = meshes::norm(p.velocity[i]);
     speed += v;
     n_over += 1;
@@ -249,6 +249,12 @@ void TesterEvaluation::sample(const Particles& p, const meshes::SurfaceMesh& pla
   for (std::size_t k = 0; k < m; ++k)
     top += tops[k];
   open_.height.push_back(m > 0 ? top / double(m) - geometry_.thickness : 0);
+}
+
+bool TesterEvaluation::over_sample(const Vec3& position) const {
+  const Vec3 x = frame_.point_to_sample(position);
+  return std::abs(x.x) <= geometry_.width / 2 && std::abs(x.y) <= geometry_.length / 2 &&
+         x.z >= geometry_.thickness - 1e-3;
 }
 
 RevolutionRecord& TesterEvaluation::end_revolution(double time, const std::vector<double>& removed,

@@ -99,6 +99,9 @@ public:
   /// the revolution ([m^3], [N s]).
   void sample(const Particles& p, const meshes::SurfaceMesh& placed, double time,
               const std::vector<double>& removed, const std::vector<double>& normal_impulse);
+  /// True when a particle centred at x (tester frame) is one sample() counts: over the
+  /// sample's footprint, above its base less 1 mm. Over ranks the tester gathers these.
+  bool over_sample(const Vec3& x) const;
   /// Closes the revolution with the per-face removed volume and the per-contact total.
   RevolutionRecord& end_revolution(double time, const std::vector<double>& removed,
                                    double contact_total_removed);

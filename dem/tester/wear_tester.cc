@@ -21,6 +21,11 @@
 // n = round(T / dt) steps.
 // The reference deformation moves the sample's nodes every N_update steps by the removed
 // volume accumulated since the previous move (times the declared amplification).
+// Over ranks (set_rank_link) every rank builds the same tester and inserts the same bed, of
+// which it keeps its slab's particles (the same bed whatever the rank count); the wear
+// integrals are summed over the ranks in rank order at every evaluation sample and at the end
+// of a revolution, and the evaluation samples the particles over the sample gathered from
+// every rank, so that every rank holds the same records.
 #include "dem/tester/wear_tester.h"
 
 #include "meshes/sample_frame.h"
@@ -166,6 +171,65 @@ WearTester::WearTester(const meshes::GeometryParameters& geometry, const TesterD
   cumulative_removed_.assign(placed.n_faces(), 0);
 }
 
+void WearTester::set_rank_link(RankLink* link) {
+  if (!link || link->n_ranks() < 2) {
+    system_.set_rank_link(nullptr, nullptr);
+    return;
+  }
+  if (!link->ring())
+    throw std::invalid_argument("WearTester over ranks: the ranks must form a ring (the periodic "
+                                "seam or the full circle joins the last rank to the first)");
+  const double angle = geometry_.tester.sector_angle_deg < 360 ? sector_ : 2 * pi;
+  slabs_ = SlabDecomposition::angular(SlabDecomposition::uniform_slabs(0, angle, link->n_ranks()),
+                                      geometry_.tester.inner_radius);
+  system_.set_rank_link(link, &slabs_);
+}
+
+void WearTester::count_particles() {
+  double n = double(system_.particles.n_real);
+  if (RankLink* link = system_.rank_link())
+    link->sum_in_rank_order(&n, 1);
+  n_particles_ = std::size_t(n);
+}
+
+const Particles& WearTester::particles_for_evaluation() {
+  return gather_particles(true);
+}
+
+const Particles& WearTester::bed_particles() {
+  return gather_particles(false);
+}
+
+// Position, velocity, spin, radius and id of each particle, every rank's in rank order.
+const Particles& WearTester::gather_particles(bool only_over_sample) {
+  RankLink* link = system_.rank_link();
+  if (!link)
+    return system_.particles;
+  const Particles& p = system_.particles;
+  constexpr std::size_t m = 11;
+  std::vector<double>& mine = gather_buffer_;
+  mine.clear();
+  for (std::size_t i = 0; i < p.n_real; ++i) {
+    if (only_over_sample && !evaluation_->over_sample(p.position[i]))
+      continue;
+    for (const Vec3& v : {p.position[i], p.velocity[i], p.angular_velocity[i]})
+      mine.insert(mine.end(), {v.x, v.y, v.z});
+    mine.push_back(p.radius[i]);
+    mine.push_back(double(p.id[i]));
+  }
+  std::vector<double> all;
+  link->gather_in_rank_order(mine, all);
+  Particles& g = gathered_;
+  g = Particles{};
+  for (std::size_t k = 0; k + m <= all.size(); k += m) {
+    const double* a = &all[k];
+    g.add({a[0], a[1], a[2]}, {a[3], a[4], a[5]}, a[9], dem_.particle.density, particle_material_);
+    g.angular_velocity.back() = {a[6], a[7], a[8]};
+    g.id.back() = std::int64_t(a[10]);
+  }
+  return g;
+}
+
 FillReport WearTester::fill_and_settle(const std::function<void(const TesterProgress&)>& progress) {
   const auto& t = geometry_.tester;
   const auto& g = geometry_.sample;
@@ -213,6 +277,7 @@ FillReport WearTester::fill_and_settle(const std::function<void(const TesterProg
       system_, make_region, area, 0, dem_.fill_height, dem_.psd, dem_.particle.density,
       particle_material_, dem_.seed, dem_.loose_factor, 0.01, dem_.settle_time,
       [&](double time) {
+        count_particles(); // every rank, before the progress that only some show
         if (!progress)
           return;
         const double wall = wall_clock.seconds();
@@ -221,11 +286,12 @@ FillReport WearTester::fill_and_settle(const std::function<void(const TesterProg
         pr.time = time;
         pr.fraction = time / dem_.settle_time;
         pr.particle_steps_per_second =
-            wall > 0 ? double(system_.n_steps()) * double(system_.particles.n_real) / wall : 0;
+            wall > 0 ? double(system_.n_steps()) * double(n_particles_) / wall : 0;
         progress(pr);
       },
       dem_.assumed_packing);
   steps_per_revolution_ = std::uint64_t(std::llround(revolution_time_ / system_.time_step()));
+  count_particles();
   return report;
 }
 
@@ -275,10 +341,10 @@ bool WearTester::advance_revolution(const std::function<void(const TesterProgres
     const bool sample = done % sample_every == 0;
     const bool update = deformation_ && (done % update_every == 0 || done == n);
     if (sample || update) {
-      const WearIntegrals wi = system_.wear_integrals(sample_wall_);
+      const WearIntegrals wi = sample_integrals();
       const auto removed = law_->removed_volume(wi);
       if (sample)
-        evaluation_->sample(system_.particles, sample_mesh(), system_.time(), removed,
+        evaluation_->sample(particles_for_evaluation(), sample_mesh(), system_.time(), removed,
                             wi.normal_impulse);
       if (update) {
         std::vector<double> delta(removed.size());
@@ -297,7 +363,7 @@ bool WearTester::advance_revolution(const std::function<void(const TesterProgres
       pr.fraction = double(done) / double(n);
       pr.time = system_.time();
       pr.particle_steps_per_second =
-          wall > 0 ? double(done - first) * double(system_.particles.n_real) / wall : 0;
+          wall > 0 ? double(done - first) * double(n_particles_) / wall : 0;
       progress(pr);
     }
   }
@@ -307,7 +373,7 @@ bool WearTester::advance_revolution(const std::function<void(const TesterProgres
 
 const RevolutionRecord& WearTester::close_revolution(double wall) {
   const std::uint64_t n = steps_per_revolution_;
-  const WearIntegrals integrals = system_.wear_integrals(sample_wall_);
+  const WearIntegrals integrals = sample_integrals();
   // The window's duration is the nominal revolution (the step count rounds it to a step).
   last_loads_ = wall_loads(integrals, law_->removed_volume(integrals), sample_mesh(),
                            revolution_time_, spreading_);
@@ -317,7 +383,7 @@ const RevolutionRecord& WearTester::close_revolution(double wall) {
   RevolutionRecord& r =
       evaluation_->end_revolution(system_.time(), removed, law_->total_removed_volume(integrals));
   r.wall_seconds = wall;
-  r.particle_steps_per_second = double(n) * double(system_.particles.n_real) / wall;
+  r.particle_steps_per_second = double(n) * double(n_particles_) / wall;
   if (deformation_) {
     r.swept_volume = deformation_->swept_volume();
     r.applied_volume = deformation_->applied_volume();
@@ -399,6 +465,13 @@ WearTester::PushReport WearTester::set_sample_surface(const meshes::SurfaceMesh&
       ++report.n_pushed;
     }
   }
+  if (RankLink* link = system_.rank_link()) {
+    double pushed[2] = {double(report.n_pushed), report.max_distance};
+    link->sum_in_rank_order(pushed, 1);
+    link->max_over_ranks(pushed + 1, 1);
+    report.n_pushed = int(pushed[0]);
+    report.max_distance = pushed[1];
+  }
   system_.replace_wall_mesh(sample_wall_, placed);
   evaluation_->set_surface(sample);
   cumulative_removed_.assign(placed.n_faces(), 0);
@@ -409,6 +482,9 @@ WearTester::PushReport WearTester::set_sample_surface(const meshes::SurfaceMesh&
 // A resumed run's tester has no particles yet: those of the state, set up (its own lists and
 // forces are then replaced by the state's).
 void WearTester::add_particles_of(const SystemState& state) {
+  if (system_.rank_link())
+    throw std::invalid_argument("WearTester over ranks: a run does not continue from a "
+                                "checkpoint over ranks yet; resume it on one process");
   if (system_.particles.n_real > 0)
     return;
   auto& p = system_.particles;
@@ -422,6 +498,7 @@ void WearTester::add_particles_of(const SystemState& state) {
   use_thread_count();
   system_.setup();
   steps_per_revolution_ = std::uint64_t(std::llround(revolution_time_ / system_.time_step()));
+  count_particles();
 }
 
 void WearTester::restore(const SystemState& state, int revolutions_done,

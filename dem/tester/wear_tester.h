@@ -4,6 +4,7 @@
 // consolidator, the sample's holder, a bed filled from the PSD and settled; then revolutions with
 // per-face wear integrals, evaluations and, optionally, the reference node-moving deformation.
 #include "dem/engine/filling.h"
+#include "dem/engine/slab_decomposition.h"
 #include "dem/engine/system.h"
 #include "dem/tester/reference_deformation.h"
 #include "dem/tester/tester_evaluation.h"
@@ -44,6 +45,21 @@ public:
   WearTester(const meshes::GeometryParameters& geometry, const TesterDemParameters& dem,
              const WearLawParameters& wear_law, const ReferenceDeformationParameters& deformation,
              const meshes::SurfaceMesh& sample);
+
+  /// Decomposes the bed over the ranks of `link` (before fill_and_settle; every rank builds
+  /// the same tester and calls the same functions): angular slabs of equal width over the
+  /// sector (or the full circle), measured against the reach at the inner cylinder. The link
+  /// must be a ring (the periodic seam, or the full circle, joins the last rank to the first)
+  /// and outlive the tester. The results (wear integrals, evaluation, bed figures) are summed
+  /// over the ranks in rank order and the same on every rank. Checkpoints are not taken over
+  /// ranks (restore throws).
+  void set_rank_link(RankLink* link);
+  /// [-] Particles over all ranks (on one rank: the System's).
+  std::size_t n_particles() const { return n_particles_; }
+  /// The real particles of the whole bed (position, velocity, spin, radius, id): on one rank
+  /// the System's; over ranks every rank's gathered in rank order (every rank calls it
+  /// together), for snapshots.
+  const Particles& bed_particles();
 
   /// Inserts the bed from the PSD and lets it settle with the walls at rest.
   FillReport fill_and_settle(const std::function<void(const TesterProgress&)>& progress = {});
@@ -109,6 +125,10 @@ private:
   TesterDemParameters dem_;
   ReferenceDeformationParameters deformation_parameters_;
   System system_;
+  SlabDecomposition slabs_;           ///< over ranks (set_rank_link)
+  Particles gathered_;                ///< over ranks: the particles over the sample, all ranks
+  std::vector<double> gather_buffer_; ///< their values, this rank's and all ranks'
+  std::size_t n_particles_ = 0;       ///< [-] over all ranks
   int sample_wall_ = -1, holder_wall_ = -1, particle_material_ = 0;
   std::vector<int> rotating_walls_;
   std::unique_ptr<WearLaw> law_;
@@ -131,6 +151,13 @@ private:
   const RevolutionRecord& close_revolution(double wall_seconds);
   void start_rotation();
   void use_thread_count(); ///< DEM/Threads, or all cores, for the engine's loops
+  void count_particles();  ///< n_particles_ over the ranks
+  /// The window's integrals on the sample wall, summed over the ranks.
+  WearIntegrals sample_integrals() const { return system_.wear_integrals_over_ranks(sample_wall_); }
+  /// The particles the evaluation samples: this rank's, or over ranks those over the sample
+  /// from every rank (in rank order).
+  const Particles& particles_for_evaluation();
+  const Particles& gather_particles(bool only_over_sample);
 };
 
 /// Throws std::invalid_argument naming "DEM/<parameter>" for a non-physical value.

@@ -1,9 +1,9 @@
 #pragma once
 // Shared set-ups of the DEM-over-ranks tests: the ranks of MPI_COMM_WORLD, the bed's state
 // gathered by stable id over the ranks, sums over the ranks, a flat floor of triangles.
+#include "dem/engine/slab_decomposition.h"
 #include "dem/engine/system.h"
 #include "dem/parallel/mpi_rank_link.h"
-#include "dem/parallel/slab_decomposition.h"
 #include "meshes/structured_grid.h"
 #include "tests/dem/dem_fixtures.h"
 

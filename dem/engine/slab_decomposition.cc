@@ -10,7 +10,7 @@
 //
 // Balanced cuts: with C(s) the cumulative cost along the coordinate (piecewise linear over the
 // histogram's bins), cut k lies where C = k C_total / n_ranks.
-#include "dem/parallel/slab_decomposition.h"
+#include "dem/engine/slab_decomposition.h"
 
 #include <cmath>
 #include <sstream>
