@@ -105,7 +105,7 @@ def measured(log_dir):
         "ghosts": ghosts, "bytes_per_ghost": kb * 1e3 / ghosts, "messages": msgs,
         "mpi_share_2": mpi_share, "sector": sector,
         "c": 1.0 / rate(tester),
-        "version": re.search(r"^== (\S+) wearsim (\S+)",
+        "version": re.search(r"^== (\S+) wearsim ([0-9a-f]+(?:-dirty)?)",
                              read(os.path.join(log_dir, "run.log")), re.M).groups(),
     }
 
@@ -117,7 +117,8 @@ def main():
     ap.add_argument("--bandwidth", type=float, default=10e9, help="beta [B/s] per rank")
     ap.add_argument("--ghost-cost", type=float, default=0.1, help="gamma [-]")
     ap.add_argument("--fem-stage", type=float, default=30.0,
-                    help="[s] one FEM stage (solve, mesh motion, output) of the study at s = 3")
+                    help="[s] one FEM stage (solve, mesh motion, output) of the study at s = 3 "
+                         "(stage 4 of output/reference-study/plain, 2026-11-27: 28 s)")
     a = ap.parse_args()
     m = measured(a.log_dir)
 
@@ -139,7 +140,8 @@ def main():
 
     def step_time(p, t):
         e_t = e2 ** math.log2(t) if t > 1 else 1.0
-        compute = imbalance * (n / p + (a.ghost_cost * n_g if p > 1 else 0)) * c / (t * e_t)
+        compute = (imbalance if p > 1 else 1.0) * (n / p + (a.ghost_cost * n_g if p > 1 else 0)) \
+            * c / (t * e_t)
         latency = (m["messages"] * a.latency + 2 * a.latency * math.log2(p)) if p > 1 else 0
         bandwidth = m["bytes_per_ghost"] * n_g / a.bandwidth if p > 1 else 0
         return compute, latency + bandwidth
