@@ -109,6 +109,16 @@ struct SystemState {
   /// in wall order, n_wear_values per face and as many totals (WearIntegrals' order).
   std::vector<double> wear_window;
   int n_threads = 0;
+  // Over ranks (System::set_rank_link; one process: rank 0 of 1, no rank ghosts): this rank's
+  // part of the bed, continued only by the same rank of the same rank count.
+  int rank = 0, n_ranks = 1;
+  /// Ghost slots [0, n_periodic_ghosts) are periodic images, the first n_image_ghosts of all
+  /// are turned across the periodic boundary (0 for both: every ghost an image, as before).
+  std::uint64_t n_periodic_ghosts = 0, n_image_ghosts = 0;
+  /// The ghosts of the rank below in their slots after the periodic ones, 14 values each:
+  /// position, velocity, spin, radius, mass, inertia, material, id (the ghost message).
+  std::vector<double> rank_ghosts;
+  std::vector<std::uint32_t> rank_sent_up; ///< particles the rank above holds ghosts of
 };
 
 /// Wall-clock time of the step loop's phases, summed since the last reset_phase_times() [s].
@@ -371,9 +381,10 @@ private:
   /// histories of their pairs go to both neighbours (appended to `old`, slots_of_id extended).
   void migrate_over_ranks(std::vector<std::int32_t>& slots_of_id, std::vector<CarriedHistory>& old);
   void exchange_rank_ghosts(); ///< sends the ghosts up, appends those from below to ghost_owner_
-  void place_rank_ghosts();    ///< their slots from the message
-  void refresh_rank_ghosts();  ///< each step: positions, velocities and spins from the owners
-  void return_ghost_forces();  ///< each step: forces on the ghosts back to the owners
+  /// Their slots from `message` (the ghost message's layout), after the periodic ghosts.
+  void place_rank_ghosts(const std::vector<double>& message);
+  void refresh_rank_ghosts(); ///< each step: positions, velocities and spins from the owners
+  void return_ghost_forces(); ///< each step: forces on the ghosts back to the owners
   /// advance() over ranks: the common rebuild decision, ghosts, forces and their return.
   void ranked_forces(bool need_rebuild, double t_drift);
 

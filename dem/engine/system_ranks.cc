@@ -352,9 +352,8 @@ void System::exchange_rank_ghosts() {
     n_image_ghosts_ += m;
 }
 
-void System::place_rank_ghosts() {
+void System::place_rank_ghosts(const std::vector<double>& m) {
   auto& p = particles;
-  const std::vector<double>& m = rank_scratch_.from_below;
   const std::size_t first = p.n_real + n_periodic_ghosts_;
   for (std::size_t g = 0; g < m.size() / ghost_values; ++g) {
     const double* a = &m[ghost_values * g];

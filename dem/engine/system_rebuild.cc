@@ -240,7 +240,7 @@ void System::make_ghosts() {
     exchange_rank_ghosts();
   fill_ghost_slots();
   if (rank_link_)
-    place_rank_ghosts();
+    place_rank_ghosts(rank_scratch_.from_below);
 }
 
 void System::fill_ghost_slots() {

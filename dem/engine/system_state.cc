@@ -18,6 +18,12 @@
 // rebuild decided (reference positions, wall candidates, the cost estimate behind the
 // threads' split) and the open wear window as the threads hold it; nothing is rebuilt, and
 // only pure functions of those (ghost slots from their owners, the split) are recomputed.
+//
+// Over ranks each rank exports and takes back its own part: its particles, lists and slots,
+// and besides them the ghosts of the rank below as they sit in their slots (their ids name
+// the pairs' histories) and the particles it sends up as ghosts, in order. A state continues
+// only on the rank and rank count that wrote it (checked); the rebuild of import_state() is
+// the ranks' common rebuild, with its migration and ghost exchange.
 #include "dem/engine/system.h"
 
 #include <algorithm>
@@ -29,8 +35,6 @@ namespace wear::dem {
 SystemState System::export_state() const {
   if (!set_up_)
     throw std::logic_error("System::export_state() before setup()");
-  if (rank_link_)
-    throw std::logic_error("System::export_state(): not over ranks yet (docs/dem.md)");
   const auto& p = particles;
   const std::size_t n = p.n_real;
   SystemState s;
@@ -70,6 +74,19 @@ SystemState System::export_state() const {
     for (const auto& wall : thread)
       s.wear_window.insert(s.wear_window.end(), wall.begin(), wall.end());
   s.n_threads = n_threads_;
+  s.n_periodic_ghosts = n_periodic_ghosts_;
+  s.n_image_ghosts = n_image_ghosts_;
+  if (rank_link_) {
+    s.rank = rank_link_->rank();
+    s.n_ranks = rank_link_->n_ranks();
+    for (std::size_t k = n + n_periodic_ghosts_; k < p.position.size(); ++k) {
+      for (const Vec3& v : {p.position[k], p.velocity[k], p.angular_velocity[k]})
+        s.rank_ghosts.insert(s.rank_ghosts.end(), {v.x, v.y, v.z});
+      s.rank_ghosts.insert(s.rank_ghosts.end(), {p.radius[k], p.mass[k], p.inertia[k],
+                                                 double(p.material[k]), double(p.id[k])});
+    }
+    s.rank_sent_up = rank_scratch_.sent_up;
+  }
   return s;
 }
 
@@ -95,8 +112,21 @@ void System::check_importable(const SystemState& s) const {
   for (std::size_t k = 0; k < s.pair_i.size(); ++k)
     require(s.pair_i[k] < n && s.pair_j[k] < n_slots_total,
             "pair " + std::to_string(k) + " refers to a missing particle");
-  for (const auto o : s.ghost_owner)
-    require(o < n, "a ghost refers to a missing particle");
+  const int rank = rank_link_ ? rank_link_->rank() : 0;
+  const int n_ranks = rank_link_ ? rank_link_->n_ranks() : 1;
+  require(s.rank == rank && s.n_ranks == n_ranks,
+          "was written by rank " + std::to_string(s.rank) + " of " + std::to_string(s.n_ranks) +
+              "; this is rank " + std::to_string(rank) + " of " + std::to_string(n_ranks) +
+              " (a state continues on the rank count that wrote it)");
+  const std::size_t n_periodic = n_ranks > 1 ? s.n_periodic_ghosts : s.ghost_owner.size();
+  require(n_periodic <= s.ghost_owner.size() &&
+              s.rank_ghosts.size() == 14 * (s.ghost_owner.size() - n_periodic),
+          "the ghosts of the rank below do not match the ghost slots");
+  for (std::size_t g = 0; g < s.ghost_owner.size(); ++g)
+    require(g < n_periodic ? s.ghost_owner[g] < n : s.ghost_owner[g] == n + g,
+            "a ghost refers to a missing particle");
+  for (const auto q : s.rank_sent_up)
+    require(q < n, "a ghost sent up refers to a missing particle");
   for (const auto q : s.wall_particles)
     require(q < n, "a wall slot refers to a missing particle");
   for (std::size_t i = 0; i < n; ++i)
@@ -159,6 +189,11 @@ void System::take_particles(const SystemState& s) {
   next_id_ = std::max(s.next_id, first_free_id(s.id.data(), s.id.size()));
   ghost_owner_ = s.ghost_owner;
   n_periodic_ghosts_ = n_image_ghosts_ = ghost_owner_.size();
+  if (rank_link_) {
+    n_periodic_ghosts_ = std::size_t(s.n_periodic_ghosts);
+    n_image_ghosts_ = std::size_t(s.n_image_ghosts);
+    rank_scratch_.sent_up = s.rank_sent_up;
+  }
   neighbors_.pair_i = s.pair_i;
   neighbors_.pair_j = s.pair_j;
   pair_history_ = s.pair_history;
@@ -174,11 +209,11 @@ void System::take_particles(const SystemState& s) {
 void System::import_state(const SystemState& s) {
   if (!set_up_)
     throw std::logic_error("System::import_state() before setup()");
-  if (rank_link_)
-    throw std::logic_error("System::import_state(): not over ranks yet (docs/dem.md)");
   check_importable(s);
   take_particles(s);
   particles.resize_ghosts(s.ghost_owner.size());
+  if (rank_link_) // the histories with them are keyed by their ids
+    place_rank_ghosts(s.rank_ghosts);
   reset_wear_integrals();
   move_walls(time_);
   rebuild();
@@ -187,12 +222,12 @@ void System::import_state(const SystemState& s) {
 void System::resume_state(const SystemState& s) {
   if (!set_up_)
     throw std::logic_error("System::resume_state() before setup()");
-  if (rank_link_)
-    throw std::logic_error("System::resume_state(): not over ranks yet (docs/dem.md)");
   check_importable(s);
   check_resumable(s);
   take_particles(s);
   fill_ghost_slots();
+  if (rank_link_)
+    place_rank_ghosts(s.rank_ghosts);
   wall_candidate_offset_ = s.wall_candidate_offset;
   wall_candidate_ = s.wall_candidate;
   particle_cost_ = s.particle_cost;
