@@ -294,7 +294,7 @@ std::map<int, double> report(dem::System& s, double settle_seconds,
   if (link)
     out << "rank 0's share: ";
   report_memory(s, out);
-  if (!link) // the wall slots are read through a state export, which is per process
+  if (!link) // over ranks a state export holds rank 0's wall slots only: no bed-wide count
     report_contacts(s, out);
   return medians;
 }
