@@ -134,14 +134,6 @@ BenchDemArguments bench_dem_arguments(const std::vector<std::string>& args) {
   return a;
 }
 
-// [-] The real particles of all ranks.
-double n_particles(const dem::System& s) {
-  double n = double(s.particles.n_real);
-  if (dem::RankLink* link = s.rank_link())
-    link->sum_in_rank_order(&n, 1);
-  return n;
-}
-
 // Sets the workload up and settles it with the floor rotating; returns the wall time [s].
 double settle(dem::System& s, const dem::BenchmarkOptions& o, int threads, std::ostream& out) {
   const meshes::Stopwatch clock;
@@ -149,7 +141,7 @@ double settle(dem::System& s, const dem::BenchmarkOptions& o, int threads, std::
   const dem::RankLink* link = s.rank_link();
   out << format("workload %s: %.0f particles, %d walls, dt %.4e s, %d ranks x %d threads; "
                 "settling %llu steps\n",
-                o.workload.c_str(), n_particles(s), s.n_walls(), s.time_step(),
+                o.workload.c_str(), double(s.n_particles_over_ranks()), s.n_walls(), s.time_step(),
                 link ? link->n_ranks() : 1, threads, (unsigned long long)o.settle_steps)
       << std::flush;
   for (std::uint64_t k = 0; k < o.settle_steps; k += 1000)
@@ -186,7 +178,7 @@ std::string split_text(const PhaseSplit& s) {
 std::map<int, std::vector<TimedRun>> timed_runs(dem::System& s, const BenchDemArguments& a,
                                                 dem::MpiRankLink* ranks, std::ostream& out) {
   const auto& o = a.options;
-  const double n = n_particles(s);
+  const double n = double(s.n_particles_over_ranks());
   std::map<int, std::vector<TimedRun>> runs;
   for (int r = 0; r < o.repeats; ++r)
     for (int th : a.thread_counts) {

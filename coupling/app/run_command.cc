@@ -3,6 +3,8 @@
 
 #include "coupling/loop/coupled_run.h"
 
+#include <deal.II/base/multithread_info.h>
+
 #include <stdexcept>
 
 namespace wear::coupling {
@@ -32,11 +34,16 @@ std::string parse_run_arguments(const std::vector<std::string>& args, const std:
   return case_file;
 }
 
-int run_run_command(const std::vector<std::string>& args, std::ostream& log) {
+int run_run_command(const std::vector<std::string>& args, std::ostream& log, dem::RankLink* ranks) {
   RunOptions options;
+  options.ranks = ranks;
   const std::string case_file = parse_run_arguments(args, "run", options);
   CaseParameters p = read_case(case_file);
   require_no_scene(p, "run");
+  // Over ranks each rank's FEM stage keeps to the rank's own threads (DEM/Threads), not all of
+  // the node's cores.
+  if (ranks && p.dem.n_threads > 0)
+    dealii::MultithreadInfo::set_thread_limit(unsigned(p.dem.n_threads));
   CoupledRun run(p, log, options);
   return run.run();
 }

@@ -14,7 +14,9 @@ namespace wear::coupling {
 std::string parse_run_arguments(const std::vector<std::string>& args, const std::string& command,
                                 RunOptions& options);
 
-/// Runs (or resumes) the case's schedule; returns the exit code.
-int run_run_command(const std::vector<std::string>& args, std::ostream& log);
+/// Runs (or resumes) the case's schedule; returns the exit code. `ranks`: under mpirun, the
+/// DEM over these ranks (CoupledRun over ranks).
+int run_run_command(const std::vector<std::string>& args, std::ostream& log,
+                    dem::RankLink* ranks = nullptr);
 
 } // namespace wear::coupling

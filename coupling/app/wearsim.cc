@@ -66,8 +66,8 @@ void usage(std::ostream& out) {
          "                           solves, mesh motion, remeshing\n"
          "  --print-parameters       list every case-file parameter with default and meaning\n"
          "  --version                the engine version (git describe at build time)\n\n"
-         "under mpirun -np N: 'dem' and 'bench dem' decompose the bed over the N ranks (angular\n"
-         "slabs; DEM/Threads or --threads per rank); rank 0 writes and prints\n"
+         "under mpirun -np N: 'run', 'dem' and 'bench dem' decompose the bed over the N ranks\n"
+         "(angular slabs; DEM/Threads or --threads per rank); rank 0 writes and prints\n"
          "  --help                   this text\n";
 }
 
@@ -99,10 +99,12 @@ int main(int argc, char** argv) {
       }
       if (cmd == "bench" && argc >= 3 && std::string(argv[2]) == "dem")
         return run_bench_command({argv + 2, argv + argc}, std::cout, &ranks);
+      if (cmd == "run")
+        return run_run_command({argv + 2, argv + argc}, std::cout, &ranks);
       throw std::invalid_argument(
           "under mpirun (" + std::to_string(n_ranks) +
-          " ranks) wearsim decomposes 'dem <case.prm>' and 'bench dem'; run the other commands "
-          "as one process (the coupled run over ranks is not there yet)");
+          " ranks) wearsim decomposes 'run <case.prm>', 'dem <case.prm>' and 'bench dem'; run "
+          "the other commands as one process");
     }
     if (cmd == "--help" || cmd == "-h") {
       usage(std::cout);

@@ -22,6 +22,13 @@
 // path as a resumed run (DEM state export/import, worn sample rebuilt from its arrays), so a
 // run resumed from any checkpoint repeats the uninterrupted run bit for bit with the same
 // thread count.
+//
+// Over MPI ranks (RunOptions::ranks) every rank runs this same loop: the DEM over the ranks
+// (its loads are sums over them, the same bits everywhere), steps 2 to 4 on every rank on its
+// own copy of the sample (checked to give every rank the same surface bit for bit), output and
+// messages on rank 0. Stops are agreed over the ranks, so every rank stops on the same step;
+// a checkpoint gathers the ranks' DEM parts to rank 0, and a resume on another rank count
+// takes them merged (docs/coupling.md, "Over MPI ranks").
 #include "coupling/loop/coupled_run.h"
 
 #include "coupling/output/progress_line.h"
@@ -61,7 +68,7 @@ int CoupledRun::run() {
     StageRecord r = begin_stage(k, open);
     const std::optional<dem::WallLoads> loads = run_dem(r, std::exchange(open, {}), signals);
     if (!loads)
-      return stopped_by(signals.requested(), r, true);
+      return stopped_by(agreed_signal(signals), r, true);
     const WearIncrement increment = compute_wear(*loads, r);
     meshes::FaceField<double> applied = increment.removed;
     if (r.scheme == Scheme::dem_only && !sample_)
@@ -79,8 +86,9 @@ int CoupledRun::run() {
       break;
     }
     checkpoint();
-    if (signals.requested() != 0 && k + 1 < plan_.size()) // came during the FEM part
-      return stopped_by(signals.requested(), r, false);
+    const int signal = agreed_signal(signals);
+    if (signal != 0 && k + 1 < plan_.size()) // came during the FEM part
+      return stopped_by(signal, r, false);
     if (options_.stop_after > 0 && totals_.n_stages_run >= options_.stop_after &&
         k + 1 < plan_.size()) {
       log_ << "stopped after stage " << r.stage << " as asked; continue with --resume\n";
@@ -118,10 +126,18 @@ std::optional<dem::WallLoads> CoupledRun::run_dem(StageRecord& r, std::optional<
   ProgressLine line(options_.progress);
   const int n_rev = p_.coupling.revolutions_per_stage;
   for (int q = open ? open->revolutions_done : 0; q < n_rev; ++q) {
+    // Over ranks every rank stops and checkpoints on the same step: a signal to any rank
+    // stops all, and rank 0's clock times the checkpoints.
     const auto stop = [&] {
-      if (signals.requested() != 0)
+      double v[2] = {double(signals.requested()), writer() && can_checkpoint && interval > 0 &&
+                                                          since_checkpoint.seconds() >= interval
+                                                      ? 1.0
+                                                      : 0.0};
+      if (options_.ranks)
+        options_.ranks->max_over_ranks(v, 2);
+      if (v[0] != 0)
         return true;
-      if (can_checkpoint && interval > 0 && since_checkpoint.seconds() >= interval) {
+      if (v[1] != 0) {
         checkpoint_inside(loads, q, seconds_before + clock.seconds());
         since_checkpoint.restart();
       }
@@ -160,7 +176,7 @@ std::string CoupledRun::progress_text(const StageRecord& r, const dem::TesterPro
                                       int q) const {
   const int n_rev = p_.coupling.revolutions_per_stage;
   const double dem_left = ((n_rev - q) - pr.fraction) * double(tester_->steps_per_revolution()) *
-                          double(tester_->system().particles.n_real) /
+                          double(tester_->n_particles()) /
                           std::max(1.0, pr.particle_steps_per_second);
   const double mean = totals_.mean_stage_seconds();
   const double per_stage =
@@ -199,6 +215,7 @@ StageStress CoupledRun::solve_stress(const dem::WallLoads& loads, StageRecord& r
 GeometryUpdate CoupledRun::update_geometry(const WearIncrement& increment,
                                            const StageStress& stress, StageRecord& r) {
   GeometryUpdate update = apply_stage_wear(*sample_, increment, stress, r);
+  check_same_on_ranks(sample_->surface(), "after the FEM part of stage " + std::to_string(r.stage));
   print_geometry_notes(r, update.report);
   const auto pushed = tester_->set_sample_surface(sample_->surface(), p_.coupling.push_tolerance);
   r.n_pushed = pushed.n_pushed;

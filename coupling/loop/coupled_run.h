@@ -31,6 +31,9 @@ struct RunOptions {
   bool progress = true;   ///< live line on a terminal (stderr)
   int stop_after = 0;     ///< stop after this many stages of this invocation (0: run all)
   bool overwrite = false; ///< replace a run in the output folder (kept until the first checkpoint)
+  /// The DEM over these ranks (under mpirun; every rank runs the same CoupledRun, rank 0
+  /// writes and prints); null: one process.
+  dem::RankLink* ranks = nullptr;
 };
 
 /// Readies Output/Directory for a run and writes its resolved parameters: a folder holding a
@@ -63,6 +66,9 @@ class CoupledRun {
 public:
   /// Checks the case and the output folder; nothing runs yet.
   CoupledRun(const CaseParameters& p, std::ostream& log, const RunOptions& options = {});
+  ~CoupledRun(); ///< removes this rank's scratch folder (over ranks, after the first)
+  CoupledRun(const CoupledRun&) = delete;
+  CoupledRun& operator=(const CoupledRun&) = delete;
 
   /// The whole schedule (or what is left of it when resuming). Returns the exit status: 0
   /// when the schedule (or the stages asked by stop_after) ran, 128 + the signal when a
@@ -104,6 +110,18 @@ private:
   /// returns the exit status.
   int stopped_by(int signal, const StageRecord& r, bool inside) const;
 
+  // over ranks
+  bool writer() const { return !options_.ranks || options_.ranks->rank() == 0; }
+  /// Where this rank's FEM writes its meshes: Output/Directory/mesh on rank 0, a scratch
+  /// folder on the others (each rank runs the same FEM stage on its own copy of the sample).
+  std::string mesh_directory() const;
+  /// The signal any rank received (the largest number), 0 if none: every rank stops together.
+  int agreed_signal(const StopSignals& signals) const;
+  /// Throws when `surface` is not the same, bit for bit, on every rank (`when` says where).
+  void check_same_on_ranks(const meshes::SurfaceMesh& surface, const std::string& when) const;
+  /// Writes c (over ranks: every rank's DEM part gathered to rank 0, which writes).
+  void write(const Checkpoint& c) const;
+
   // what the run tells the user
   void print_header() const;
   void print_stage(const StageRecord& r) const;
@@ -116,6 +134,7 @@ private:
   meshes::SurfaceMesh stage_surface(Scheme scheme) const;
 
   CaseParameters p_;
+  std::ostream silent_{nullptr}; ///< the log of the ranks after the first
   std::ostream& log_;
   RunOptions options_;
   std::string parameters_text_;
@@ -131,6 +150,7 @@ private:
   /// before the first): the stress-informed wear law's input to the next stage.
   meshes::FaceField<double> previous_stress_;
   RunTotals totals_;
+  std::string scratch_; ///< this rank's mesh folder over ranks (not rank 0), removed at the end
 };
 
 } // namespace wear::coupling

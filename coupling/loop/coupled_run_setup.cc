@@ -12,8 +12,11 @@
 #include "coupling/loop/coupled_run.h"
 
 #include "coupling/output/progress_line.h"
+#include "dem/engine/rank_states.h"
 #include "meshes/atomic_file.h"
 #include "meshes/sample_generator.h"
+
+#include <unistd.h>
 
 #include <csignal>
 #include <cstdio>
@@ -40,7 +43,9 @@ bool holds_run(const std::string& dir) {
 } // namespace
 
 CoupledRun::CoupledRun(const CaseParameters& p, std::ostream& log, const RunOptions& options)
-    : p_(p), log_(log), options_(options), frame_(p.geometry.sample, p.geometry.placement) {
+    : p_(p), log_(options.ranks && options.ranks->rank() != 0 ? silent_ : log), options_(options),
+      frame_(p.geometry.sample, p.geometry.placement) {
+  options_.progress = options_.progress && writer();
   validate(p_.coupling, p_.fem);
   if (!(p_.output.checkpoint_interval >= 0))
     throw std::invalid_argument("Output/Checkpoint interval: must be 0 (none) or positive [s]");
@@ -53,14 +58,72 @@ CoupledRun::CoupledRun(const CaseParameters& p, std::ostream& log, const RunOpti
       has_staged_ |= item.scheme == Scheme::staged;
       has_reference_ |= item.scheme == Scheme::reference;
     }
+  if (has_reference_ && options_.ranks && options_.ranks->n_ranks() > 1)
+    throw std::invalid_argument("Coupling/Schedule: the reference scheme (nodes moved inside the "
+                                "DEM) runs as one process, not over " +
+                                std::to_string(options_.ranks->n_ranks()) + " ranks");
   // The reference scheme is the node-moving method inside the DEM, amplified like the others.
   p_.deformation.enabled = has_reference_;
   p_.deformation.amplification = p_.coupling.amplification;
   parameters_text_ = resolved_parameters(p_);
 }
 
+CoupledRun::~CoupledRun() {
+  if (!scratch_.empty()) {
+    std::error_code ec; // a folder left behind is no reason to fail
+    std::filesystem::remove_all(scratch_, ec);
+  }
+}
+
 fem::WornSampleParameters CoupledRun::worn_parameters() const {
-  return fem::worn_sample_parameters(p_.fem, p_.geometry.sample, p_.output.directory + "/mesh");
+  return fem::worn_sample_parameters(p_.fem, p_.geometry.sample, mesh_directory());
+}
+
+std::string CoupledRun::mesh_directory() const {
+  return writer() ? p_.output.directory + "/mesh" : scratch_;
+}
+
+int CoupledRun::agreed_signal(const StopSignals& signals) const {
+  double v = signals.requested();
+  if (options_.ranks)
+    options_.ranks->max_over_ranks(&v, 1);
+  return int(v);
+}
+
+void CoupledRun::check_same_on_ranks(const meshes::SurfaceMesh& surface,
+                                     const std::string& when) const {
+  if (!options_.ranks)
+    return;
+  // FNV-1a over the bits of the vertices, triangles and labels, as two exact 32-bit halves.
+  std::uint64_t h = 1469598103934665603ull;
+  const auto add = [&h](const void* data, std::size_t n) {
+    const auto* b = static_cast<const unsigned char*>(data);
+    for (std::size_t k = 0; k < n; ++k)
+      h = (h ^ b[k]) * 1099511628211ull;
+  };
+  add(surface.vertices.data(), surface.vertices.size() * sizeof(meshes::Vec3));
+  add(surface.triangles.data(), surface.triangles.size() * sizeof(surface.triangles[0]));
+  add(surface.face_labels.data(), surface.face_labels.size() * sizeof(int));
+  const double hi = double(h >> 32), lo = double(h & 0xffffffffull);
+  double v[4] = {hi, lo, -hi, -lo};
+  options_.ranks->max_over_ranks(v, 4);
+  if (v[0] != -v[2] || v[1] != -v[3])
+    throw std::runtime_error(
+        "coupled run over " + std::to_string(options_.ranks->n_ranks()) +
+        " ranks: the ranks' sample surfaces differ " + when +
+        " (each rank runs the same FEM stage and must get the same surface bit for bit; a "
+        "library that is not deterministic, such as gmsh or deal.II with threads, would do "
+        "this: run the coupled case as one process)");
+}
+
+void CoupledRun::write(const Checkpoint& c) const {
+  if (!options_.ranks) {
+    write_checkpoint(checkpoint_path(), c);
+    return;
+  }
+  const std::vector<dem::SystemState> parts = dem::gather_rank_states(c.dem, *options_.ranks);
+  if (writer())
+    write_checkpoint(checkpoint_path(), c, parts);
 }
 
 const meshes::SurfaceMesh& CoupledRun::sample_surface() const {
@@ -68,16 +131,37 @@ const meshes::SurfaceMesh& CoupledRun::sample_surface() const {
 }
 
 std::optional<OpenStage> CoupledRun::setup() {
-  const std::string replaced = prepare_output_folder();
+  std::string replaced;
+  if (writer())
+    replaced = prepare_output_folder();
+  if (options_.ranks) { // rank 0 has the folder ready before any rank goes on
+    double ready = 1;
+    options_.ranks->max_over_ranks(&ready, 1);
+    if (!writer()) {
+      scratch_ = (std::filesystem::temp_directory_path() /
+                  ("wearsim-" + std::to_string(::getpid()) + "-rank" +
+                   std::to_string(options_.ranks->rank())))
+                     .string();
+      meshes::ensure_directory(scratch_);
+    }
+  }
   initial_surface_ = generate_initial_surface();
+  check_same_on_ranks(initial_surface_, "as generated");
   tester_ = std::make_unique<dem::WearTester>(p_.geometry, p_.dem, p_.wear_law, p_.deformation,
                                               initial_surface_);
-  output_ = std::make_unique<RunOutput>(p_.output.directory);
+  tester_->set_rank_link(options_.ranks);
+  if (options_.ranks && options_.ranks->n_ranks() > 1)
+    log_ << format("over %d MPI ranks, %d threads each: angular slabs of %.2f degrees; rank 0 "
+                   "writes, every rank runs the FEM stage on its own copy of the sample\n",
+                   options_.ranks->n_ranks(), p_.dem.n_threads,
+                   p_.geometry.tester.sector_angle_deg / options_.ranks->n_ranks())
+         << std::flush;
+  output_ = std::make_unique<RunOutput>(p_.output.directory, writer());
   if (options_.resume)
     return resume();
   if (has_staged_)
-    sample_ = std::make_unique<fem::WornSample>(p_.output.directory + "/mesh/sample.msh",
-                                                initial_surface_, worn_parameters());
+    sample_ = std::make_unique<fem::WornSample>(mesh_directory() + "/sample.msh", initial_surface_,
+                                                worn_parameters());
   fill_and_settle();
   previous_stress_ = zero_stress(sample_surface());
   totals_.dem_wear = meshes::FaceField<double>("wear-law volume", "m^3",
@@ -139,9 +223,9 @@ std::string prepare_run_folder(const CaseParameters& p, const RunOptions& option
 meshes::SurfaceMesh CoupledRun::generate_initial_surface() const {
   meshes::SampleGeometry sg = p_.geometry.sample;
   sg.volume_mesh = has_staged_ && !options_.resume;
-  const std::string msh = p_.output.directory + "/mesh/sample.msh";
+  const std::string msh = mesh_directory() + "/sample.msh";
   if (sg.volume_mesh)
-    meshes::ensure_directory(p_.output.directory + "/mesh");
+    meshes::ensure_directory(mesh_directory());
   const auto generated = meshes::generate_sample(sg, sg.volume_mesh ? msh : "");
   log_ << "sample: " << (sg.convex ? "convex" : "plain") << ", " << generated.surface.n_faces()
        << " surface triangles";
@@ -153,8 +237,14 @@ meshes::SurfaceMesh CoupledRun::generate_initial_surface() const {
 }
 
 std::optional<OpenStage> CoupledRun::resume() {
-  const Checkpoint c = read_latest_checkpoint(checkpoint_path(), log_);
+  const dem::RankLink* ranks = options_.ranks;
+  const DemPart part{ranks ? ranks->rank() : 0, ranks ? ranks->n_ranks() : 1};
+  const Checkpoint c = read_latest_checkpoint(checkpoint_path(), log_, part);
   require_same_case(c, parameters_text_, checkpoint_path());
+  if (c.dem_ranks != part.n_ranks)
+    log_ << "the checkpoint was written on " << c.dem_ranks << " rank(s), this run has "
+         << part.n_ranks << ": the bed is decomposed again (it continues, not bit for bit as "
+         << "on " << c.dem_ranks << ")" << std::endl;
   restore(c);
   output_->reload(stages_);
   log_ << "resumed after stage " << stages_.size() << " of " << plan_.size();
@@ -207,7 +297,7 @@ void CoupledRun::checkpoint() {
     return; // the node-moving method's state is not checkpointed; it runs in one go
   const Checkpoint c = capture();
   if (p_.coupling.checkpoints)
-    write_checkpoint(checkpoint_path(), c);
+    write(c);
   restore(c);
 }
 
@@ -218,7 +308,7 @@ void CoupledRun::checkpoint_inside(const dem::WallLoads& loads, int revolutions_
     throw std::logic_error("CoupledRun: an in-stage checkpoint outside a revolution");
   Checkpoint c = capture();
   c.open_stage = open_stage(loads, revolutions_done, dem_seconds, *revolution);
-  write_checkpoint(checkpoint_path(), c);
+  write(c);
 }
 
 void CoupledRun::restore(const Checkpoint& c) {

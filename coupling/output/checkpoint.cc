@@ -3,7 +3,12 @@
 // Layout of checkpoint.h5:
 //   attributes on /: stages_done, revolutions_done, has_sample, parameters (text)
 //   /dem/...        every array of dem::SystemState (Vec3 arrays as n x 3), attributes time,
-//                   n_steps, n_rebuilds, next_id
+//                   n_steps, n_rebuilds, next_id; written over N ranks instead: attribute
+//                   n_ranks = N on /dem and each rank's part in /dem/rank_<r>/... (its rank
+//                   fields as attributes, rank_ghosts, rank_sent_up, and always its
+//                   continuation), gathered to rank 0 and written by it. A reader on N ranks
+//                   takes its own part; on another count all parts, merged into the bed of one
+//                   process (dem::merge_rank_states), which it decomposes again
 //   /revolutions/data, /revolutions/offsets   the records packed as numbers (pack()), one
 //                   after another; distortions as the text attribute /revolutions:distortions
 //   /stages/data, /stages/offsets             the same for the stage records
@@ -23,6 +28,7 @@
 #include "coupling/output/checkpoint.h"
 
 #include "coupling/output/hdf5_file.h"
+#include "dem/engine/rank_states.h"
 
 #include <filesystem>
 
@@ -249,8 +255,8 @@ void write_doubles(Hdf5File& h5, const std::string& name, const std::vector<doub
   h5.write(name, v, {v.size()});
 }
 
-void write_continuation(Hdf5File& h5, const dem::SystemState& d) {
-  const std::string g = "/dem/continuation";
+void write_continuation(Hdf5File& h5, const std::string& dem_group, const dem::SystemState& d) {
+  const std::string g = dem_group + "/continuation";
   write_vec3(h5, g + "/reference_position", d.reference_position);
   h5.write(g + "/wall_candidate_offset", wide(d.wall_candidate_offset),
            {d.wall_candidate_offset.size()});
@@ -261,8 +267,8 @@ void write_continuation(Hdf5File& h5, const dem::SystemState& d) {
   h5.attribute(g + "/reference_position", "wall_reference_time", d.wall_reference_time);
 }
 
-void read_continuation(const Hdf5Reader& h5, dem::SystemState& d) {
-  const std::string g = "/dem/continuation";
+void read_continuation(const Hdf5Reader& h5, const std::string& dem_group, dem::SystemState& d) {
+  const std::string g = dem_group + "/continuation";
   d.reference_position = vec3s(h5.doubles(g + "/reference_position"), "reference_position");
   d.wall_candidate_offset = narrow<std::uint32_t>(h5.int64s(g + "/wall_candidate_offset"));
   d.wall_candidate = narrow<std::uint32_t>(h5.int64s(g + "/wall_candidate"));
@@ -272,6 +278,86 @@ void read_continuation(const Hdf5Reader& h5, dem::SystemState& d) {
   // Absent from checkpoints written before walls could move; no wall moved then.
   if (h5.has_attribute(g + "/reference_position", "wall_reference_time"))
     d.wall_reference_time = h5.attribute(g + "/reference_position", "wall_reference_time");
+}
+
+// The DEM state in group g (without its continuation part); over ranks also the part's rank
+// fields.
+void write_dem(Hdf5File& h5, const std::string& g, const dem::SystemState& d) {
+  const std::size_t n = d.position.size();
+  write_vec3(h5, g + "/position", d.position);
+  write_vec3(h5, g + "/velocity", d.velocity);
+  write_vec3(h5, g + "/angular_velocity", d.angular_velocity);
+  write_vec3(h5, g + "/force", d.force);
+  write_vec3(h5, g + "/torque", d.torque);
+  h5.write(g + "/radius", d.radius, {n});
+  h5.write(g + "/mass", d.mass, {n});
+  h5.write(g + "/inertia", d.inertia, {n});
+  h5.write(g + "/material", d.material, {n});
+  h5.write(g + "/id", d.id, {n});
+  h5.write(g + "/ghost_owner", wide(d.ghost_owner), {d.ghost_owner.size()});
+  h5.write(g + "/pair_i", wide(d.pair_i), {d.pair_i.size()});
+  h5.write(g + "/pair_j", wide(d.pair_j), {d.pair_j.size()});
+  write_vec3(h5, g + "/pair_history", d.pair_history);
+  h5.write(g + "/wall_particles", wide(d.wall_particles), {d.wall_particles.size()});
+  write_vec3(h5, g + "/slot_normal", d.slot_normal);
+  write_vec3(h5, g + "/slot_delta", d.slot_delta);
+  h5.write(g + "/slot_wall", std::vector<int>(d.slot_wall.begin(), d.slot_wall.end()),
+           {d.slot_wall.size()});
+  h5.attribute(g, "time", d.time);
+  h5.attribute(g, "n_steps", double(d.n_steps));
+  h5.attribute(g, "n_rebuilds", double(d.n_rebuilds));
+  h5.attribute(g, "next_id", double(d.next_id)); // exact below 2^53
+  if (d.n_ranks > 1) {
+    write_doubles(h5, g + "/rank_ghosts", d.rank_ghosts);
+    h5.write(g + "/rank_sent_up", wide(d.rank_sent_up), {d.rank_sent_up.size()});
+    h5.attribute(g, "rank", double(d.rank));
+    h5.attribute(g, "n_ranks", double(d.n_ranks));
+    h5.attribute(g, "n_periodic_ghosts", double(d.n_periodic_ghosts));
+    h5.attribute(g, "n_image_ghosts", double(d.n_image_ghosts));
+  }
+}
+
+dem::SystemState read_dem(const Hdf5Reader& h5, const std::string& g) {
+  dem::SystemState d;
+  d.position = vec3s(h5.doubles(g + "/position"), "position");
+  d.velocity = vec3s(h5.doubles(g + "/velocity"), "velocity");
+  d.angular_velocity = vec3s(h5.doubles(g + "/angular_velocity"), "angular_velocity");
+  d.force = vec3s(h5.doubles(g + "/force"), "force");
+  d.torque = vec3s(h5.doubles(g + "/torque"), "torque");
+  d.radius = h5.doubles(g + "/radius");
+  d.mass = h5.doubles(g + "/mass");
+  d.inertia = h5.doubles(g + "/inertia");
+  d.material = h5.ints(g + "/material");
+  d.id = h5.int64s(g + "/id");
+  d.ghost_owner = narrow<std::uint32_t>(h5.int64s(g + "/ghost_owner"));
+  d.pair_i = narrow<std::uint32_t>(h5.int64s(g + "/pair_i"));
+  d.pair_j = narrow<std::uint32_t>(h5.int64s(g + "/pair_j"));
+  d.pair_history = vec3s(h5.doubles(g + "/pair_history"), "pair_history");
+  d.wall_particles = narrow<std::uint32_t>(h5.int64s(g + "/wall_particles"));
+  d.slot_normal = vec3s(h5.doubles(g + "/slot_normal"), "slot_normal");
+  d.slot_delta = vec3s(h5.doubles(g + "/slot_delta"), "slot_delta");
+  const auto walls = h5.ints(g + "/slot_wall");
+  d.slot_wall.assign(walls.begin(), walls.end());
+  d.time = h5.attribute(g, "time");
+  d.n_steps = std::uint64_t(h5.attribute(g, "n_steps"));
+  d.n_rebuilds = std::uint64_t(h5.attribute(g, "n_rebuilds"));
+  // Absent from checkpoints written before particles could be inserted: one past the largest
+  // id then, which the import takes anyway.
+  if (h5.has_attribute(g, "next_id"))
+    d.next_id = std::int64_t(h5.attribute(g, "next_id"));
+  if (h5.has_attribute(g, "n_ranks")) {
+    d.rank_ghosts = h5.doubles(g + "/rank_ghosts");
+    d.rank_sent_up = narrow<std::uint32_t>(h5.int64s(g + "/rank_sent_up"));
+    d.rank = int(h5.attribute(g, "rank"));
+    d.n_ranks = int(h5.attribute(g, "n_ranks"));
+    d.n_periodic_ghosts = std::uint64_t(h5.attribute(g, "n_periodic_ghosts"));
+    d.n_image_ghosts = std::uint64_t(h5.attribute(g, "n_image_ghosts"));
+  }
+  return d;
+}
+
+std::string rank_group(int r) {
+  return "/dem/rank_" + std::to_string(r);
 }
 
 // The evaluation's samples: scalars in one dataset, in this order.
@@ -453,35 +539,24 @@ std::vector<std::string> stage_columns() {
   return names.out;
 }
 
-void write_checkpoint(const std::string& path, const Checkpoint& c) {
+void write_checkpoint(const std::string& path, const Checkpoint& c,
+                      const std::vector<dem::SystemState>& dem_parts) {
   Hdf5File h5(path);
-  const auto& d = c.dem;
-  const std::size_t n = d.position.size();
-  write_vec3(h5, "/dem/position", d.position);
-  write_vec3(h5, "/dem/velocity", d.velocity);
-  write_vec3(h5, "/dem/angular_velocity", d.angular_velocity);
-  write_vec3(h5, "/dem/force", d.force);
-  write_vec3(h5, "/dem/torque", d.torque);
-  h5.write("/dem/radius", d.radius, {n});
-  h5.write("/dem/mass", d.mass, {n});
-  h5.write("/dem/inertia", d.inertia, {n});
-  h5.write("/dem/material", d.material, {n});
-  h5.write("/dem/id", d.id, {n});
-  h5.write("/dem/ghost_owner", wide(d.ghost_owner), {d.ghost_owner.size()});
-  h5.write("/dem/pair_i", wide(d.pair_i), {d.pair_i.size()});
-  h5.write("/dem/pair_j", wide(d.pair_j), {d.pair_j.size()});
-  write_vec3(h5, "/dem/pair_history", d.pair_history);
-  h5.write("/dem/wall_particles", wide(d.wall_particles), {d.wall_particles.size()});
-  write_vec3(h5, "/dem/slot_normal", d.slot_normal);
-  write_vec3(h5, "/dem/slot_delta", d.slot_delta);
-  h5.write("/dem/slot_wall", std::vector<int>(d.slot_wall.begin(), d.slot_wall.end()),
-           {d.slot_wall.size()});
+  if (dem_parts.empty()) {
+    write_dem(h5, "/dem", c.dem);
+    if (c.open_stage)
+      write_continuation(h5, "/dem", c.dem);
+  } else {
+    // Every part with its continuation: a part taken back on as many ranks is added where its
+    // last rebuild had it (WearTester::restore), at a stage's end too.
+    for (std::size_t r = 0; r < dem_parts.size(); ++r) {
+      write_dem(h5, rank_group(int(r)), dem_parts[r]);
+      write_continuation(h5, rank_group(int(r)), dem_parts[r]);
+    }
+    h5.attribute("/dem", "n_ranks", double(dem_parts.size()));
+  }
   h5.write("/dem/cumulative_removed", c.dem_cumulative, {c.dem_cumulative.size()});
   h5.write("/face_von_mises", c.face_von_mises, {c.face_von_mises.size()});
-  h5.attribute("/dem", "time", d.time);
-  h5.attribute("/dem", "n_steps", double(d.n_steps));
-  h5.attribute("/dem", "n_rebuilds", double(d.n_rebuilds));
-  h5.attribute("/dem", "next_id", double(d.next_id)); // exact below 2^53
   write_records(h5, "/revolutions", c.revolutions);
   write_records(h5, "/stages", c.stages);
   if (c.has_sample) {
@@ -507,10 +582,8 @@ void write_checkpoint(const std::string& path, const Checkpoint& c) {
   h5.attribute("/", "has_sample", c.has_sample ? 1.0 : 0.0);
   h5.attribute("/", "parameters", c.parameters);
   h5.attribute("/", "has_open_stage", c.open_stage ? 1.0 : 0.0);
-  if (c.open_stage) {
-    write_continuation(h5, c.dem);
+  if (c.open_stage)
     write_open_stage(h5, *c.open_stage);
-  }
   h5.attribute("/", "has_scene", c.scene ? 1.0 : 0.0);
   if (c.scene)
     write_scene(h5, *c.scene);
@@ -566,14 +639,15 @@ std::string previous_checkpoint_path(const std::string& path) {
   return (h5 ? path.substr(0, path.size() - ext.size()) : path) + ".previous.h5";
 }
 
-Checkpoint read_latest_checkpoint(const std::string& path, std::ostream& warnings) {
+Checkpoint read_latest_checkpoint(const std::string& path, std::ostream& warnings,
+                                  const DemPart& part) {
   const std::string previous = previous_checkpoint_path(path);
   try {
-    return read_checkpoint(path);
+    return read_checkpoint(path, part);
   } catch (const std::exception& e) {
     if (!std::filesystem::exists(previous))
       throw;
-    Checkpoint c = read_checkpoint(previous);
+    Checkpoint c = read_checkpoint(previous, part);
     warnings << "warning: " << e.what() << "; resuming from the checkpoint before it, '" << previous
              << "' (after stage " << c.stages_done
              << (c.open_stage ? ", inside the next stage" : "") << ")" << std::endl;
@@ -581,7 +655,7 @@ Checkpoint read_latest_checkpoint(const std::string& path, std::ostream& warning
   }
 }
 
-Checkpoint read_checkpoint(const std::string& path) {
+Checkpoint read_checkpoint(const std::string& path, const DemPart& part) {
   const Hdf5Reader h5(path);
   Checkpoint c;
   try {
@@ -589,35 +663,28 @@ Checkpoint read_checkpoint(const std::string& path) {
     c.revolutions_done = int(h5.attribute("/", "revolutions_done"));
     c.has_sample = h5.attribute("/", "has_sample") != 0;
     c.parameters = h5.text_attribute("/", "parameters");
-    auto& d = c.dem;
-    d.position = vec3s(h5.doubles("/dem/position"), "position");
-    d.velocity = vec3s(h5.doubles("/dem/velocity"), "velocity");
-    d.angular_velocity = vec3s(h5.doubles("/dem/angular_velocity"), "angular_velocity");
-    d.force = vec3s(h5.doubles("/dem/force"), "force");
-    d.torque = vec3s(h5.doubles("/dem/torque"), "torque");
-    d.radius = h5.doubles("/dem/radius");
-    d.mass = h5.doubles("/dem/mass");
-    d.inertia = h5.doubles("/dem/inertia");
-    d.material = h5.ints("/dem/material");
-    d.id = h5.int64s("/dem/id");
-    d.ghost_owner = narrow<std::uint32_t>(h5.int64s("/dem/ghost_owner"));
-    d.pair_i = narrow<std::uint32_t>(h5.int64s("/dem/pair_i"));
-    d.pair_j = narrow<std::uint32_t>(h5.int64s("/dem/pair_j"));
-    d.pair_history = vec3s(h5.doubles("/dem/pair_history"), "pair_history");
-    d.wall_particles = narrow<std::uint32_t>(h5.int64s("/dem/wall_particles"));
-    d.slot_normal = vec3s(h5.doubles("/dem/slot_normal"), "slot_normal");
-    d.slot_delta = vec3s(h5.doubles("/dem/slot_delta"), "slot_delta");
-    const auto walls = h5.ints("/dem/slot_wall");
-    d.slot_wall.assign(walls.begin(), walls.end());
+    const bool open =
+        h5.has_attribute("/", "has_open_stage") && h5.attribute("/", "has_open_stage") != 0;
+    c.dem_ranks = h5.has_attribute("/dem", "n_ranks") ? int(h5.attribute("/dem", "n_ranks")) : 1;
+    if (c.dem_ranks < 1)
+      throw std::runtime_error("/dem: n_ranks below 1");
+    const auto part_of = [&](int r) {
+      const std::string g = c.dem_ranks == 1 ? "/dem" : rank_group(r);
+      dem::SystemState d = read_dem(h5, g);
+      if (c.dem_ranks > 1 || open)
+        read_continuation(h5, g, d);
+      return d;
+    };
+    if (c.dem_ranks == part.n_ranks) {
+      c.dem = part_of(part.rank);
+    } else { // another rank count: the bed as one process holds it
+      std::vector<dem::SystemState> parts;
+      for (int r = 0; r < c.dem_ranks; ++r)
+        parts.push_back(part_of(r));
+      c.dem = dem::merge_rank_states(parts);
+    }
     c.dem_cumulative = h5.doubles("/dem/cumulative_removed");
     c.face_von_mises = h5.doubles("/face_von_mises");
-    d.time = h5.attribute("/dem", "time");
-    d.n_steps = std::uint64_t(h5.attribute("/dem", "n_steps"));
-    d.n_rebuilds = std::uint64_t(h5.attribute("/dem", "n_rebuilds"));
-    // Absent from checkpoints written before particles could be inserted: one past the largest
-    // id then, which the import takes anyway.
-    if (h5.has_attribute("/dem", "next_id"))
-      d.next_id = std::int64_t(h5.attribute("/dem", "next_id"));
     c.revolutions = read_records<dem::RevolutionRecord>(h5, "/revolutions");
     c.stages = read_records<StageRecord>(h5, "/stages");
     if (c.has_sample) {
@@ -642,10 +709,8 @@ Checkpoint read_checkpoint(const std::string& path) {
       if (s.removed_volume.size() != m.n_faces() || s.wear_depth.size() != m.n_faces())
         throw std::runtime_error("sample fields do not match its surface");
     }
-    if (h5.has_attribute("/", "has_open_stage") && h5.attribute("/", "has_open_stage") != 0) {
-      read_continuation(h5, d);
+    if (open)
       c.open_stage = read_open_stage(h5);
-    }
     if (h5.has_attribute("/", "has_scene") && h5.attribute("/", "has_scene") != 0)
       c.scene = read_scene(h5);
     if (int(c.stages.size()) != c.stages_done || int(c.revolutions.size()) != c.revolutions_done)

@@ -56,8 +56,17 @@ struct SceneCheckpoint {
   std::vector<double> removed_per_label; ///< [m^3] per label above (staged stages)
 };
 
+/// Which part of a checkpoint's DEM state a reader takes: rank `rank` of `n_ranks`.
+struct DemPart {
+  int rank = 0;
+  int n_ranks = 1;
+};
+
 struct Checkpoint {
   int stages_done = 0;
+  /// Ranks that wrote the DEM state: when it is not the reader's count, `dem` holds the parts
+  /// merged into the bed of one process (dem::merge_rank_states).
+  int dem_ranks = 1;
   std::string parameters; ///< fully resolved case of the run (resume refuses another)
   dem::SystemState dem;
   int revolutions_done = 0;
@@ -79,12 +88,17 @@ std::string previous_checkpoint_path(const std::string& path);
 /// Writes atomically (a failed write leaves the previous checkpoint in place); the checkpoint
 /// it replaces is kept as previous_checkpoint_path(path), so two complete ones exist at every
 /// moment once two were written.
-void write_checkpoint(const std::string& path, const Checkpoint& c);
-/// Throws naming the file and what is missing or inconsistent.
-Checkpoint read_checkpoint(const std::string& path);
+/// Over ranks `dem_parts` holds every rank's DEM state in rank order (dem::gather_rank_states,
+/// on rank 0, which alone writes) and is written instead of c.dem.
+void write_checkpoint(const std::string& path, const Checkpoint& c,
+                      const std::vector<dem::SystemState>& dem_parts = {});
+/// Throws naming the file and what is missing or inconsistent. `part`: the rank that reads;
+/// c.dem is its own part when the file was written on part.n_ranks ranks, else the merged bed.
+Checkpoint read_checkpoint(const std::string& path, const DemPart& part = {});
 /// The latest readable checkpoint: `path`, or, when it is missing or damaged, the one before
 /// it, with a warning on `warnings` naming both. Throws naming `path` when neither reads.
-Checkpoint read_latest_checkpoint(const std::string& path, std::ostream& warnings);
+Checkpoint read_latest_checkpoint(const std::string& path, std::ostream& warnings,
+                                  const DemPart& part = {});
 
 /// Throws naming `path` when checkpoint c was written for another case than the one whose
 /// resolved parameters are `parameters` (a resume must continue the same case).

@@ -19,12 +19,14 @@
 
 namespace wear::coupling {
 
-RunOutput::RunOutput(std::string directory)
-    : directory_(std::move(directory)), surface_(directory_, "surface"),
+RunOutput::RunOutput(std::string directory, bool writes)
+    : directory_(std::move(directory)), writes_(writes), surface_(directory_, "surface"),
       volume_(directory_, "volume") {}
 
 void RunOutput::add_surface(int stage, double time, const meshes::SurfaceMesh& surface,
                             const std::vector<meshes::VtuArray>& cell_fields) {
+  if (!writes_)
+    return;
   meshes::VtuGrid g;
   g.points = surface.vertices;
   g.cell_type = meshes::VtkCell::triangle;
@@ -37,11 +39,15 @@ void RunOutput::add_surface(int stage, double time, const meshes::SurfaceMesh& s
 }
 
 void RunOutput::add_volume(int stage, double time, const meshes::VtuGrid& grid) {
+  if (!writes_)
+    return;
   volume_.add_stage(stage, time, grid);
   write_index();
 }
 
 void RunOutput::reload(const std::vector<StageRecord>& stages) {
+  if (!writes_)
+    return;
   surface_.reload_stage(0);
   for (const auto& s : stages) {
     surface_.reload_stage(s.stage);
@@ -63,6 +69,8 @@ void RunOutput::write_index() const {
 void RunOutput::write_tables(const std::vector<dem::RevolutionRecord>& revolutions,
                              const std::vector<StageRecord>& stages, int n_columns,
                              const std::vector<int>& element_labels) const {
+  if (!writes_)
+    return;
   const auto stage_of = [&](int revolution) -> const StageRecord* {
     for (const auto& s : stages)
       if (revolution >= s.first_revolution && revolution <= s.last_revolution)

@@ -14,7 +14,10 @@ namespace wear::coupling {
 
 class RunOutput {
 public:
-  explicit RunOutput(std::string directory);
+  /// `writes` false: every call returns without writing (the ranks after the first of a run
+  /// over ranks, whose results are rank 0's).
+  explicit RunOutput(std::string directory, bool writes = true);
+  bool writes() const { return writes_; }
 
   /// The sample surface at the end of stage `stage` (0: initial), sample frame, with
   /// per-face fields (one component each).
@@ -36,6 +39,7 @@ public:
 private:
   void write_index() const;
   std::string directory_;
+  bool writes_ = true;
   GridHistory surface_, volume_;
 };
 

@@ -158,7 +158,7 @@ void build_benchmark(System& s, const std::string& workload, bool mesh_walls) {
 SlabDecomposition benchmark_slabs(const System& s, int n_ranks) {
   const double angle =
       s.settings.periodic.enabled ? s.settings.periodic.angle : 2 * 3.14159265358979323846;
-  return SlabDecomposition::angular(SlabDecomposition::uniform_slabs(0, angle, n_ranks), ri);
+  return SlabDecomposition::uniform_angular(angle, n_ranks, ri);
 }
 
 } // namespace wear::dem

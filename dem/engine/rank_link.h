@@ -83,6 +83,11 @@ public:
   /// `all` becomes every rank's `mine` one after the other in rank order 0, 1, 2, ... (every
   /// rank gets the same). For evaluations over a few particles, not for the step loop.
   virtual void gather_in_rank_order(const std::vector<double>& mine, std::vector<double>& all) = 0;
+  /// On rank 0 `all` becomes every rank's `mine` one after the other in rank order and
+  /// `counts` their sizes; on the other ranks both come back empty. Every rank calls it
+  /// together. For checkpoints: one rank holds the whole bed once, no rank every other's.
+  virtual void gather_to_first(const std::vector<double>& mine, std::vector<double>& all,
+                               std::vector<std::size_t>& counts) = 0;
 };
 
 /// The decomposition as the engine takes it at setup: the slabs, and the check of their widths

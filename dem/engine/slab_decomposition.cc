@@ -59,6 +59,11 @@ std::vector<double> SlabDecomposition::uniform_slabs(double lo, double hi, int n
   return b;
 }
 
+SlabDecomposition SlabDecomposition::uniform_angular(double angle, int n_ranks,
+                                                     double inner_radius) {
+  return angular(uniform_slabs(0, angle, n_ranks), inner_radius);
+}
+
 std::vector<double> SlabDecomposition::balanced_slabs(const std::vector<double>& cost, double lo,
                                                       double hi, int n_ranks) {
   if (cost.empty() || n_ranks < 1)

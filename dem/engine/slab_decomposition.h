@@ -17,6 +17,9 @@ public:
   static SlabDecomposition along_axis(int axis, std::vector<double> bound);
   /// n_ranks equal slabs of [lo, hi) [rad or m].
   static std::vector<double> uniform_slabs(double lo, double hi, int n_ranks);
+  /// n_ranks equal angular slabs of the sector [0, angle) [rad] (2 pi: the full circle),
+  /// measured at `inner_radius` [m]: how the tester and the benchmark cut their beds.
+  static SlabDecomposition uniform_angular(double angle, int n_ranks, double inner_radius);
   /// Bounds of n_ranks slabs of [lo, hi) that carry equal shares of `cost`, a histogram of
   /// equal bins over [lo, hi) (each bin's cost spread evenly over it). The histogram must be
   /// the same on every rank (summed over them), so that every rank places the same cuts.

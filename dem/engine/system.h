@@ -240,8 +240,17 @@ public:
   SystemState export_state() const;
   /// Takes over a state exported from a System with the same particles (radii, materials),
   /// walls and thread count, after setup(); rebuilds the lists from it. Forces are taken as
-  /// stored, not recomputed, so tangential histories are not advanced twice.
+  /// stored, not recomputed, so tangential histories are not advanced twice. Over ranks the
+  /// state is either this rank's own part (written by the same rank of the same rank count)
+  /// or a whole bed as one process holds it (merge_rank_states, or a one-process state): then
+  /// every rank takes the whole bed and keeps what its slab owns, with the histories of its
+  /// pairs and its wall slots (a run continues on another rank count, not bit for bit).
   void import_state(const SystemState& state);
+  /// Adds the open wear window of `state` (summed over its threads) to this System's, after
+  /// import_state() of the same state: the part of a window that a merged or re-decomposed
+  /// state carries into the revolution it continues. Over ranks, each rank adds its own part's
+  /// window, or rank 0 alone a whole bed's. Throws when the window does not fit the walls.
+  void add_wear_window(const SystemState& state);
   /// Takes over a state exported between two steps exactly as it was: lists, histories, wall
   /// slots, thread split and the open wear window; nothing is rebuilt. The run then continues
   /// as if it had never stopped, bit for bit (same thread count, which is checked).
@@ -259,6 +268,8 @@ public:
   void set_rank_link(RankLink* link, const RankSlabs* slabs);
   /// The ranks' messages (set_rank_link), null on one rank.
   RankLink* rank_link() const { return rank_link_; }
+  /// [-] The real particles of every rank (every rank calls it together); on one rank n_real.
+  std::size_t n_particles_over_ranks() const;
   /// wear_integrals(wall) added over the ranks field by field in rank order, the same bits on
   /// every rank (every rank calls it together); on one rank wear_integrals(wall).
   WearIntegrals wear_integrals_over_ranks(int wall) const;
@@ -310,6 +321,14 @@ private:
   void make_ghosts();
   /// Histories of the new pair list from the carried ones (zero for a new pair).
   void carry_pair_histories(const HistoryTable& old);
+  /// The first half of rebuild(), for the particles as they are: the pair histories and
+  /// wall slots keyed by stable id (rebuild_scratch_'s old_histories and slots_of_id), the
+  /// particles wrapped into the periodic sector with what turns with them.
+  void key_by_id(bool in_step);
+  /// The second half of rebuild(), once the particles are where they belong: the carried
+  /// histories bucketed, the spatial order, ghosts, the pair list with its histories, wall
+  /// candidates with their slots, the threads' split and the rebuild's reference.
+  void relist(const std::vector<CarriedHistory>& old, const std::vector<std::int32_t>& slots_of_id);
   /// Lists wall_candidate_ in particle order and the count per particle in `n_candidates`.
   void find_wall_candidates(std::vector<std::uint32_t>& n_candidates);
   /// wall_candidate_offset_ and wall_particles_ from the counts per particle.
@@ -347,7 +366,8 @@ private:
   void wall_forces(int thread, Vec3* F, Vec3* T);
   void check_particles_or_throw(const char* stage);
   /// Throws std::invalid_argument naming what does not fit when state s cannot be imported.
-  void check_importable(const SystemState& s) const;
+  /// `whole`: a whole bed taken over ranks (any particle count, written by one process).
+  void check_importable(const SystemState& s, bool whole = false) const;
   /// The same for the continuation part that resume_state() takes over.
   void check_resumable(const SystemState& s) const;
   /// The real particles' arrays and the clock from s (both imports).
@@ -373,6 +393,8 @@ private:
   RankScratch rank_scratch_;
   /// setup(): every particle to its owner (each keeps its own when all ranks hold the same bed).
   void distribute_over_ranks();
+  /// import_state() of a whole bed over ranks (see there).
+  void import_whole_state(const SystemState& s);
   /// setup(): the Rayleigh time and the smallest radius as minima, r_max as maximum, over ranks.
   void reduce_setup_values(double& t_r, double& r_max, double& r_min);
   /// setup(): no periodic boundary, next_id_ over ranks, ids unique, slabs as wide as the reach.

@@ -138,6 +138,39 @@ void System::distribute_over_ranks() {
   }
 }
 
+// A whole bed (one process's layout) over ranks: every rank takes all of it and keys its
+// histories and wall slots by id and wraps it into the sector, as a rebuild of one process
+// would; then keeps the particles its slab owns and the histories of the pairs with one of
+// them (a pair is listed on the rank of one of its particles), and lists them as a rebuild
+// does (the ghost exchange is the ranks' common one). Nothing migrates: every rank cut the
+// same whole bed by the same slabs.
+void System::import_whole_state(const SystemState& s) {
+  check_importable(s, true);
+  take_particles(s);
+  reset_wear_integrals();
+  move_walls(time_);
+  key_by_id(false);
+  std::vector<CarriedHistory>& old = rebuild_scratch_.old_histories;
+  auto& p = particles;
+  std::vector<std::uint8_t> here(std::size_t(next_id_), 0);
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < p.n_real; ++i)
+    if (slab_cuts_.owner(p.position[i]) == rank_link_->rank()) {
+      here[std::size_t(p.id[i])] = 1;
+      move_particle(kept++, i);
+    }
+  p.n_real = kept;
+  p.resize_ghosts(0);
+  ghost_owner_.clear();
+  n_periodic_ghosts_ = n_image_ghosts_ = 0;
+  std::size_t n_old = 0;
+  for (const CarriedHistory& e : old)
+    if (here[e.key >> 32] || here[e.key & 0xFFFFFFFFull])
+      old[n_old++] = e;
+  old.resize(n_old);
+  relist(old, rebuild_scratch_.slots_of_id);
+}
+
 void System::check_ranks_at_setup() {
   RankLink& link = *rank_link_;
   // A periodic boundary is the seam between the last rank and rank 0: the ranks form a ring
@@ -438,6 +471,13 @@ void System::ranked_forces(bool need_rebuild, double t_drift) {
   }
   compute_forces();
   return_ghost_forces();
+}
+
+std::size_t System::n_particles_over_ranks() const {
+  double n = double(particles.n_real);
+  if (rank_link_)
+    rank_link_->sum_in_rank_order(&n, 1);
+  return std::size_t(n);
 }
 
 WearIntegrals System::wear_integrals_over_ranks(int wall) const {

@@ -80,19 +80,29 @@ constexpr std::size_t wall_scan_chunk = 512;
 void System::rebuild(bool in_step, const ParticleChanges* changes) {
   // Pair histories and wall slots leave the old lists keyed by stable id: the wrap, the
   // reordering, inserted and removed particles and the new lists keep them.
-  RebuildScratch& scratch = rebuild_scratch_;
-  std::vector<CarriedHistory>& old = scratch.old_histories;
-  std::vector<std::int32_t>& slots_of_id = scratch.slots_of_id;
-  canonical_pair_histories(old);
-  wall_slots_by_id(slots_of_id);
-  if (periodic())
-    wrap_into_sector(in_step, slots_of_id, old);
+  key_by_id(in_step);
+  std::vector<CarriedHistory>& old = rebuild_scratch_.old_histories;
+  std::vector<std::int32_t>& slots_of_id = rebuild_scratch_.slots_of_id;
   if (rank_link_)
     migrate_over_ranks(slots_of_id, old);
   if (changes) {
     apply_particle_changes(*changes);
     slots_of_id.resize(std::size_t(next_id_), -1); // the new ids own no slots
   }
+  relist(old, slots_of_id);
+}
+
+void System::key_by_id(bool in_step) {
+  RebuildScratch& scratch = rebuild_scratch_;
+  canonical_pair_histories(scratch.old_histories);
+  wall_slots_by_id(scratch.slots_of_id);
+  if (periodic())
+    wrap_into_sector(in_step, scratch.slots_of_id, scratch.old_histories);
+}
+
+void System::relist(const std::vector<CarriedHistory>& old,
+                    const std::vector<std::int32_t>& slots_of_id) {
+  RebuildScratch& scratch = rebuild_scratch_;
   const std::size_t n = particles.n_real;
   HistoryTable& old_by_id = scratch.old_by_id;
   bucket_by_lower_id(old, old_by_id);

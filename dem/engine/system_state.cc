@@ -23,7 +23,9 @@
 // and besides them the ghosts of the rank below as they sit in their slots (their ids name
 // the pairs' histories) and the particles it sends up as ghosts, in order. A state continues
 // only on the rank and rank count that wrote it (checked); the rebuild of import_state() is
-// the ranks' common rebuild, with its migration and ghost exchange.
+// the ranks' common rebuild, with its migration and ghost exchange. On another rank count the
+// parts are merged into one process's bed (rank_states.h), which import_state() takes over
+// ranks as a whole bed (System::import_whole_state), its window added by add_wear_window().
 #include "dem/engine/system.h"
 
 #include <algorithm>
@@ -90,14 +92,17 @@ SystemState System::export_state() const {
   return s;
 }
 
-void System::check_importable(const SystemState& s) const {
+void System::check_importable(const SystemState& s, bool whole) const {
   const std::size_t n = s.position.size();
   const auto require = [](bool ok, const std::string& what) {
     if (!ok)
       throw std::invalid_argument("DEM state: " + what);
   };
-  require(n == particles.n_real, "holds " + std::to_string(n) + " particles, the system " +
-                                     std::to_string(particles.n_real));
+  // Over ranks a rebuild since the export (a new wall mesh) may have passed particles between
+  // the ranks: the part replaces whatever the rank holds.
+  require(whole || rank_link_ || n == particles.n_real, "holds " + std::to_string(n) +
+                                                            " particles, the system " +
+                                                            std::to_string(particles.n_real));
   for (const auto size :
        {s.velocity.size(), s.angular_velocity.size(), s.force.size(), s.torque.size(),
         s.radius.size(), s.mass.size(), s.inertia.size(), s.material.size(), s.id.size()})
@@ -114,11 +119,12 @@ void System::check_importable(const SystemState& s) const {
             "pair " + std::to_string(k) + " refers to a missing particle");
   const int rank = rank_link_ ? rank_link_->rank() : 0;
   const int n_ranks = rank_link_ ? rank_link_->n_ranks() : 1;
-  require(s.rank == rank && s.n_ranks == n_ranks,
+  require(whole ? s.n_ranks == 1 : s.rank == rank && s.n_ranks == n_ranks,
           "was written by rank " + std::to_string(s.rank) + " of " + std::to_string(s.n_ranks) +
               "; this is rank " + std::to_string(rank) + " of " + std::to_string(n_ranks) +
-              " (a state continues on the rank count that wrote it)");
-  const std::size_t n_periodic = n_ranks > 1 ? s.n_periodic_ghosts : s.ghost_owner.size();
+              " (a part continues on the rank count that wrote it; another rank count takes "
+              "the parts merged, merge_rank_states)");
+  const std::size_t n_periodic = s.n_ranks > 1 ? s.n_periodic_ghosts : s.ghost_owner.size();
   require(n_periodic <= s.ghost_owner.size() &&
               s.rank_ghosts.size() == 14 * (s.ghost_owner.size() - n_periodic),
           "the ghosts of the rank below do not match the ghost slots");
@@ -186,10 +192,11 @@ void System::take_particles(const SystemState& s) {
   p.inertia = s.inertia;
   p.material = s.material;
   p.id = s.id;
+  p.n_real = s.position.size();
   next_id_ = std::max(s.next_id, first_free_id(s.id.data(), s.id.size()));
   ghost_owner_ = s.ghost_owner;
   n_periodic_ghosts_ = n_image_ghosts_ = ghost_owner_.size();
-  if (rank_link_) {
+  if (rank_link_ && s.n_ranks > 1) {
     n_periodic_ghosts_ = std::size_t(s.n_periodic_ghosts);
     n_image_ghosts_ = std::size_t(s.n_image_ghosts);
     rank_scratch_.sent_up = s.rank_sent_up;
@@ -209,6 +216,10 @@ void System::take_particles(const SystemState& s) {
 void System::import_state(const SystemState& s) {
   if (!set_up_)
     throw std::logic_error("System::import_state() before setup()");
+  if (rank_link_ && s.n_ranks == 1) {
+    import_whole_state(s);
+    return;
+  }
   check_importable(s);
   take_particles(s);
   particles.resize_ghosts(s.ghost_owner.size());
@@ -217,6 +228,24 @@ void System::import_state(const SystemState& s) {
   reset_wear_integrals();
   move_walls(time_);
   rebuild();
+}
+
+void System::add_wear_window(const SystemState& s) {
+  std::size_t length = 0; // one thread's accumulators
+  for (const auto& wall : wear_acc_.front())
+    length += wall.size();
+  if (s.n_threads <= 0 || s.wear_window.size() != length * std::size_t(s.n_threads))
+    throw std::invalid_argument("DEM state: its wear window holds " +
+                                std::to_string(s.wear_window.size()) + " values for " +
+                                std::to_string(s.n_threads) + " thread(s); the walls need " +
+                                std::to_string(length) + " per thread");
+  const bool whole = rank_link_ && s.n_ranks == 1;
+  if (whole && rank_link_->rank() != 0)
+    return;
+  for (std::size_t at = 0; at < s.wear_window.size();) // thread after thread
+    for (auto& wall : wear_acc_.front())
+      for (auto& x : wall)
+        x += s.wear_window[at++];
 }
 
 void System::resume_state(const SystemState& s) {

@@ -18,7 +18,9 @@
 #include "dem/engine/reused_buffer.h"
 
 #include <cstdint>
+#include <limits>
 #include <stdexcept>
+#include <string>
 
 namespace wear::dem {
 
@@ -84,6 +86,37 @@ void MpiRankLink::gather_in_rank_order(const std::vector<double>& mine, std::vec
   all.resize(total);
   MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts_.data(), offsets_.data(),
                  MPI_DOUBLE, comm_);
+  traffic_.bytes_sent += double(sizeof(int) + mine.size() * sizeof(double));
+  traffic_.messages += 2;
+  traffic_.seconds += MPI_Wtime() - t0;
+}
+
+void MpiRankLink::gather_to_first(const std::vector<double>& mine, std::vector<double>& all,
+                                  std::vector<std::size_t>& counts) {
+  const double t0 = MPI_Wtime();
+  if (mine.size() > std::size_t(std::numeric_limits<int>::max()))
+    throw std::runtime_error("MpiRankLink: rank " + std::to_string(rank_) + " would send " +
+                             std::to_string(mine.size()) + " values at once (MPI counts are int)");
+  const int n = int(mine.size());
+  counts_.resize(std::size_t(n_ranks_));
+  offsets_.resize(std::size_t(n_ranks_));
+  MPI_Gather(&n, 1, MPI_INT, counts_.data(), 1, MPI_INT, 0, comm_);
+  all.clear();
+  counts.clear();
+  if (rank_ == 0) {
+    std::size_t total = 0;
+    for (std::size_t r = 0; r < counts_.size(); ++r) {
+      offsets_[r] = int(total);
+      total += std::size_t(counts_[r]);
+      counts.push_back(std::size_t(counts_[r]));
+    }
+    if (total > std::size_t(std::numeric_limits<int>::max()))
+      throw std::runtime_error("MpiRankLink: the ranks' states hold " + std::to_string(total) +
+                               " values in all, beyond MPI's int offsets");
+    all.resize(total);
+  }
+  MPI_Gatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts_.data(), offsets_.data(), MPI_DOUBLE,
+              0, comm_);
   traffic_.bytes_sent += double(sizeof(int) + mine.size() * sizeof(double));
   traffic_.messages += 2;
   traffic_.seconds += MPI_Wtime() - t0;

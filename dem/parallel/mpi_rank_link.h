@@ -34,6 +34,9 @@ public:
   void sum_in_rank_order(double* values, std::size_t n) override;
   /// MPI_Allgather of the counts, then MPI_Allgatherv.
   void gather_in_rank_order(const std::vector<double>& mine, std::vector<double>& all) override;
+  /// MPI_Gather of the counts, then MPI_Gatherv (the whole bed must fit MPI's int counts).
+  void gather_to_first(const std::vector<double>& mine, std::vector<double>& all,
+                       std::vector<std::size_t>& counts) override;
 
   const RankTraffic& traffic() const { return traffic_; }
   void reset_traffic() { traffic_ = {}; }

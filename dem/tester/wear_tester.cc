@@ -28,6 +28,8 @@
 // every rank, so that every rank holds the same records.
 #include "dem/tester/wear_tester.h"
 
+#include "dem/engine/rank_states.h"
+
 #include "meshes/sample_frame.h"
 #include "meshes/sample_generator.h"
 #include "meshes/stopwatch.h"
@@ -180,16 +182,13 @@ void WearTester::set_rank_link(RankLink* link) {
     throw std::invalid_argument("WearTester over ranks: the ranks must form a ring (the periodic "
                                 "seam or the full circle joins the last rank to the first)");
   const double angle = geometry_.tester.sector_angle_deg < 360 ? sector_ : 2 * pi;
-  slabs_ = SlabDecomposition::angular(SlabDecomposition::uniform_slabs(0, angle, link->n_ranks()),
-                                      geometry_.tester.inner_radius);
+  slabs_ =
+      SlabDecomposition::uniform_angular(angle, link->n_ranks(), geometry_.tester.inner_radius);
   system_.set_rank_link(link, &slabs_);
 }
 
 void WearTester::count_particles() {
-  double n = double(system_.particles.n_real);
-  if (RankLink* link = system_.rank_link())
-    link->sum_in_rank_order(&n, 1);
-  n_particles_ = std::size_t(n);
+  n_particles_ = system_.n_particles_over_ranks();
 }
 
 const Particles& WearTester::particles_for_evaluation() {
@@ -481,16 +480,18 @@ WearTester::PushReport WearTester::set_sample_surface(const meshes::SurfaceMesh&
 
 // A resumed run's tester has no particles yet: those of the state, set up (its own lists and
 // forces are then replaced by the state's).
+// Over ranks each rank adds either its own part, where the part's last rebuild had it (so
+// that setup() moves no particle), or the whole bed, of which setup() keeps the rank's slab.
 void WearTester::add_particles_of(const SystemState& state) {
-  if (system_.rank_link())
-    throw std::invalid_argument("WearTester over ranks: a run does not continue from a "
-                                "checkpoint over ranks yet; resume it on one process");
   if (system_.particles.n_real > 0)
     return;
   auto& p = system_.particles;
+  const bool own_part = state.n_ranks > 1;
+  const auto& at = own_part && state.reference_position.size() == state.position.size()
+                       ? state.reference_position
+                       : state.position;
   for (std::size_t i = 0; i < state.position.size(); ++i) {
-    p.add(state.position[i], state.velocity[i], state.radius[i], dem_.particle.density,
-          state.material[i]);
+    p.add(at[i], state.velocity[i], state.radius[i], dem_.particle.density, state.material[i]);
     p.mass.back() = state.mass[i];
     p.inertia.back() = state.inertia[i];
     p.id.back() = state.id[i];
@@ -522,7 +523,13 @@ void WearTester::restore(const SystemState& state, int revolutions_done,
     throw std::invalid_argument("checkpoint: the open revolution is past its " +
                                 std::to_string(steps_per_revolution_) + " steps");
   start_rotation();
-  system_.resume_state(state);
+  const RankLink* link = system_.rank_link();
+  if (continues_exactly(state, link ? link->rank() : 0, link ? link->n_ranks() : 1)) {
+    system_.resume_state(state);
+  } else { // written on another rank count: the revolution goes on from a rebuild
+    system_.import_state(state);
+    system_.add_wear_window(state);
+  }
   evaluation_->history() = records;
   evaluation_->resume_samples(open.samples);
   revolution_ = revolutions_done;

@@ -51,8 +51,8 @@ public:
   /// sector (or the full circle), measured against the reach at the inner cylinder. The link
   /// must be a ring (the periodic seam, or the full circle, joins the last rank to the first)
   /// and outlive the tester. The results (wear integrals, evaluation, bed figures) are summed
-  /// over the ranks in rank order and the same on every rank. Checkpoints are not taken over
-  /// ranks (restore throws).
+  /// over the ranks in rank order and the same on every rank. restore() takes this rank's part
+  /// of a state written on as many ranks, or a whole bed (merge_rank_states).
   void set_rank_link(RankLink* link);
   /// [-] Particles over all ranks (on one rank: the System's).
   std::size_t n_particles() const { return n_particles_; }
@@ -93,8 +93,10 @@ public:
   /// records. The surface must be set first (set_sample_surface) when it changed.
   void restore(const SystemState& state, int revolutions_done,
                const std::vector<RevolutionRecord>& records);
-  /// The same inside a revolution: the state continues exactly (System::resume_state) and
-  /// the revolution goes on from `open` at the next advance_revolution().
+  /// The same inside a revolution: the revolution goes on from `open` at the next
+  /// advance_revolution(). A state written by this rank of as many ranks continues exactly
+  /// (System::resume_state); one written on another rank count is imported (a rebuild) with
+  /// its wear window, and continues not bit for bit.
   void restore(const SystemState& state, int revolutions_done,
                const std::vector<RevolutionRecord>& records, const OpenRevolution& open);
 

@@ -198,7 +198,7 @@ TEST_CASE("moving walls: a ball on a plate that starts to slide rolls at 2/7 of 
   CHECK(norm(v + cross(w, Vec3{0, 0, -r}) - slide.velocity) <= 1e-6 * norm(slide.velocity));
 }
 
-TEST_CASE("moving walls: a particle in a turning tray turns with it; its loads stay on the faces") {
+TEST_CASE("moving walls: a particle in a turning tray turns with it, its loads stay on the faces") {
   // A floor and an outer side wall turning about the z axis at Omega: a particle resting on
   // the floor against the side wall co-rotates, held on its circle by the side wall's normal
   // force m Omega^2 rho, its weight carried by the floor. Started in that state (velocity

@@ -14,16 +14,7 @@ namespace meshes = wear::meshes;
 
 namespace {
 
-constexpr double r = 0.005; ///< [m] radius; the reach is 2 r + r / 2 = 12.5 mm
-
-/// Gravel (E = 5e7 Pa) on a floor z = 0 of [-0.1, 0.1] x [-0.05, 0.05] (20 x 10 quads).
-int gravel_on_floor(System& s, bool wearing) {
-  const int g = s.materials.add({"gravel", 5e7, 0.25, 2650});
-  s.materials.set_pair(g, g, {0.5, 0.5, 0.1});
-  s.add_wall(MeshWall(floor_mesh(-0.1, 0.1, -0.05, 0.05, 20, 10), g, {}, wearing, "floor"));
-  s.settings.domain = {{-0.2, -0.2, -0.05}, {0.2, 0.2, 0.2}};
-  return g;
-}
+constexpr double r = bed_radius; ///< [m]
 
 /// Slabs along x with cuts through the beds below (widths at least 19 mm, above the reach).
 SlabDecomposition slabs_across_x() {
@@ -58,28 +49,6 @@ MpiRankLink& ring() {
   return link;
 }
 
-/// 343 spheres on a 12 mm lattice in a box of 0.1 m, no gravity, random velocities of about
-/// 1 m/s (the same generator on every rank), e = 0.9, mu = 0.3; periodic along x if asked.
-void gas(System& s, bool periodic) {
-  const int g = s.materials.add({"gravel", 5e7, 0.25, 2650});
-  s.materials.set_pair(g, g, {0.9, 0.3, 0.0});
-  s.settings.gravity = {};
-  s.settings.domain = {{-0.05, -0.01, -0.01}, {0.15, 0.11, 0.11}};
-  if (periodic)
-    s.settings.periodic_slab = {true, 0, 0.0, 0.1};
-  std::uint64_t seed = 12345;
-  const auto uniform = [&seed]() {
-    seed = seed * 6364136223846793005ull + 1442695040888963407ull;
-    return double(seed >> 11) / double(std::uint64_t(1) << 53) - 0.5;
-  };
-  for (int i = 0; i < 7; ++i)
-    for (int j = 0; j < 7; ++j)
-      for (int k = 0; k < 7; ++k)
-        s.particles.add({0.014 + 0.012 * i, 0.014 + 0.012 * j, 0.014 + 0.012 * k},
-                        {2 * uniform(), 2 * uniform(), 2 * uniform()}, r, 2650, g);
-  s.add_wall(MeshWall(box_or_channel(0.1, !periodic, 0.01), g, {}, false, "box"));
-}
-
 /// The gas over the ranks against one System after 1000 steps: momentum to 1e-12 of sum m |v|,
 /// kinetic, rotational and elastic energy to 1e-9 of the total.
 void check_gas(bool periodic) {
@@ -108,16 +77,6 @@ void check_gas(bool periodic) {
   CHECK(std::abs(a[4] - b[4]) <= 1e-9 * total);
   CHECK(std::abs(a[5] - b[5]) <= 1e-9 * total);
   CHECK(plain_system.n_pair_contacts() > 0);
-}
-
-/// A square pyramid of 2 x 2 layers: 8 x 2 spheres on the floor, 7 x 1 in their hollows.
-void pile(System& s, bool wearing) {
-  const int g = gravel_on_floor(s, wearing);
-  for (int i = 0; i < 8; ++i)
-    for (int j = 0; j < 2; ++j)
-      s.particles.add({-0.035 + 2 * r * i, 2 * r * j, r}, {}, r, 2650, g);
-  for (int i = 0; i < 7; ++i)
-    s.particles.add({-0.03 + 2 * r * i, r, r + r * std::sqrt(2.0)}, {}, r, 2650, g);
 }
 
 } // namespace

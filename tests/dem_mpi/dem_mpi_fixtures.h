@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 namespace wear::dem::testing {
@@ -115,6 +116,51 @@ inline meshes::SurfaceMesh floor_mesh(double x0, double x1, double y0, double y1
 /// Slabs along x at the given bounds for the world's rank count (bounds[n_ranks - 1]).
 inline SlabDecomposition x_slabs(const std::vector<std::vector<double>>& bounds) {
   return SlabDecomposition::along_axis(0, bounds.at(std::size_t(world().n_ranks()) - 1));
+}
+
+/// [m] Radius of the test beds' spheres below; the reach is 2 r + r / 2 = 12.5 mm.
+constexpr double bed_radius = 0.005;
+
+/// Gravel (E = 5e7 Pa) on a floor z = 0 of [-0.1, 0.1] x [-0.05, 0.05] (20 x 10 quads).
+inline int gravel_on_floor(System& s, bool wearing) {
+  const int g = s.materials.add({"gravel", 5e7, 0.25, 2650});
+  s.materials.set_pair(g, g, {0.5, 0.5, 0.1});
+  s.add_wall(MeshWall(floor_mesh(-0.1, 0.1, -0.05, 0.05, 20, 10), g, {}, wearing, "floor"));
+  s.settings.domain = {{-0.2, -0.2, -0.05}, {0.2, 0.2, 0.2}};
+  return g;
+}
+
+/// A square pyramid of 2 x 2 layers: 8 x 2 spheres on the floor, 7 x 1 in their hollows.
+inline void pile(System& s, bool wearing) {
+  const double r = bed_radius;
+  const int g = gravel_on_floor(s, wearing);
+  for (int i = 0; i < 8; ++i)
+    for (int j = 0; j < 2; ++j)
+      s.particles.add({-0.035 + 2 * r * i, 2 * r * j, r}, {}, r, 2650, g);
+  for (int i = 0; i < 7; ++i)
+    s.particles.add({-0.03 + 2 * r * i, r, r + r * std::sqrt(2.0)}, {}, r, 2650, g);
+}
+
+/// 343 spheres on a 12 mm lattice in a box of 0.1 m, no gravity, random velocities of about
+/// 1 m/s (the same generator on every rank), e = 0.9, mu = 0.3; periodic along x if asked.
+inline void gas(System& s, bool periodic) {
+  const int g = s.materials.add({"gravel", 5e7, 0.25, 2650});
+  s.materials.set_pair(g, g, {0.9, 0.3, 0.0});
+  s.settings.gravity = {};
+  s.settings.domain = {{-0.05, -0.01, -0.01}, {0.15, 0.11, 0.11}};
+  if (periodic)
+    s.settings.periodic_slab = {true, 0, 0.0, 0.1};
+  std::uint64_t seed = 12345;
+  const auto uniform = [&seed]() {
+    seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+    return double(seed >> 11) / double(std::uint64_t(1) << 53) - 0.5;
+  };
+  for (int i = 0; i < 7; ++i)
+    for (int j = 0; j < 7; ++j)
+      for (int k = 0; k < 7; ++k)
+        s.particles.add({0.014 + 0.012 * i, 0.014 + 0.012 * j, 0.014 + 0.012 * k},
+                        {2 * uniform(), 2 * uniform(), 2 * uniform()}, bed_radius, 2650, g);
+  s.add_wall(MeshWall(box_or_channel(0.1, !periodic, 0.01), g, {}, false, "box"));
 }
 
 } // namespace wear::dem::testing

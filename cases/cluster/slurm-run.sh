@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# The coupled DEM-FEM run (`wearsim run`) at the study's own particle size (s = 1) on a Slurm
+# cluster: the DEM over one angular slab per MPI rank with OpenMP threads inside each rank, the
+# FEM stage on every rank between the windows. Submit from the repository root after
+# building; submit the same command again to continue a run that reached its time limit:
+#
+#     sbatch cases/cluster/slurm-run.sh                          # the plain sample
+#     CASE=cases/scaling-factor/convex-s1.prm sbatch cases/cluster/slurm-run.sh
+#
+# Slurm sends SIGUSR1 to mpirun 5 minutes before the time limit (--signal=B:USR1@300); mpirun
+# passes it to the ranks, which stop at the same step, write their parts of the checkpoint and
+# exit. The next submission resumes there (--resume), on as many ranks as it is given: the
+# same count continues bit for bit, another count re-cuts the bed (docs/user-guide.md, "On
+# several processes (MPI)"). Output/Checkpoint interval bounds what a hard kill loses.
+#SBATCH --job-name=wearsim-run-s1
+#SBATCH --nodes=2
+#SBATCH --ntasks=16
+#SBATCH --cpus-per-task=4
+#SBATCH --time=1-00:00:00
+#SBATCH --signal=B:USR1@300
+#SBATCH --output=wearsim-run-%j.log
+set -euo pipefail
+CASE=${CASE:-cases/scaling-factor/plain-s1.prm}
+export OMP_NUM_THREADS=${SLURM_CPUS_PER_TASK:-1}
+export OMP_PROC_BIND=close OMP_PLACES=cores
+# A folder holding this case's checkpoint continues; otherwise the run starts.
+dir=$(sed -n 's/^ *set Directory *= *//p' "$CASE" | tail -1)
+mode=
+[ -n "$dir" ] && [ -f "$dir/checkpoint.h5" ] && mode=--resume
+# exec: mpirun receives Slurm's signal itself and passes it to the ranks.
+exec mpirun -np "${SLURM_NTASKS}" \
+  --map-by "ppr:$((SLURM_NTASKS / SLURM_NNODES)):node:pe=${OMP_NUM_THREADS}" \
+  build/wearsim run $mode "$CASE"

@@ -1,0 +1,41 @@
+#pragma once
+// The parts of a bed decomposed over ranks as one state: the checkpoints of a run over ranks
+// gather every rank's part (gather_rank_states) and write them side by side; a run on another
+// rank count merges them (merge_rank_states) into the bed as one process would hold it and
+// decomposes that again (System::import_state). docs/dem.md, "A bed decomposed over ranks".
+#include "dem/engine/rank_link.h"
+#include "dem/engine/system.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace wear::dem {
+
+/// Every field of s one after another, sizes first, as doubles (ids and counts are exact below
+/// 2^53): a rank's part in one message.
+std::vector<double> pack_state(const SystemState& s);
+/// The state pack_state() made of `n` values at `values`; throws std::invalid_argument when
+/// they do not make one.
+SystemState unpack_state(const double* values, std::size_t n);
+
+/// Every rank's state on rank 0, in rank order (empty on the other ranks). Every rank calls it
+/// together.
+std::vector<SystemState> gather_rank_states(const SystemState& mine, RankLink& link);
+
+/// The bed of `parts` (every rank's export_state() of one decomposed run, in rank order, or
+/// the one state of a single process) as one process holds it: the particles one rank after
+/// the other, each pair listed once with its history as its rank listed it (a partner held as
+/// a ghost of the rank below becomes that particle; one across the periodic seam, its image),
+/// the wall-contact slots, the clock. The open wear window is summed over the ranks and their
+/// threads into the layout of one thread (n_threads = 1); the continuation part (what the last
+/// rebuild decided) is left out: the merged state is imported, not resumed, and its window
+/// added (System::add_wear_window). Throws std::invalid_argument naming the part when the
+/// parts do not fit together (ranks missing or out of order, different clocks, a ghost whose
+/// particle no rank holds).
+SystemState merge_rank_states(const std::vector<SystemState>& parts);
+
+/// True when `s` continues bit for bit (System::resume_state) on rank `rank` of `n_ranks`:
+/// written by that rank of that many, with its continuation part.
+bool continues_exactly(const SystemState& s, int rank, int n_ranks);
+
+} // namespace wear::dem

@@ -1,0 +1,234 @@
+// `wearsim run` under mpirun: the wearsim program started by `mpiexec -np 2` on a small tester
+// case (30-degree sector, one dem-only and two staged stages, wear amplified 20 times, one
+// thread per rank, an in-stage checkpoint every 0.5 s), each run in its own folder with the
+// case's Output/Directory relative to it (so that a run's folder can be copied and resumed as
+// the same case):
+// - stopped by SIGTERM (to mpiexec, which passes it to the ranks) inside the DEM part of
+//   stage 2, and killed by SIGKILL there after an in-stage checkpoint, each resumed on 2
+//   ranks: the tables' physical columns, the worn surface and the bed equal the
+//   uninterrupted 2-rank run's, bit for bit;
+// - the stopped 2-rank run resumed as one process, and a stopped one-process run resumed on 2
+//   ranks: they finish, say the bed is decomposed again, hold every particle, and the stage
+//   they continue wears within 50 % of the uninterrupted run's: the stage's first part is the
+//   same, the rest another realisation of the flow, and in this small bed one revolution's
+//   wear differs by up to 70 % between realisations (a one-process run against a 2-rank run:
+//   revolution 3, 7.4 against 4.4e-11 m^3). That the bed goes on as the decomposed one would
+//   is checked in tests/dem_mpi/merged_state_test.cc, to 1e-12 m.
+// [long]: the quick case (cases/quick/plain.prm) at 1, 2 and 4 ranks, its wear per revolution
+// over the staged revolutions within the seeds' 95 % interval that cases/quick's report wrote
+// into the README.
+#include "coupling/output/checkpoint.h"
+#include "small_tester.h"
+#include "wearsim_process.h"
+
+#include <catch2/catch.hpp>
+
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
+#include <filesystem>
+#include <regex>
+#include <thread>
+
+using namespace wear::coupling;
+namespace fs = std::filesystem;
+
+namespace {
+
+/// The small tester of the coupling tests (small_tester.h), convex, one thread per rank, three
+/// stages and an in-stage checkpoint every 0.5 s, its output in `out` beside the case file.
+CaseParameters small_case() {
+  CaseParameters p = small_tester_case("out", true);
+  p.geometry.sample.mesh_size_bottom = 5e-3;
+  p.dem.n_threads = 1;
+  p.coupling.schedule = "1 dem-only, 2 staged";
+  p.coupling.amplification = 20;
+  p.coupling.max_depth_fraction = 5;
+  p.output.checkpoint_interval = 0.5;
+  return p;
+}
+
+/// `[mpiexec -np n] wearsim run [option] <case>` in folder `dir`, its output to dir/<log>;
+/// n = 0: the program alone, as one process.
+pid_t start_in(const std::string& dir, int n_ranks, const std::string& option,
+               const std::string& case_file, const std::string& log) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    if (chdir(dir.c_str()) != 0)
+      _exit(126);
+    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    dup2(fd, 1);
+    dup2(fd, 2);
+    setenv("OMP_NUM_THREADS", "1", 1);
+    setenv("OMPI_MCA_mpi_yield_when_idle", "1", 1); // ranks sharing cores yield while waiting
+    std::vector<const char*> argv;
+    const std::string np = std::to_string(n_ranks);
+    if (n_ranks > 0)
+      argv = {MPIEXEC_BINARY, "--allow-run-as-root", "--oversubscribe", "-np", np.c_str()};
+    argv.push_back(WEARSIM_BINARY);
+    argv.push_back("run");
+    if (!option.empty())
+      argv.push_back(option.c_str());
+    argv.push_back(case_file.c_str());
+    argv.push_back(nullptr);
+    execv(argv[0], const_cast<char* const*>(argv.data()));
+    _exit(127);
+  }
+  return pid;
+}
+
+int run_in(const std::string& dir, int n_ranks, const std::string& option,
+           const std::string& case_file, const std::string& log) {
+  return wait_for(start_in(dir, n_ranks, option, case_file, log));
+}
+
+/// A fresh folder holding the case file `case.prm` (the small case, or `text`).
+std::string fresh(const std::string& dir, const std::string& text = "") {
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  if (text.empty())
+    write_resolved_parameters(small_case(), dir + "/case.prm");
+  else
+    std::ofstream(dir + "/case.prm") << text;
+  return dir;
+}
+
+/// Waits until the run's latest checkpoint lies inside stage 2; false if the run ended first.
+bool wait_inside_stage_2(pid_t pid, const std::string& out) {
+  for (;;) {
+    if (waitpid(pid, nullptr, WNOHANG) == pid)
+      return false;
+    try {
+      const Checkpoint c = read_checkpoint(out + "/checkpoint.h5");
+      if (c.open_stage && c.stages_done == 1)
+        return true;
+    } catch (const std::exception&) { // not written yet
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+}
+
+/// A run stopped by `signal` inside stage 2; returns its exit status.
+int stop_inside_stage_2(const std::string& dir, int n_ranks, int signal) {
+  const pid_t pid = start_in(dir, n_ranks, "", "case.prm", "stop.log");
+  if (!wait_inside_stage_2(pid, dir + "/out"))
+    return -1;
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  kill(pid, signal);
+  return wait_for(pid);
+}
+
+/// The wear of each stage (stages.csv, dem_wear_volume_m3).
+std::vector<double> stage_wear(const std::string& out) {
+  const auto rows = physical_columns(out + "/stages.csv");
+  std::size_t column = 0;
+  while (column < rows.at(0).size() && rows[0][column] != "dem_wear_volume_m3")
+    ++column;
+  std::vector<double> wear;
+  for (std::size_t k = 1; k < rows.size(); ++k)
+    wear.push_back(std::stod(rows[k].at(column)));
+  return wear;
+}
+
+void check_same_run(const std::string& a, const std::string& b) {
+  for (const char* csv : {"/stages.csv", "/summary.csv"}) {
+    INFO(csv);
+    const auto ra = physical_columns(a + csv), rb = physical_columns(b + csv);
+    REQUIRE(ra.size() == 4); // header + 3 stages (or revolutions)
+    CHECK(ra == rb);
+  }
+  const auto ca = read_checkpoint(a + "/checkpoint.h5", {0, 2});
+  const auto cb = read_checkpoint(b + "/checkpoint.h5", {0, 2});
+  REQUIRE(cb.stages_done == 3);
+  CHECK(cb.dem_ranks == 2);
+  CHECK(cb.sample.surface.vertices == ca.sample.surface.vertices);
+  CHECK(cb.sample.removed_volume == ca.sample.removed_volume);
+  CHECK(cb.dem.position == ca.dem.position);
+  CHECK(cb.dem.pair_history == ca.dem.pair_history);
+}
+
+/// A run resumed on another rank count: it finishes, says so, holds the bed, and its stage 2
+/// wears within 50 % of the uninterrupted run's.
+void check_resumed_elsewhere(const std::string& a, const std::string& dir) {
+  const std::string log = file_text(dir + "/resume.log");
+  INFO(log);
+  CHECK_THAT(log, Catch::Contains("the bed is decomposed again") &&
+                      Catch::Contains("resumed after stage 1 of 3, inside stage 2"));
+  const auto ca = read_checkpoint(a + "/checkpoint.h5");
+  const auto cb = read_checkpoint(dir + "/out/checkpoint.h5");
+  REQUIRE(cb.stages_done == 3);
+  CHECK(cb.dem.position.size() == ca.dem.position.size()); // merged: the whole bed
+  const auto wa = stage_wear(a), wb = stage_wear(dir + "/out");
+  REQUIRE(wb.size() == 3);
+  CHECK(wb[0] == wa[0]); // before the stop
+  INFO("stage 2 wore " << wb[1] << " m^3, uninterrupted " << wa[1] << " m^3");
+  CHECK(wb[1] == Approx(wa[1]).epsilon(0.5));
+}
+
+} // namespace
+
+TEST_CASE("wearsim run over 2 ranks: stopped or killed inside a stage and resumed bit for bit, "
+          "and resumed on another rank count",
+          "[coupling][run][mpi]") {
+  const std::string a = fresh("run_mpi_a");
+  REQUIRE(run_in(a, 2, "", "case.prm", "run.log") == 0);
+  INFO(file_text(a + "/run.log"));
+  CHECK_THAT(file_text(a + "/run.log"), Catch::Contains("over 2 MPI ranks"));
+
+  // SIGTERM: every rank writes its part of a checkpoint and stops; resumed on 2 ranks and, from
+  // a copy, as one process.
+  const std::string b = fresh("run_mpi_term");
+  const int status = stop_inside_stage_2(b, 2, SIGTERM);
+  const std::string stop_log = file_text(b + "/stop.log");
+  INFO(stop_log);
+  REQUIRE(status > 0);
+  CHECK_THAT(stop_log, Catch::Contains("stopped by SIGTERM in stage 2 of 3"));
+  const Checkpoint stopped = read_checkpoint(b + "/out/checkpoint.h5", {1, 2});
+  CHECK(stopped.open_stage);
+  CHECK(stopped.dem_ranks == 2);
+  CHECK(stopped.dem.rank == 1);
+  const std::string b1 = "run_mpi_term_on_1";
+  fs::remove_all(b1);
+  fs::copy(b, b1, fs::copy_options::recursive);
+  REQUIRE(run_in(b, 2, "--resume", "case.prm", "resume.log") == 0);
+  check_same_run(a + "/out", b + "/out");
+  REQUIRE(run_in(b1, 0, "--resume", "case.prm", "resume.log") == 0);
+  check_resumed_elsewhere(a + "/out", b1);
+
+  // SIGKILL after an in-stage checkpoint: resumed from it on 2 ranks.
+  const std::string c = fresh("run_mpi_kill");
+  CHECK(stop_inside_stage_2(c, 2, SIGKILL) > 0);
+  REQUIRE(run_in(c, 2, "--resume", "case.prm", "resume.log") == 0);
+  INFO(file_text(c + "/resume.log"));
+  check_same_run(a + "/out", c + "/out");
+
+  // A one-process run stopped inside stage 2, resumed on 2 ranks.
+  const std::string d = fresh("run_mpi_one_on_2");
+  const std::string one = fresh("run_mpi_one");
+  REQUIRE(run_in(one, 0, "", "case.prm", "run.log") == 0);
+  CHECK(stop_inside_stage_2(d, 0, SIGTERM) == 128 + SIGTERM);
+  REQUIRE(run_in(d, 2, "--resume", "case.prm", "resume.log") == 0);
+  check_resumed_elsewhere(one + "/out", d);
+}
+
+TEST_CASE("the quick case at 1, 2 and 4 ranks wears within the seeds' interval",
+          "[coupling][run][mpi][long]") {
+  // The README's quick-report block: "| mean +- 95 % interval | 3.35 +- 0.85 | ...".
+  const std::string readme = file_text(std::string(WEAR_SOURCE_DIR) + "/README.md");
+  std::smatch m;
+  REQUIRE(std::regex_search(
+      readme, m, std::regex(R"(\| mean \+- 95 % interval \| ([0-9.]+) \+- ([0-9.]+) \|)")));
+  const double mean = std::stod(m[1]), half = std::stod(m[2]);
+  std::string text = file_text(std::string(WEAR_SOURCE_DIR) + "/cases/quick/plain.prm");
+  text = std::regex_replace(text, std::regex("output/quick/plain"), "out");
+  for (const int n_ranks : {1, 2, 4}) {
+    const std::string dir = fresh("run_mpi_quick_" + std::to_string(n_ranks), text);
+    REQUIRE(run_in(dir, n_ranks, "", "case.prm", "run.log") == 0);
+    const auto wear = stage_wear(dir + "/out");
+    REQUIRE(wear.size() == 6);
+    const double per_revolution = 1e9 * (wear[2] + wear[3] + wear[4] + wear[5]) / 4;
+    INFO(n_ranks << " rank(s): " << per_revolution << " mm^3 per revolution over revolutions 3 "
+                 << "to 6; the seeds' interval " << mean << " +- " << half);
+    CHECK(std::abs(per_revolution - mean) <= half);
+  }
+}
