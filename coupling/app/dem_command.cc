@@ -152,9 +152,7 @@ void run_dem_command(const CaseParameters& p, std::ostream& log_to,
   dem::WearTester tester(p.geometry, p.dem, p.wear_law, p.deformation, sample.surface);
   tester.set_rank_link(options.ranks);
   if (n_ranks > 1)
-    log << format("over %d MPI ranks, %d threads each: angular slabs of %.2f degrees\n", n_ranks,
-                  p.dem.n_threads, p.geometry.tester.sector_angle_deg / n_ranks)
-        << std::flush;
+    log << tester.rank_layout() << std::endl;
   TesterProgressLine progress(options.progress && writer, tester, p.dem.revolutions);
   const auto fill =
       tester.fill_and_settle([&](const dem::TesterProgress& pr) { progress.show(pr); });

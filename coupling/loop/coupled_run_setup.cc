@@ -151,11 +151,9 @@ std::optional<OpenStage> CoupledRun::setup() {
                                               initial_surface_);
   tester_->set_rank_link(options_.ranks);
   if (options_.ranks && options_.ranks->n_ranks() > 1)
-    log_ << format("over %d MPI ranks, %d threads each: angular slabs of %.2f degrees; rank 0 "
-                   "writes, every rank runs the FEM stage on its own copy of the sample\n",
-                   options_.ranks->n_ranks(), p_.dem.n_threads,
-                   p_.geometry.tester.sector_angle_deg / options_.ranks->n_ranks())
-         << std::flush;
+    log_ << tester_->rank_layout()
+         << "; rank 0 writes, every rank runs the FEM stage on its own copy of the sample"
+         << std::endl;
   output_ = std::make_unique<RunOutput>(p_.output.directory, writer());
   if (options_.resume)
     return resume();

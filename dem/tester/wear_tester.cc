@@ -39,6 +39,7 @@
 #include <omp.h>
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace wear::dem {
@@ -185,6 +186,19 @@ void WearTester::set_rank_link(RankLink* link) {
   slabs_ =
       SlabDecomposition::uniform_angular(angle, link->n_ranks(), geometry_.tester.inner_radius);
   system_.set_rank_link(link, &slabs_);
+}
+
+std::string WearTester::rank_layout() const {
+  const RankLink* link = system_.rank_link();
+  const int n = link ? link->n_ranks() : 1;
+  const double angle =
+      geometry_.tester.sector_angle_deg < 360 ? geometry_.tester.sector_angle_deg : 360.0;
+  char b[160];
+  std::snprintf(b, sizeof b, "over %d MPI rank(s), %s each: angular slabs of %.2f degrees", n,
+                dem_.n_threads > 0 ? (std::to_string(dem_.n_threads) + " thread(s)").c_str()
+                                   : "the cores it is given (DEM/Threads = 0)",
+                angle / n);
+  return b;
 }
 
 void WearTester::count_particles() {

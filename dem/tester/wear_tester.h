@@ -54,6 +54,8 @@ public:
   /// over the ranks in rank order and the same on every rank. restore() takes this rank's part
   /// of a state written on as many ranks, or a whole bed (merge_rank_states).
   void set_rank_link(RankLink* link);
+  /// "over N MPI ranks, T threads each: angular slabs of D degrees" (set_rank_link), for logs.
+  std::string rank_layout() const;
   /// [-] Particles over all ranks (on one rank: the System's).
   std::size_t n_particles() const { return n_particles_; }
   /// The real particles of the whole bed (position, velocity, spin, radius, id): on one rank

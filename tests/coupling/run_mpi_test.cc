@@ -173,7 +173,7 @@ TEST_CASE("wearsim run over 2 ranks: stopped or killed inside a stage and resume
   const std::string a = fresh("run_mpi_a");
   REQUIRE(run_in(a, 2, "", "case.prm", "run.log") == 0);
   INFO(file_text(a + "/run.log"));
-  CHECK_THAT(file_text(a + "/run.log"), Catch::Contains("over 2 MPI ranks"));
+  CHECK_THAT(file_text(a + "/run.log"), Catch::Contains("over 2 MPI rank(s)"));
 
   // SIGTERM: every rank writes its part of a checkpoint and stops; resumed on 2 ranks and, from
   // a copy, as one process.
