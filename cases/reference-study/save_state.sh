@@ -4,12 +4,14 @@
 # holds none). Only what the continuation and the report need is kept, as one xz archive per
 # run, state/<case>.tar.xz, with a line saying what it holds in state/<case>.txt:
 #   checkpoint.h5 (particles, worn sample, every revolution and stage record), parameters.prm
-#   (the engine version the report checks), summary.csv, stages.csv, history.h5, surface/*.h5
-#   (the stage surfaces the report maps);
-#   volume/stage_*.h5 as stubs holding only their index entry (the root attribute "xdmf"): a
-#   resume re-reads that entry of every stage and nothing else, and the fields themselves,
-#   about 11 MB per stage, are for ParaView. The kept run's volume.xdmf therefore lists
-#   stages whose fields are gone; the stages run after the restore have theirs.
+#   (the engine version the report checks), summary.csv, stages.csv, history.h5, and the first
+#   and the last stage surface (surface/stage_*.h5: the unworn sample and the latest worn one,
+#   the two the report maps and profiles);
+#   the other stage surfaces and every volume/stage_*.h5 as stubs holding only their index
+#   entry (the root attribute "xdmf"): a resume re-reads that entry of every stage and nothing
+#   else, and the fields themselves (2.5 MB per surface and 11 MB per volume stage) are for
+#   ParaView. The kept run's xdmf indexes therefore list stages whose fields are gone; the
+#   stages run after the restore have theirs.
 # Left out: the initial sample mesh (mesh/), the .vtu copies, the xdmf indexes (rewritten on
 # resume) and the snapshots.
 #
@@ -34,10 +36,16 @@ for c in "${cases[@]}"; do
   for f in checkpoint.h5 parameters.prm summary.csv stages.csv history.h5; do
     [ -f "$out/$f" ] && cp "$out/$f" "$s/"
   done
-  cp "$out"/surface/stage_*.h5 "$s/surface/" 2>/dev/null || true
-  for v in "$out"/volume/stage_*.h5; do
+  surfaces=("$out"/surface/stage_*.h5)
+  [ -f "${surfaces[0]}" ] || surfaces=()
+  for v in "${surfaces[@]}" "$out"/volume/stage_*.h5; do
     [ -f "$v" ] || continue
-    /usr/bin/python3 - "$v" "$s/volume/$(basename "$v")" <<'EOF'
+    kind=$(basename "$(dirname "$v")")
+    if [ "$kind" = surface ] && { [ "$v" = "${surfaces[0]}" ] || [ "$v" = "${surfaces[-1]}" ]; }; then
+      cp "$v" "$s/surface/"
+      continue
+    fi
+    /usr/bin/python3 - "$v" "$s/$kind/$(basename "$v")" <<'EOF'
 import sys, h5py
 with h5py.File(sys.argv[1], "r") as src, h5py.File(sys.argv[2], "w") as dst:
     dst.attrs["xdmf"] = src.attrs["xdmf"]

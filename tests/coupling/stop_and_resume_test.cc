@@ -86,23 +86,6 @@ bool wait_inside_stage(pid_t pid, const std::string& dir, int stage) {
   }
 }
 
-void check_same_run(const std::string& a, const std::string& b) {
-  for (const char* csv : {"/stages.csv", "/summary.csv"}) {
-    INFO(csv);
-    const auto ra = physical_columns(a + csv), rb = physical_columns(b + csv);
-    REQUIRE(ra.size() == 4); // header + 3 stages (or revolutions)
-    CHECK(ra == rb);
-  }
-  const auto ca = read_checkpoint(a + "/checkpoint.h5"), cb = read_checkpoint(b + "/checkpoint.h5");
-  REQUIRE(cb.stages_done == 3);
-  CHECK_FALSE(cb.open_stage);
-  CHECK(cb.sample.surface.vertices == ca.sample.surface.vertices);
-  CHECK(cb.sample.vertices == ca.sample.vertices);
-  CHECK(cb.sample.removed_volume == ca.sample.removed_volume);
-  CHECK(cb.dem.position == ca.dem.position);
-  CHECK(cb.dem.pair_history == ca.dem.pair_history);
-}
-
 std::string write_case(const std::string& dir) {
   fs::remove_all(dir);
   fs::remove_all(dir + ".replaced");

@@ -1,7 +1,10 @@
 #pragma once
 // The wearsim program as a child process, for the tests that stop and resume it: start it
 // with its output to a log, wait for it, read its files, and compare the physical columns of
-// its tables (the wall-clock columns left out).
+// its tables (the wall-clock columns left out), and check that two runs of one case ended alike.
+#include "coupling/output/checkpoint.h"
+
+#include <catch2/catch.hpp>
 #include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -71,6 +74,29 @@ std::vector<std::vector<std::string>> physical_columns(const std::string& path) 
     rows.push_back(kept);
   }
   return rows;
+}
+
+/// Two runs of the same 3-stage case (one stopped and resumed) ended alike: their tables (the
+/// wall-clock columns left out), the worn sample and the bed, bit for bit. `part` reads the
+/// checkpoints of a run over ranks (each of them then holds `part.n_ranks` DEM parts).
+void check_same_run(const std::string& a, const std::string& b,
+                    const wear::coupling::DemPart& part = {}) {
+  for (const char* csv : {"/stages.csv", "/summary.csv"}) {
+    INFO(csv);
+    const auto ra = physical_columns(a + csv), rb = physical_columns(b + csv);
+    REQUIRE(ra.size() == 4); // header + 3 stages (or revolutions)
+    CHECK(ra == rb);
+  }
+  const auto ca = wear::coupling::read_checkpoint(a + "/checkpoint.h5", part);
+  const auto cb = wear::coupling::read_checkpoint(b + "/checkpoint.h5", part);
+  REQUIRE(cb.stages_done == 3);
+  CHECK_FALSE(cb.open_stage);
+  CHECK(cb.dem_ranks == part.n_ranks);
+  CHECK(cb.sample.surface.vertices == ca.sample.surface.vertices);
+  CHECK(cb.sample.vertices == ca.sample.vertices);
+  CHECK(cb.sample.removed_volume == ca.sample.removed_volume);
+  CHECK(cb.dem.position == ca.dem.position);
+  CHECK(cb.dem.pair_history == ca.dem.pair_history);
 }
 
 } // namespace
