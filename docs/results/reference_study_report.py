@@ -123,6 +123,14 @@ class Run:
             return (h["points"][:], h["triangles"][:].astype(int), h["cell/label"][:, 0].astype(int),
                     h["cell/cumulative_removed_volume"][:, 0], h["cell/wear_depth"][:, 0])
 
+    def wall_hours(self):
+        """Wall-clock time the run took so far [h]: its revolutions (summary.csv) and the FEM side
+        of its stages (stages.csv), on whatever else shared the machine then."""
+        fem = ("wear_s", "fem_solve_s", "mesh_motion_s", "remesh_s", "output_s")
+        seconds = sum(r.get("wall_seconds", 0.0) for r in self.rows)
+        seconds += sum(r.get(k, 0.0) for r in self.stages for k in fem)
+        return seconds / 3600.0
+
     def n_surfaces(self):
         d = os.path.join(self.path, "surface")
         return len([f for f in os.listdir(d) if f.startswith("stage_") and f.endswith(".h5")]) if os.path.isdir(d) else 0
@@ -352,13 +360,17 @@ def report(runs, missing, cal, out):
     w.append(f"**Engine version** {P.engine} (every run below). **Case files** "
              "`cases/reference-study/*.prm`, the calibrated coefficient from "
              "`cases/reference-study/calibration.prm`.\n")
-    w.append("| run | case | schedule | revolutions done | staged stages done |")
-    w.append("|---|---|---|---|---|")
+    w.append("| run | case | schedule | revolutions done | staged stages done | wall time [h] |")
+    w.append("|---|---|---|---|---|---|")
     for n, r in runs.items():
-        w.append(f"| {n} | `{r.case}` | {r.planned} | {int(r.rows[-1]['revolution'])} | {r.n_staged} |")
+        w.append(f"| {n} | `{r.case}` | {r.planned} | {int(r.rows[-1]['revolution'])} | {r.n_staged} | "
+                 f"{r.wall_hours():.1f} |")
     if cal:
-        w.append(f"| calibration | `{cal.case}` | `wearsim dem` to steady + 2 | {int(cal.rows[-1]['revolution'])} | - |")
+        w.append(f"| calibration | `{cal.case}` | `wearsim dem` to steady + 2 | {int(cal.rows[-1]['revolution'])} | - | "
+                 f"{cal.wall_hours():.1f} |")
     w.append("")
+    w.append("Wall time: the revolutions' and the stages' own clocks (`summary.csv`, `stages.csv`), "
+             "with whatever else ran on the machine then (`cases/reference-study/README.md`, Status).\n")
     if missing or not cal:
         w.append("**Not run** with this engine: " + ", ".join(missing + ([] if cal else ["calibration"])) + ".\n")
 
