@@ -49,6 +49,20 @@ void take_bed(System& s, Make make, const SystemState& state) {
   }
 }
 
+/// `s` takes up `state` in one thread: the bed (walls and materials from `make`), over `link`
+/// and `slabs` when given, then the particles' state and the open wear window.
+template <class Make>
+void take_up(System& s, Make make, const SystemState& state, RankLink* link = nullptr,
+             const SlabDecomposition* slabs = nullptr) {
+  take_bed(s, make, state);
+  if (link)
+    s.set_rank_link(link, slabs);
+  s.setup();
+  s.set_n_threads(1);
+  s.import_state(state);
+  s.add_wear_window(state);
+}
+
 /// The pile on its wearing floor, and the gas periodic along x (dem_mpi_fixtures.h).
 void wearing_pile(System& s) {
   pile(s, true);
@@ -101,11 +115,7 @@ TEST_CASE("a pile's parts merged go on in one process and over the ranks as if n
   };
   SECTION("in one process") {
     System one;
-    take_bed(one, wearing_pile, merged);
-    one.setup();
-    one.set_n_threads(1);
-    one.import_state(merged);
-    one.add_wear_window(merged);
+    take_up(one, wearing_pile, merged);
     one.run(1000);
     const BedState b = by_id(one, n);
     CHECK(max_difference(b.x, reference.x) <= 1e-12);
@@ -114,12 +124,7 @@ TEST_CASE("a pile's parts merged go on in one process and over the ranks as if n
   }
   SECTION("over the ranks again, one thread each") {
     System again;
-    take_bed(again, wearing_pile, merged);
-    again.set_rank_link(&world(), &slabs);
-    again.setup();
-    again.set_n_threads(1);
-    again.import_state(merged);
-    again.add_wear_window(merged);
+    take_up(again, wearing_pile, merged, &world(), &slabs);
     again.run(1000);
     const BedState b = gather(again, n, world());
     for (std::size_t id = 0; id < n; ++id)
@@ -151,12 +156,7 @@ TEST_CASE("a pile's state of one process goes on over the ranks as in that proce
   CHECK(state.n_ranks == 1);
   one.run(1000);
   System ranked;
-  take_bed(ranked, wearing_pile, state);
-  ranked.set_rank_link(&world(), &slabs);
-  ranked.setup();
-  ranked.set_n_threads(1);
-  ranked.import_state(state);
-  ranked.add_wear_window(state);
+  take_up(ranked, wearing_pile, state, &world(), &slabs);
   ranked.run(1000);
   const BedState a = gather(ranked, n, world()), b = by_id(one, n);
   for (std::size_t id = 0; id < n; ++id)
@@ -196,18 +196,11 @@ TEST_CASE("a periodic gas's parts merged keep the momentum and energy of the run
       CHECK(std::abs(b[k] - reference[k]) <= 1e-9 * total);
   };
   System one;
-  take_bed(one, periodic_gas, merged);
-  one.setup();
-  one.set_n_threads(1);
-  one.import_state(merged);
+  take_up(one, periodic_gas, merged);
   one.run(300);
   check(momentum_and_energy(one));
   System again;
-  take_bed(again, periodic_gas, merged);
-  again.set_rank_link(&ring(), &thirds);
-  again.setup();
-  again.set_n_threads(1);
-  again.import_state(merged);
+  take_up(again, periodic_gas, merged, &ring(), &thirds);
   again.run(300);
   check(over_ranks(momentum_and_energy(again), world()));
 }
