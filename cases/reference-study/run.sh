@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
 # Runs (or continues) cases of the reference study, as many at once as the machine has cores,
-# one DEM thread each (DEM/Threads = 1 in the case files). A case whose folder holds a
+# one DEM thread each (DEM/Threads = 1 in the study's case files; the wear-out and stress cases
+# use 2 threads and run with JOBS=1). A case whose folder holds a
 # checkpoint continues with --resume (a finished run returns at once), otherwise it starts.
 # Stop everything with Ctrl-C or `kill -TERM <pid of this script>`: each run writes a
 # checkpoint and exits; the next call continues it.
 #
 # usage: bash cases/reference-study/run.sh [case ...]
-#        case: the name of a case file here without .prm (default: plain convex)
+#        case: the name of a case file here without .prm (default: plain convex), or the
+#              path of another case file run by the study's engine (cases/wear-out/convex.prm);
+#              its output folder is the `set Directory` the file itself writes
 #        WEARSIM=<binary> (default: the study's engine, engine.sh, built on first use),
 #        JOBS=<n> runs at once (default: the number of cores)
 # A case with no checkpoint in output/reference-study but a run kept in
@@ -22,17 +25,19 @@ source scripts/run_pool.sh
 pool_init "reference study" "${JOBS:-$(nproc)}" || exit 2
 cases=("$@")
 [ ${#cases[@]} -gt 0 ] || cases=(plain convex)
+source cases/reference-study/case_paths.sh
+root=output/reference-study
 for c in "${cases[@]}"; do
-  [ -f "cases/reference-study/$c.prm" ] ||
-    { echo "run.sh: no case file cases/reference-study/$c.prm" >&2; exit 2; }
+  [ -f "$(case_file "$c")" ] || { echo "run.sh: no case file $(case_file "$c")" >&2; exit 2; }
+  [ -n "$(out_dir "$c")" ] || { echo "run.sh: $c sets no Output/Directory of its own" >&2; exit 2; }
 done
 [ -x "$wearsim" ] || { echo "run.sh: no wearsim binary at '$wearsim' (WEARSIM)" >&2; exit 2; }
-root=output/reference-study
 mkdir -p "$root"
 echo "reference study: $("$wearsim" --version), ${#cases[@]} case(s), $POOL_JOBS at once"
 
 restore_kept() { # <case>: the kept run (save_state.sh) into an output folder that holds none
-  local kept="cases/reference-study/state/$1.tar.xz" out="$root/$1"
+  local kept out
+  kept="cases/reference-study/state/$(kept_name "$1").tar.xz" out=$(out_dir "$1")
   [ -f "$kept" ] && [ ! -f "$out/checkpoint.h5" ] || return 0
   mkdir -p "$out"
   tar -C "$out" -xJf "$kept" ||
@@ -41,7 +46,9 @@ restore_kept() { # <case>: the kept run (save_state.sh) into an output folder th
 }
 
 run_one() { # <case>: start or continue one case, its log beside its folder
-  local prm="cases/reference-study/$1.prm" out="$root/$1" mode=--overwrite
+  local prm out mode=--overwrite
+  prm=$(case_file "$1") out=$(out_dir "$1")
+  mkdir -p "$(dirname "$out")"
   [ -f "$out/checkpoint.h5" ] && mode=--resume
   echo "=== $(date -u +%FT%TZ) $wearsim run $mode $prm" >> "$out.log"
   exec "$wearsim" run "$mode" "$prm" >> "$out.log" 2>&1
@@ -55,7 +62,7 @@ stop_all() {
 trap stop_all INT TERM
 for c in "${cases[@]}"; do
   restore_kept "$c"
-  pool_run "$c" "$root/$c.log" run_one "$c"
+  pool_run "$c" "$(out_dir "$c").log" run_one "$c"
   echo "reference study: $c started $(date -u +%TZ)"
 done
 pool_wait || { printf 'reference study: stopped with an error: %s\n' "${POOL_FAILED[@]}"; exit 1; }

@@ -16,19 +16,38 @@
 # resume) and the snapshots.
 #
 # usage: bash cases/reference-study/save_state.sh [case ...]   (default: plain convex)
+#        case: as for run.sh (case_paths.sh): a name here, or the path of another case file;
+#              `calibration` keeps output/calibration-plain's parameters.prm, summary.csv and
+#              calibration.prm in state/calibration-plain (the report's calibration; its
+#              history.h5 of particles and face fields is left out)
 #        BUDGET_MB=<n>: refuse when the kept archives would exceed n MB in all (default 60),
 #        since every save adds its archives to the repository's history.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-root=output/reference-study
+source cases/reference-study/case_paths.sh
 kept_root=cases/reference-study/state
-cases=("$@")
-[ ${#cases[@]} -gt 0 ] || cases=(plain convex)
+mkdir -p "$kept_root"
+keep_calibration() { # the calibration run (a `wearsim dem` run): what the report reads of it
+  local from=output/calibration-plain to=$kept_root/calibration-plain f
+  for f in parameters.prm summary.csv calibration.prm; do
+    [ -f "$from/$f" ] || { echo "save_state.sh: $from/$f does not exist (run and calibrate first)" >&2; exit 2; }
+  done
+  mkdir -p "$to"
+  for f in parameters.prm summary.csv calibration.prm; do cp "$from/$f" "$to/$f.tmp" && mv "$to/$f.tmp" "$to/$f"; done
+  echo "save_state.sh: calibration: $(($(wc -l < "$to/summary.csv") - 1)) revolutions, kept in $to"
+}
+args=()
+for a in "$@"; do
+  if [ "$a" = calibration ]; then keep_calibration; else args+=("$a"); fi
+done
+[ $# -gt 0 ] || args=(plain convex)
+[ ${#args[@]} -gt 0 ] || exit 0
+cases=()
+for a in "${args[@]}"; do cases+=("$(kept_name "$a")"); done
 staging=$(mktemp -d)
 trap 'rm -rf "$staging"' EXIT
-mkdir -p "$kept_root"
-for c in "${cases[@]}"; do
-  out="$root/$c"
+for i in "${!args[@]}"; do
+  c=${cases[$i]} out=$(out_dir "${args[$i]}")
   [ -f "$out/checkpoint.h5" ] ||
     { echo "save_state.sh: $out holds no checkpoint.h5 (nothing to keep for '$c')" >&2; exit 2; }
   s="$staging/$c"

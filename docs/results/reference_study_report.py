@@ -8,11 +8,14 @@ Usage: /usr/bin/python3 docs/results/reference_study_report.py [--runs DIR] [--o
                study), plain-seed2/3 and convex-seed2/3 (seeds), plain-s4/s2 and
                convex-s4/s2 (particle size), as cases/reference-study/run.sh writes them
 --out          where reference-study.md and its plots go (default docs/results)
---calibration  the calibration run (default output/calibration-plain)
+--calibration  the calibration run (default output/calibration-plain, else the one kept in
+               cases/reference-study/state/calibration-plain); the coefficient its
+               calibration.prm holds must be the one every run used
 --check        only read the run folders and check them (the study pair present, one engine
                version); print what would be reported from, write nothing
 
-Each run's summary.csv, history.h5 and surface/stage_*.h5 are read. The study pair is
+Each run's summary.csv, history.h5 and surface/stage_*.h5 are read (of the calibration, a
+`wearsim dem` run, its summary.csv and calibration.prm). The study pair is
 required; every other run missing is listed as not run. All runs present must name the same
 engine version (the second line of their parameters.prm), or the report is refused.
 
@@ -36,6 +39,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 PROG = os.path.basename(sys.argv[0])
 HOURS_PER_REV = 28.0
 T56, T184 = 56.0 / HOURS_PER_REV, 184.0 / HOURS_PER_REV
+# The calibration run on this machine, else the one kept in the repository (save_state.sh).
+CALIBRATION_FOLDERS = ["output/calibration-plain", "cases/reference-study/state/calibration-plain"]
 T_95 = {1: 12.706, 2: 4.303, 3: 3.182, 4: 2.776, 5: 2.571}  # Student t, two-sided 95 %
 
 
@@ -63,12 +68,16 @@ class Run:
             fail(f"'{path}/summary.csv' has no revolution yet")
         self.params = self._parameters()
         self.element_labels, self.element_wear, self.column_wear = [], None, None
-        with h5py.File(os.path.join(path, "history.h5"), "r") as h:
-            if "revolutions" in h:  # a `wearsim run`'s history (a `wearsim dem` run has fields)
-                rev = h["revolutions"]
-                self.element_labels = [int(v) for v in rev["element_labels"][:]] if "element_labels" in rev else []
-                self.element_wear = rev["element_wear_m3"][:] if "element_wear_m3" in rev else None
-                self.column_wear = rev["column_wear_m3"][:]
+        history = os.path.join(path, "history.h5")
+        # A kept `wearsim dem` run (the calibration) has no history.h5: its per-revolution
+        # particles and face fields are for ParaView, and its summary is all that is reported.
+        if has_stages or os.path.isfile(history):
+            with h5py.File(history, "r") as h:
+                if "revolutions" in h:  # a `wearsim run`'s history (a `wearsim dem` run has fields)
+                    rev = h["revolutions"]
+                    self.element_labels = [int(v) for v in rev["element_labels"][:]] if "element_labels" in rev else []
+                    self.element_wear = rev["element_wear_m3"][:] if "element_wear_m3" in rev else None
+                    self.column_wear = rev["column_wear_m3"][:]
         schemes = [r["scheme_name"] for r in self.stages]
         self.first_staged_rev = next(
             (int(r["first_revolution"]) for r in self.stages if r["scheme_name"] == "staged"), None)
@@ -187,13 +196,37 @@ def load_runs(root, calibration):
     for n in ("plain", "convex"):
         if n not in runs:
             fail(f"the study run '{os.path.join(root, n)}' is missing (cases/reference-study/run.sh)")
+    if calibration is None:  # the run on this machine, else the one kept in the repository
+        calibration = next((c for c in CALIBRATION_FOLDERS if os.path.isfile(os.path.join(c, "summary.csv"))),
+                           CALIBRATION_FOLDERS[0])
     cal = Run(calibration) if os.path.isfile(os.path.join(calibration, "summary.csv")) else None
     engines = {r.engine for r in runs.values()} | ({cal.engine} if cal else set())
     if len(engines) != 1:
         listing = ", ".join(f"{n}: {r.engine}" for n, r in runs.items())
         fail(f"the runs come from different engine versions ({listing}"
              f"{', calibration: ' + cal.engine if cal else ''}); re-run them with one")
+    alphas = {n: r.params.get("Archard coefficient") for n, r in runs.items()}
+    if len(set(alphas.values())) != 1:
+        fail("the runs use different Archard coefficients ("
+             + ", ".join(f"{n}: {a}" for n, a in alphas.items()) + "); every case includes one calibration.prm")
+    written = calibrated_alpha(cal.path) if cal else None
+    if written is not None and float(written) != float(alphas["plain"] or "nan"):
+        fail(f"the calibration '{cal.path}' calibrated alpha = {written} 1/Pa (its calibration.prm), but the "
+             f"study's runs use {alphas['plain']}; copy it to cases/reference-study/calibration.prm and re-run")
     return runs, missing, cal
+
+
+def calibrated_alpha(path):
+    """The Archard coefficient `wearsim calibrate` wrote into <path>/calibration.prm, or None."""
+    f = os.path.join(path, "calibration.prm")
+    if not os.path.isfile(f):
+        return None
+    with open(f) as fh:
+        for line in fh:
+            s = line.split("#", 1)[0].strip()
+            if s.startswith("set Archard coefficient") and "=" in s:
+                return s.split("=", 1)[1].strip()
+    fail(f"'{f}' sets no Archard coefficient")
 
 
 def element_rows(run, upto):
@@ -535,7 +568,7 @@ def report(runs, missing, cal, out):
 
 
 def main(argv):
-    args = {"--runs": "output/reference-study", "--out": "docs/results", "--calibration": "output/calibration-plain"}
+    args = {"--runs": "output/reference-study", "--out": "docs/results", "--calibration": None}
     check_only = "--check" in argv
     argv = [a for a in argv if a != "--check"]
     k = 0

@@ -1,7 +1,8 @@
 #!/bin/bash
 # docs/results/reference_study_report.py refuses what it must not report from (issue 32): a
-# study without its plain or convex run, and runs (or a calibration) of different engine
-# versions; and it accepts a complete set of one version (--check reads and checks the folders
+# study without its plain or convex run, runs (or a calibration) of different engine versions,
+# runs of different Archard coefficients, and a calibration whose calibrated coefficient is not
+# the one the runs used; and it accepts a complete set of one version (--check reads and checks the folders
 # without writing). The run folders are stand-ins with the files the check reads.
 set -uo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -56,4 +57,25 @@ run_folder "$tmp/d/convex" e1
 sed -i 2d "$tmp/d/convex/parameters.prm"
 check "$tmp/d" "$tmp/cal" && fail "accepted a run that names no engine version"
 grep -q "names no engine version" "$tmp/out" || fail "unclear refusal: $(cat "$tmp/out")"
+# Runs of different Archard coefficients (every case includes one calibration.prm).
+alpha() { printf '  set Archard coefficient = %s\n' "$2" >> "$1/parameters.prm"; }
+run_folder "$tmp/e/plain" e1
+run_folder "$tmp/e/convex" e1
+alpha "$tmp/e/plain" 7.25779635e-09
+alpha "$tmp/e/convex" 5e-09
+check "$tmp/e" "$tmp/cal" && fail "accepted runs of different Archard coefficients"
+grep -q "different Archard coefficients" "$tmp/out" && grep -q "convex: 5e-09" "$tmp/out" ||
+  fail "the refusal does not name the coefficients: $(cat "$tmp/out")"
+
+# A calibration that calibrated another coefficient than the runs use; the kept calibration
+# (no history.h5) that calibrated theirs.
+sed -i '$d' "$tmp/e/convex/parameters.prm"
+alpha "$tmp/e/convex" 7.25779635e-09
+printf 'subsection Wear law\n  set Archard coefficient = 7.3e-09\nend\n' > "$tmp/cal/calibration.prm"
+check "$tmp/e" "$tmp/cal" && fail "accepted a calibration whose coefficient the runs do not use"
+grep -q "calibrated alpha = 7.3e-09" "$tmp/out" || fail "unclear refusal: $(cat "$tmp/out")"
+printf 'subsection Wear law\n  set Archard coefficient = 7.25779635e-09\nend\n' > "$tmp/cal/calibration.prm"
+rm "$tmp/cal/history.h5" "$tmp/cal/stages.csv"
+check "$tmp/e" "$tmp/cal" || fail "refused the kept calibration of the runs' coefficient: $(cat "$tmp/out")"
+grep -q "calibration present" "$tmp/out" || fail "the kept calibration was not read: $(cat "$tmp/out")"
 echo "reference_study_report_test: passed"

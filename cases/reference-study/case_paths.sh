@@ -1,0 +1,20 @@
+# Where a case of the reference study's scripts lives (run.sh, save_state.sh). Sourced, not run.
+# A case is the name of a case file in cases/reference-study without .prm (its output folder
+# output/reference-study/<name>), or the path of another case file run by the study's engine,
+# such as cases/wear-out/convex.prm, whose output folder is the `set Directory` written in the
+# file itself and whose kept run is named after that folder.
+
+case_file() { # <case>: its case file
+  case "$1" in *.prm) echo "$1" ;; *) echo "cases/reference-study/$1.prm" ;; esac
+}
+
+out_dir() { # <case>: its output folder
+  case "$1" in
+    *.prm) sed -n 's/^[[:space:]]*set[[:space:]]\+Directory[[:space:]]*=[[:space:]]*\([^#[:space:]]*\).*/\1/p' "$1" | tail -n 1 ;;
+    *) echo "output/reference-study/$1" ;;
+  esac
+}
+
+kept_name() { # <case>: the name of its kept run in cases/reference-study/state
+  case "$1" in *.prm) basename "$(out_dir "$1")" ;; *) echo "$1" ;; esac
+}
