@@ -171,6 +171,12 @@ def at(n, cum, t):
     return float(np.interp(t, np.concatenate([[0.0], n]), np.concatenate([[0.0], cum])))
 
 
+def amplifications(run, n):
+    """The amplifications of the first n staged stages, as text."""
+    a = [r["amplification"] for r in run.stages if r["scheme_name"] == "staged"][:n]
+    return ", ".join(f"{x:g}" if x == 1 else f"{x:.3f}" for x in a) or "no staged stage"
+
+
 def interval(values):
     """Mean and 95 % half-width (Student t) of a list."""
     v = np.asarray(values, float)
@@ -183,16 +189,25 @@ def fmt(x, digits=2):
     return "n/a" if x is None or (isinstance(x, float) and math.isnan(x)) else f"{x:.{digits}f}"
 
 
+def has_revolution(path):
+    """Whether the run folder's summary.csv holds a revolution (a header and a row)."""
+    f = os.path.join(path, "summary.csv")
+    if not os.path.isfile(f):
+        return False
+    with open(f) as fh:
+        return sum(1 for line in fh if line.strip()) > 1
+
+
 def load_runs(root, calibration):
     names = ["plain", "convex", "plain-seed2", "plain-seed3", "convex-seed2", "convex-seed3",
              "plain-s4", "convex-s4", "plain-s2", "convex-s2", "plain-reference", "convex-reference"]
     runs, missing = {}, []
     for n in names:
         p = os.path.join(root, n)
-        if os.path.isfile(os.path.join(p, "summary.csv")):
+        if has_revolution(p):
             runs[n] = Run(p)
-        else:
-            missing.append(n)
+        else:  # not started, or started and no revolution done yet
+            missing.append(n + (" (started, no revolution done yet)" if os.path.isdir(p) else ""))
     for n in ("plain", "convex"):
         if n not in runs:
             fail(f"the study run '{os.path.join(root, n)}' is missing (cases/reference-study/run.sh)")
@@ -512,18 +527,17 @@ def report(runs, missing, cal, out):
 
     # Seeds
     w.append("## Spread over insertion seeds (2 revolutions after steady state, 56 h)\n")
-    seeds = {"plain": [P] + [runs[n] for n in ("plain-seed2", "plain-seed3") if n in runs],
-             "convex": [C] + [runs[n] for n in ("convex-seed2", "convex-seed3") if n in runs]}
-    vals = {}
-    for k, rs in seeds.items():
-        vals[k] = [(r.params.get("Seed", "?"), at(*r.cumulative(), T56)) for r in rs]
-    w.append("| sample | " + " | ".join(f"seed {s}" for s, _ in vals["plain"]) + " | mean +- 95 % |")
-    w.append("|---|" + "---|" * (len(vals["plain"]) + 1))
+    seed_runs = {k: [runs.get(k + t) for t in ("", "-seed2", "-seed3")] for k in ("plain", "convex")}
+    vals = {k: [at(*r.cumulative(), T56) if r else None for r in rs] for k, rs in seed_runs.items()}
+    w.append("| sample | seed 1 | seed 2 | seed 3 | mean +- 95 % |")
+    w.append("|---|---|---|---|---|")
     for k in ("plain", "convex"):
-        got = [v for _, v in vals[k] if v is not None]
+        got = [v for v in vals[k] if v is not None]
         m, h = interval(got) if got else (float("nan"), float("nan"))
-        w.append(f"| {k} | " + " | ".join(fmt(v) for _, v in vals[k]) + f" | {fmt(m)} +- {fmt(h)} |")
-    pairs = [(p, c) for (_, p), (_, c) in zip(vals["plain"], vals["convex"]) if p and c]
+        cells = ["not run" if r is None else ("not reached" if v is None else fmt(v))
+                 for r, v in zip(seed_runs[k], vals[k])]
+        w.append(f"| {k} | " + " | ".join(cells) + f" | {fmt(m)} +- {fmt(h)} (n = {len(got)}) |")
+    pairs = [(p, c) for p, c in zip(vals["plain"], vals["convex"]) if p and c]
     if pairs:
         m, h = interval([c / p for p, c in pairs])
         w.append(f"\nconvex / plain per seed: {', '.join(f'{c / p:.3f}' for p, c in pairs)}; mean {m:.3f} +- {fmt(h, 3)} "
@@ -555,15 +569,19 @@ def report(runs, missing, cal, out):
 
     # Particle size
     w.append("## Trend with particle size: convex / plain at 56 h\n")
-    w.append("| s | plain [mm^3] | convex [mm^3] | convex / plain |")
-    w.append("|---|---|---|---|")
+    w.append("| s | plain [mm^3] | convex [mm^3] | convex / plain | geometry moved at |")
+    w.append("|---|---|---|---|---|")
     for s, (pn, cn) in (("4", ("plain-s4", "convex-s4")), ("3", ("plain", "convex")), ("2", ("plain-s2", "convex-s2"))):
         if pn in runs and cn in runs:
             p, c = at(*runs[pn].cumulative(), T56), at(*runs[cn].cumulative(), T56)
-            w.append(f"| {s} | {fmt(p)} | {fmt(c)} | {fmt(c / p, 3) if p and c else 'not reached'} |")
+            notes = "; ".join(f"{n}: {amplifications(runs[n], 2)}" for n in (pn, cn))
+            w.append(f"| {s} | {fmt(p)} | {fmt(c)} | {fmt(c / p, 3) if p and c else 'not reached'} | {notes} |")
         else:
-            w.append(f"| {s} | not run | not run | |")
-    w.append("")
+            w.append(f"| {s} | not run | not run | | |")
+    w.append("\nThe wear compared is the DEM's own in each revolution. The geometry it moves is that "
+             "wear times the stage's amplification: 1, unless a stage would recede a vertex by more than "
+             "`Coupling/Maximum depth fraction` edge lengths and the case lets it run at less "
+             "(`Coupling/Adaptive amplification`, `stages.csv`).\n")
     return "\n".join(w)
 
 
