@@ -26,13 +26,11 @@ pool_init "reference study" "${JOBS:-$(nproc)}" || exit 2
 cases=("$@")
 [ ${#cases[@]} -gt 0 ] || cases=(plain convex)
 source cases/reference-study/case_paths.sh
-root=output/reference-study
 for c in "${cases[@]}"; do
   [ -f "$(case_file "$c")" ] || { echo "run.sh: no case file $(case_file "$c")" >&2; exit 2; }
   [ -n "$(out_dir "$c")" ] || { echo "run.sh: $c sets no Output/Directory of its own" >&2; exit 2; }
 done
 [ -x "$wearsim" ] || { echo "run.sh: no wearsim binary at '$wearsim' (WEARSIM)" >&2; exit 2; }
-mkdir -p "$root"
 echo "reference study: $("$wearsim" --version), ${#cases[@]} case(s), $POOL_JOBS at once"
 
 restore_kept() { # <case>: the kept run (save_state.sh) into an output folder that holds none

@@ -48,6 +48,19 @@ def fail(message):
     sys.exit(f"{PROG}: {message}")
 
 
+def prm_settings(path):
+    """The `set name = value` lines of a parameter file, the first of each name (subsections
+    are not told apart: the names the report reads are unique in the resolved parameters)."""
+    out = {}
+    with open(path) as f:
+        for line in f:
+            s = line.split("#", 1)[0].strip()
+            if s.startswith("set ") and "=" in s:
+                k, v = s[4:].split("=", 1)
+                out.setdefault(k.strip(), v.strip())
+    return out
+
+
 class Run:
     """One run folder: its revolutions, stages, engine version and surfaces."""
 
@@ -66,7 +79,7 @@ class Run:
         self.stages = self._csv("stages.csv") if has_stages else []
         if not self.rows:
             fail(f"'{path}/summary.csv' has no revolution yet")
-        self.params = self._parameters()
+        self.params = prm_settings(os.path.join(path, "parameters.prm"))
         self.element_labels, self.element_wear, self.column_wear = [], None, None
         history = os.path.join(path, "history.h5")
         # A kept `wearsim dem` run (the calibration) has no history.h5: its per-revolution
@@ -98,15 +111,6 @@ class Run:
                     pass
         return rows
 
-    def _parameters(self):
-        out = {}
-        with open(os.path.join(self.path, "parameters.prm")) as f:
-            for line in f:
-                s = line.split("#", 1)[0].strip()
-                if s.startswith("set ") and "=" in s:
-                    k, v = s[4:].split("=", 1)
-                    out.setdefault(k.strip(), v.strip())
-        return out
 
     def column(self, name):
         return np.array([r[name] for r in self.rows], dtype=float)
@@ -236,12 +240,10 @@ def calibrated_alpha(path):
     f = os.path.join(path, "calibration.prm")
     if not os.path.isfile(f):
         return None
-    with open(f) as fh:
-        for line in fh:
-            s = line.split("#", 1)[0].strip()
-            if s.startswith("set Archard coefficient") and "=" in s:
-                return s.split("=", 1)[1].strip()
-    fail(f"'{f}' sets no Archard coefficient")
+    alpha = prm_settings(f).get("Archard coefficient")
+    if alpha is None:
+        fail(f"'{f}' sets no Archard coefficient")
+    return alpha
 
 
 def element_rows(run, upto):

@@ -2,8 +2,8 @@
 # docs/results/reference_study_report.py refuses what it must not report from (issue 32): a
 # study without its plain or convex run, runs (or a calibration) of different engine versions,
 # runs of different Archard coefficients, and a calibration whose calibrated coefficient is not
-# the one the runs used; and it accepts a complete set of one version (--check reads and checks the folders
-# without writing). The run folders are stand-ins with the files the check reads.
+# the one the runs used; and it accepts a complete set of one version (--check reads and checks
+# the folders without writing). The run folders are stand-ins with the files the check reads.
 set -uo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 report="$root/docs/results/reference_study_report.py"
