@@ -12,7 +12,8 @@
 #   pool_stop                     sends SIGTERM to every run still going and waits for them
 #                                 (for a trap: runs that checkpoint on SIGTERM stop cleanly)
 #
-# A run is reported as it ends: "<label>: <name> done (<seconds since pool_init> s)", or on
+# A run is reported as it ends: "<label>: <name> done (<its own seconds> s, <seconds since
+# pool_init> s since the pool started)", or on
 # standard error "<label>: <name> failed with status <n> (<log>)".
 
 pool_init() { # <label> <jobs>
@@ -22,22 +23,24 @@ pool_init() { # <label> <jobs>
     { echo "$POOL_LABEL: JOBS='$POOL_JOBS' is not a positive integer" >&2; return 2; }
   POOL_START=$(date +%s)
   POOL_FAILED=()
-  declare -gA POOL_NAME=() POOL_LOG=()
+  declare -gA POOL_NAME=() POOL_LOG=() POOL_BEGAN=()
 }
 
 pool_reap_() { # <pid>: collects one finished run
   local pid=$1 rc=0
-  local name=${POOL_NAME[$pid]} log=${POOL_LOG[$pid]}
+  local name=${POOL_NAME[$pid]} log=${POOL_LOG[$pid]} began=${POOL_BEGAN[$pid]}
   wait "$pid" || rc=$?
   if [ $rc -eq 0 ]; then
-    echo "$POOL_LABEL: $name done ($(( $(date +%s) - POOL_START )) s)"
+    local now
+    now=$(date +%s)
+    echo "$POOL_LABEL: $name done ($((now - began)) s, $((now - POOL_START)) s since the pool started)"
   else
     local why
     why=$(grep -m1 -i 'error' "$log" 2>/dev/null || tail -n1 "$log" 2>/dev/null || true)
     POOL_FAILED+=("$name: ${why:-exit status $rc} ($log)")
     echo "$POOL_LABEL: $name failed with status $rc ($log)" >&2
   fi
-  unset "POOL_NAME[$pid]" "POOL_LOG[$pid]"
+  unset "POOL_NAME[$pid]" "POOL_LOG[$pid]" "POOL_BEGAN[$pid]"
 }
 
 pool_drain_() { # <n>: collects runs as they end until at most n still run
@@ -55,6 +58,7 @@ pool_run() { # <name> <log> <command> [argument ...]
   "$@" &
   POOL_NAME[$!]=$name
   POOL_LOG[$!]=$log
+  POOL_BEGAN[$!]=$(date +%s)
 }
 
 pool_wait() {
@@ -68,4 +72,5 @@ pool_stop() {
   for pid in "${!POOL_NAME[@]}"; do wait "$pid" 2>/dev/null || true; done
   POOL_NAME=()
   POOL_LOG=()
+  POOL_BEGAN=()
 }

@@ -543,7 +543,7 @@ def report(runs, missing, cal, out):
     if pairs:
         m, h = interval([c / p for p, c in pairs])
         w.append(f"\nconvex / plain per seed: {', '.join(f'{c / p:.3f}' for p, c in pairs)}; mean {m:.3f} +- {fmt(h, 3)} "
-                 f"(95 %, {len(pairs)} seeds).\n")
+                 f"(95 %, {len(pairs)} seed{'s' if len(pairs) > 1 else ''}).\n")
 
     # The node-moving method
     w.append("## The node-moving method on the same cases\n")

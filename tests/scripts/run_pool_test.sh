@@ -38,6 +38,19 @@ rc=0
 [[ "${POOL_FAILED[0]}" == "run4: error: run run4 failed on purpose ($tmp/run4.log)" ]] ||
   fail "failure listed as '${POOL_FAILED[0]}'"
 
+# One at a time: the second run's own time leaves out the first's, the pool's time does not.
+pool_init test 1 || fail "pool_init refused 1 job"
+{
+  pool_run first "$tmp/first.log" sleep 1
+  pool_run second "$tmp/second.log" sleep 1
+  pool_wait
+} > "$tmp/out" 2>&1
+line=$(grep 'second done' "$tmp/out") || fail "second run not reported: $(cat "$tmp/out")"
+[[ "$line" =~ done\ \(([0-9]+)\ s,\ ([0-9]+)\ s\ since\ the\ pool\ started\) ]] ||
+  fail "report '$line' does not give the run's own and the pool's seconds"
+[ "${BASH_REMATCH[1]}" -lt "${BASH_REMATCH[2]}" ] ||
+  fail "'$line': the run's own time includes the run before it"
+
 pool_init test 1 || fail "pool_init refused 1 job"
 pool_run slow "$tmp/slow.log" sleep 30
 t0=$(date +%s)
