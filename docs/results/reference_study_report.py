@@ -111,7 +111,6 @@ class Run:
                     pass
         return rows
 
-
     def column(self, name):
         return np.array([r[name] for r in self.rows], dtype=float)
 
