@@ -1,4 +1,5 @@
-# Where a case of the reference study's scripts lives (run.sh, save_state.sh). Sourced, not run.
+# Where a case of the reference study's scripts lives (run.sh, save_state.sh, restore.sh), and
+# how its kept run comes back. Sourced, not run.
 # A case is the name of a case file in cases/reference-study without .prm (its output folder
 # output/reference-study/<name>), or the path of another case file run by the study's engine,
 # such as cases/wear-out/convex.prm, whose output folder is the `set Directory` written in the
@@ -17,4 +18,14 @@ out_dir() { # <case>: its output folder
 
 kept_name() { # <case>: the name of its kept run in cases/reference-study/state
   case "$1" in *.prm) basename "$(out_dir "$1")" ;; *) echo "$1" ;; esac
+}
+
+restore_kept() { # <case>: its kept run (save_state.sh) into its output folder, if that holds none;
+  # prints what the kept run holds when it unpacked one, nothing otherwise; fails when it cannot
+  local kept out
+  kept="cases/reference-study/state/$(kept_name "$1").tar.xz" out=$(out_dir "$1")
+  [ -f "$kept" ] && [ ! -f "$out/checkpoint.h5" ] || return 0
+  mkdir -p "$out"
+  tar -C "$out" -xJf "$kept" || { echo "cannot unpack $kept into $out" >&2; return 2; }
+  cat "${kept%.tar.xz}.txt" 2>/dev/null || echo "$kept"
 }

@@ -33,16 +33,6 @@ done
 [ -x "$wearsim" ] || { echo "run.sh: no wearsim binary at '$wearsim' (WEARSIM)" >&2; exit 2; }
 echo "reference study: $("$wearsim" --version), ${#cases[@]} case(s), $POOL_JOBS at once"
 
-restore_kept() { # <case>: the kept run (save_state.sh) into an output folder that holds none
-  local kept out
-  kept="cases/reference-study/state/$(kept_name "$1").tar.xz" out=$(out_dir "$1")
-  [ -f "$kept" ] && [ ! -f "$out/checkpoint.h5" ] || return 0
-  mkdir -p "$out"
-  tar -C "$out" -xJf "$kept" ||
-    { echo "run.sh: cannot unpack $kept into $out" >&2; exit 2; }
-  echo "reference study: continues from the kept run: $(cat "${kept%.tar.xz}.txt" 2>/dev/null)"
-}
-
 run_one() { # <case>: start or continue one case, its log beside its folder
   local prm out mode=--overwrite
   prm=$(case_file "$1") out=$(out_dir "$1")
@@ -59,7 +49,8 @@ stop_all() {
 }
 trap stop_all INT TERM
 for c in "${cases[@]}"; do
-  restore_kept "$c"
+  restored=$(restore_kept "$c") || exit 2
+  [ -z "$restored" ] || echo "reference study: continues from the kept run: $restored"
   pool_run "$c" "$(out_dir "$c").log" run_one "$c"
   echo "reference study: $c started $(date -u +%TZ)"
 done
