@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Runs (or continues) cases of the reference study, as many at once as the machine has cores,
-# one DEM thread each (DEM/Threads = 1 in the study's case files; the wear-out and stress cases
-# use 2 threads and run with JOBS=1). A case whose folder holds a
-# checkpoint continues with --resume (a finished run returns at once), otherwise it starts.
+# one DEM thread each (DEM/Threads = 1 in plain, convex and the wear-out and stress cases; the
+# seeds and the other particle sizes use 2 threads and run with JOBS=1). A case whose folder
+# holds a checkpoint continues with --resume (a finished run returns at once), otherwise it
+# starts.
 # Stop everything with Ctrl-C or `kill -TERM <pid of this script>`: each run writes a
 # checkpoint and exits; the next call continues it.
 #

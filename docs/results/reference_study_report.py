@@ -586,8 +586,10 @@ def report(runs, missing, cal, out):
     return "\n".join(w)
 
 
-def main(argv):
-    args = {"--runs": "output/reference-study", "--out": "docs/results", "--calibration": None}
+def parse_args(argv, defaults, usage):
+    """The `--name value` options named in defaults (over their defaults) and whether `--check`
+    was given; anything else stops with the usage line."""
+    args = dict(defaults)
     check_only = "--check" in argv
     argv = [a for a in argv if a != "--check"]
     k = 0
@@ -596,7 +598,13 @@ def main(argv):
             args[argv[k]] = argv[k + 1]
             k += 2
         else:
-            fail(f"unexpected argument '{argv[k]}'; {__doc__.splitlines()[2]}")
+            fail(f"unexpected argument '{argv[k]}'; {usage}")
+    return args, check_only
+
+
+def main(argv):
+    args, check_only = parse_args(argv, {"--runs": "output/reference-study", "--out": "docs/results",
+                                         "--calibration": None}, __doc__.splitlines()[2])
     runs, missing, cal = load_runs(args["--runs"], args["--calibration"])
     if check_only:
         print(f"{PROG}: {len(runs)} runs ({', '.join(runs)}), engine {runs['plain'].engine}, "
