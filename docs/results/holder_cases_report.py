@@ -30,27 +30,25 @@ import matplotlib
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from reference_study_report import Run, fail, fmt, parse_args, prm_settings  # noqa: E402
+from reference_study_report import (HOURS_PER_REV, Run, fail, fmt, has_revolution, parse_args,  # noqa: E402
+                                    prm_settings, write_atomic)
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 PROG = os.path.basename(sys.argv[0])
-HOURS_PER_REV = 28.0
 NAMES = {"stress-plain": "cases/stress/plain.prm", "stress-convex": "cases/stress/convex.prm",
          "wear-out-convex": "cases/wear-out/convex.prm"}
 
 
 def staged(run):
-    """The run's staged stages, with the hours each stands for and the cumulative hours."""
+    """The run's staged stages, each with the laboratory hours the stages up to it stand for."""
     rows, hours = [], 0.0
     for r in run.stages:
         if r["scheme_name"] != "staged":
             continue
-        revs = r["last_revolution"] - r["first_revolution"] + 1
-        h = revs * r["amplification"] * HOURS_PER_REV
-        hours += h
-        rows.append(dict(r, hours=h, cumulative_hours=hours))
+        hours += (r["last_revolution"] - r["first_revolution"] + 1) * r["amplification"] * HOURS_PER_REV
+        rows.append(dict(r, cumulative_hours=hours))
     return rows
 
 
@@ -67,16 +65,13 @@ def load(root, engine):
     runs, missing = {}, []
     for name in NAMES:
         path = os.path.join(root, name)
-        if os.path.isfile(os.path.join(path, "stages.csv")) and os.path.isfile(os.path.join(path, "summary.csv")):
-            with open(os.path.join(path, "summary.csv")) as f:
-                if sum(1 for line in f if line.strip()) > 1:
-                    runs[name] = Run(path)
-                    continue
-        missing.append(name + (" (started, no revolution done yet)" if os.path.isdir(path) else ""))
+        if has_revolution(path) and os.path.isfile(os.path.join(path, "stages.csv")):
+            runs[name] = Run(path)
+        else:
+            missing.append(name + (" (started, no revolution done yet)" if os.path.isdir(path) else ""))
     if not runs:
         fail(f"none of the runs {', '.join(NAMES)} is in '{root}' "
-             "(bash cases/reference-study/run.sh cases/stress/plain.prm cases/stress/convex.prm "
-             "cases/wear-out/convex.prm)")
+             f"(bash cases/reference-study/run.sh {' '.join(NAMES.values())})")
     odd = {n: r.engine for n, r in runs.items() if r.engine != engine}
     if odd:
         fail("runs of another engine version than " + engine + " ("
@@ -245,10 +240,7 @@ def main(argv):
     out = args["--out"]
     os.makedirs(out, exist_ok=True)
     plot(runs, out)
-    tmp = os.path.join(out, ".holder-cases.md.tmp")
-    with open(tmp, "w") as f:
-        f.write(report(runs, missing, engine))
-    os.replace(tmp, os.path.join(out, "holder-cases.md"))
+    write_atomic(os.path.join(out, "holder-cases.md"), report(runs, missing, engine))
     print(f"{PROG}: {os.path.join(out, 'holder-cases.md')} from {len(runs)} runs, engine {engine}")
 
 

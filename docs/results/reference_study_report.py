@@ -602,6 +602,14 @@ def parse_args(argv, defaults, usage):
     return args, check_only
 
 
+def write_atomic(path, text):
+    """Writes text to path through a temporary file beside it, so a reader never sees half."""
+    tmp = os.path.join(os.path.dirname(path), "." + os.path.basename(path) + ".tmp")
+    with open(tmp, "w") as f:
+        f.write(text)
+    os.replace(tmp, path)
+
+
 def main(argv):
     args, check_only = parse_args(argv, {"--runs": "output/reference-study", "--out": "docs/results",
                                          "--calibration": None}, __doc__.splitlines()[2])
@@ -619,10 +627,7 @@ def main(argv):
         plot_map(runs["convex"], n, out)
     plot_flow(runs, out)
     text = report(runs, missing, cal, out)
-    tmp = os.path.join(out, ".reference-study.md.tmp")
-    with open(tmp, "w") as f:
-        f.write(text)
-    os.replace(tmp, os.path.join(out, "reference-study.md"))
+    write_atomic(os.path.join(out, "reference-study.md"), text)
     print(f"{PROG}: {os.path.join(out, 'reference-study.md')} from {len(runs)} runs, engine {runs['plain'].engine}")
 
 
