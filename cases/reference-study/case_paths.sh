@@ -27,5 +27,10 @@ restore_kept() { # <case>: its kept run (save_state.sh) into its output folder, 
   [ -f "$kept" ] && [ ! -f "$out/checkpoint.h5" ] || return 0
   mkdir -p "$out"
   tar -C "$out" -xJf "$kept" || { echo "cannot unpack $kept into $out" >&2; return 2; }
+  # its log goes back beside the folder, where run.sh appends to it, unless one is there
+  if [ -f "$out/run.log" ]; then
+    [ -f "$out.log" ] || mv "$out/run.log" "$out.log"
+    rm -f "$out/run.log"
+  fi
   cat "${kept%.tar.xz}.txt" 2>/dev/null || echo "$kept"
 }

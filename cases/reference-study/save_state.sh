@@ -20,8 +20,9 @@
 #              `calibration` keeps output/calibration-plain's parameters.prm, summary.csv and
 #              calibration.prm in state/calibration-plain (the report's calibration; its
 #              history.h5 of particles and face fields is left out)
-#        BUDGET_MB=<n>: refuse when the kept archives would exceed n MB in all (default 160:
-#        the study's runs, 110 MB, and the wear-out and stress runs, about 10 MB each),
+#        BUDGET_MB=<n>: refuse when the kept archives would exceed n MB in all (default 200:
+#        the study's runs, 110 MB, the wear-out and stress runs, about 10 MB each, and
+#        the two s = 2 runs, about 40 MB each),
 #        since every save adds its archives to the repository's history.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -56,6 +57,8 @@ for i in "${!args[@]}"; do
   for f in checkpoint.h5 parameters.prm summary.csv stages.csv history.h5; do
     [ -f "$out/$f" ] && cp "$out/$f" "$s/"
   done
+  # the log run.sh writes beside the folder: how the run ended, for the reports
+  if [ -f "$out.log" ]; then cp "$out.log" "$s/run.log"; elif [ -f "$out/run.log" ]; then cp "$out/run.log" "$s/"; fi
   surfaces=("$out"/surface/stage_*.h5)
   [ -f "${surfaces[0]}" ] || surfaces=()
   for v in "${surfaces[@]}" "$out"/volume/stage_*.h5; do
@@ -84,7 +87,7 @@ for a in "$kept_root"/*.tar.xz; do
   n=$(basename "$a" .tar.xz)
   [[ " ${cases[*]} " == *" $n "* ]] || others_kb=$((others_kb + $(du -k "$a" | cut -f1)))
 done
-budget=${BUDGET_MB:-160}
+budget=${BUDGET_MB:-200}
 if [ $(((new_kb + others_kb) / 1024)) -gt "$budget" ]; then
   echo "save_state.sh: the kept archives would be $(((new_kb + others_kb) / 1024)) MB, above BUDGET_MB=$budget" >&2
   exit 1

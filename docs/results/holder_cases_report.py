@@ -14,7 +14,7 @@ Usage: /usr/bin/python3 docs/results/holder_cases_report.py [--root DIR] [--out 
 Each run's stages.csv and parameters.prm are read. A run missing is listed as not run; a
 run of another engine version, or one that names none, is refused, as is a root with none
 of the three runs. A run still in progress is reported as far as it got (its stages done
-of those planned).
+of those planned), and how it ended is read from the log run.sh writes beside its folder.
 
 A staged stage stands for (revolutions) x (amplification) x 28 h of the laboratory test
 (docs/wear-tester.md); `dem-only` stages wear nothing and stand for no hours. The stage's
@@ -123,15 +123,39 @@ def plot(runs, out):
     os.replace(tmp, os.path.join(out, "holder_cases.png"))
 
 
+def ending(run):
+    """How the run ended, as the last call of run.sh wrote it in the log beside the run folder
+    (`<folder>.log`; save_state.sh keeps it, restore.sh puts it back): finished, stopped by
+    SIGTERM with a checkpoint to continue from, or stopped by an error, named with the stage
+    it stopped in (the one after the last in stages.csv) and the error's first clause."""
+    if planned_staged(run) == len(staged(run)):
+        return "finished"
+    log = os.path.normpath(run.path) + ".log"
+    if not os.path.isfile(log):
+        return "in progress or stopped (no log beside the run folder)"
+    with open(log, errors="replace") as f:
+        lines = [line.strip() for line in f]
+    starts = [k for k, line in enumerate(lines) if line.startswith("=== ")]
+    last = lines[starts[-1] if starts else 0:]
+    stage = int(run.stages[-1]["stage"]) + 1 if run.stages else 1
+    for line in reversed(last):
+        if line.startswith("stopped by SIGTERM in stage"):
+            return line.split(" (")[0] + ", continued from its checkpoint by run.sh"
+        if "error:" in line:
+            what = line.split("error:", 1)[1].split("; ")[0].strip()
+            return f"stopped by an error in stage {stage}: {what}"
+    return "in progress, or killed without a message"
+
+
 def run_table(runs, missing):
-    w = ["| run | case file | schedule | staged stages done | hours they stand for | wall time [h] |",
-         "|---|---|---|---|---|---|"]
+    w = ["| run | case file | schedule | staged stages done | hours they stand for | wall time [h] | how it ended |",
+         "|---|---|---|---|---|---|---|"]
     for name, r in runs.items():
         rows = staged(r)
         plan = planned_staged(r)
         done = f"{len(rows)} of {plan}" if plan else str(len(rows))
         hours = rows[-1]["cumulative_hours"] if rows else 0.0
-        w.append(f"| {name} | `{r.case}` | {r.planned} | {done} | {hours:.0f} | {r.wall_hours():.1f} |")
+        w.append(f"| {name} | `{r.case}` | {r.planned} | {done} | {hours:.0f} | {r.wall_hours():.1f} | {ending(r)} |")
     w.append("")
     if missing:
         w.append("**Not run** with this engine: " + ", ".join(missing) + ".\n")
@@ -205,7 +229,55 @@ def wear_out_section(runs):
         last = rows[-1]
         w.append(f"After {len(rows)} staged stages ({last['cumulative_hours']:.0f} h of the laboratory test) "
                  f"the sample has lost {last['cumulative_applied_m3'] * 1e9:.1f} mm^3; the deepest recession of "
-                 f"the last stage was {last['max_depth_m'] * 1e3:.3f} mm.\n")
+                 f"the last stage was {last['max_depth_m'] * 1e3:.3f} mm. The run: {ending(W)}.\n")
+    w += heights_section(W)
+    return w
+
+
+def last_surface(run):
+    """The highest stage whose surface the run folder holds (save_state.sh keeps the first and
+    the last), or None."""
+    d = os.path.join(run.path, "surface")
+    stages = [int(f[6:10]) for f in os.listdir(d) if f.startswith("stage_") and f.endswith(".h5")] \
+        if os.path.isdir(d) else []
+    return max(stages) if stages and 0 in stages and max(stages) > 0 else None
+
+
+def element_heights(run, stage):
+    """Each element's (label ij >= 11, C<ij>, i its column along the flow) highest point above the
+    unworn base top [mm] on the stage's surface; the base top is where the elements stand on the
+    unworn surface (their lowest point there)."""
+    def tops(n):
+        pts, tri, lab, _, _ = run.surface(n)
+        z = pts[tri][:, :, 2].max(axis=1)
+        low = pts[tri][:, :, 2].min(axis=1)
+        return ({int(k): float(z[lab == k].max()) for k in np.unique(lab) if k >= 11},
+                float(low[lab >= 11].min()) if np.any(lab >= 11) else float("nan"))
+    unworn, base_top = tops(0)
+    worn, _ = tops(stage)
+    return ({k: (unworn[k] - base_top) * 1e3 for k in unworn},
+            {k: (worn[k] - base_top) * 1e3 for k in worn if k in unworn})
+
+
+def heights_section(run):
+    """A grid of the elements' heights (columns along the flow, rows across it), unworn and worn."""
+    stage = last_surface(run)
+    if stage is None:
+        return []
+    unworn, worn = element_heights(run, stage)
+    if not worn:
+        return []
+    cols = sorted({k // 10 for k in worn})
+    rows = sorted({k % 10 for k in worn})
+    lo, hi = min(unworn.values()), max(unworn.values())
+    w = [f"Element heights after stage {stage}: each element's highest point above the unworn base top [mm] "
+         f"(unworn {lo:.2f}{f' to {hi:.2f}' if hi - lo >= 0.005 else ''}; below zero the element is gone and "
+         "the base around it has receded). Column 1 meets the flow first; row 1 is at the inner radius.\n",
+         "| row | " + " | ".join(f"column {c}" for c in cols) + " |", "|" + "---|" * (len(cols) + 1)]
+    for r in rows:
+        w.append(f"| {r} | " + " | ".join(f"C{c}{r} {worn[10 * c + r]:.2f}" if 10 * c + r in worn else ""
+                                         for c in cols) + " |")
+    w.append("")
     return w
 
 

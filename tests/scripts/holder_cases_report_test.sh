@@ -4,7 +4,9 @@
 # another engine version than the study's and a run that names none. Its arithmetic is checked
 # on stand-in stages with known figures: two staged stages at 10x stand for 560 h, and a law
 # that scales the convex sample's wear by 1.2 and the plain one's by 1 turns a DEM ratio of
-# 0.5 into 0.6 (10 percentage points narrower). The run folders are stand-ins with the files
+# 0.5 into 0.6 (10 percentage points narrower); a run short of its schedule is told as stopped by
+# an error or by SIGTERM from the last part of its log, and an element's height is its highest
+# point above the unworn base top. The run folders are stand-ins with the files
 # the report reads.
 set -uo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -55,6 +57,45 @@ grep -q "amplification \*\*0.600\*\*" "$md" || fail "the applied convex/plain is
 grep -q "narrows the convex sample's advantage by 10.0 percentage points" "$md" ||
   fail "the law's effect is not 10.0 points: $(grep '^Over' "$md")"
 grep -q "1 + 1 (sigma_vM / 1e5 Pa)" "$md" || fail "the law is not named: $(grep '^The' "$md")"
+
+# How a run short of its schedule ended, from the last call's part of the log beside its folder.
+run_folder "$tmp/e/wear-out-convex" e1 5e-8 1.0
+sed -i 's/2 staged/5 staged/' "$tmp/e/wear-out-convex/parameters.prm"
+wlog="$tmp/e/wear-out-convex.log"
+check "$tmp/e" --out "$tmp/e/report" || fail "refused a run short of its schedule: $(cat "$tmp/out")"
+grep -q "| 2 of 5 | 560 | .* | in progress or stopped (no log beside the run folder) |" "$tmp/e/report/holder-cases.md" ||
+  fail "a run with no log is not told as such: $(grep '^| wear-out' "$tmp/e/report/holder-cases.md")"
+printf '=== t0 wearsim run --overwrite c.prm\nstopped by SIGTERM in stage 2 of 6 (revolution 2, t = 1 s); checkpoint written\n' > "$wlog"
+printf '=== t1 wearsim run --resume c.prm\nwearsim run: error: wear stage: the worn surface folds at face 7 (label C54); reduce it\n' >> "$wlog"
+check "$tmp/e" --out "$tmp/e/report" || fail "refused a run that stopped by an error: $(cat "$tmp/out")"
+grep -q "| stopped by an error in stage 4: wear stage: the worn surface folds at face 7 (label C54) |" \
+  "$tmp/e/report/holder-cases.md" || fail "the error is not reported: $(grep '^| wear-out' "$tmp/e/report/holder-cases.md")"
+printf '=== t2 wearsim run --resume c.prm\nstopped by SIGTERM in stage 4 of 6 (revolution 4, t = 2 s); checkpoint written\n' >> "$wlog"
+check "$tmp/e" --out "$tmp/e/report" || fail "refused a stopped run: $(cat "$tmp/out")"
+grep -q "| stopped by SIGTERM in stage 4 of 6, continued from its checkpoint by run.sh |" \
+  "$tmp/e/report/holder-cases.md" || fail "an earlier call's error outlives a later stop: $(grep '^| wear-out' "$tmp/e/report/holder-cases.md")"
+
+# Element heights from the first and last surfaces: two 6 mm elements on a base top at z = 10 mm
+# worn to tops at 12.5 mm (C11) and 9.25 mm (C21, gone below the base top).
+mkdir -p "$tmp/e/wear-out-convex/surface"
+/usr/bin/python3 - "$tmp/e/wear-out-convex/surface" <<'PY' || fail "cannot write stand-in surfaces"
+import sys, h5py, numpy as np
+def surface(path, top11, top21):  # C21's feet recede with its top, 1 mm below it
+    foot21 = min(10, top21 - 1)
+    pts = np.array([[0, 0, 10], [1, 0, 10], [0, 1, top11], [5, 0, foot21], [6, 0, foot21], [5, 1, top21]],
+                   float) * 1e-3
+    tri = np.array([[0, 1, 2], [3, 4, 5]])
+    with h5py.File(path, "w") as h:
+        h["points"], h["triangles"] = pts, tri
+        h["cell/label"] = np.array([[11], [21]])
+        h["cell/cumulative_removed_volume"] = h["cell/wear_depth"] = np.zeros((2, 1))
+surface(sys.argv[1] + "/stage_0000.h5", 16, 16)
+surface(sys.argv[1] + "/stage_0002.h5", 12.5, 9.25)
+PY
+check "$tmp/e" --out "$tmp/e/report" || fail "refused a run with surfaces: $(cat "$tmp/out")"
+grep -q "Element heights after stage 2: .*(unworn 6.00;" "$tmp/e/report/holder-cases.md" &&
+  grep -q "^| 1 | C11 2.50 | C21 -0.75 |" "$tmp/e/report/holder-cases.md" ||
+  fail "the element heights are not 2.50 and -0.75 mm: $(grep -A4 'Element heights' "$tmp/e/report/holder-cases.md")"
 
 # A run of another engine, named in the refusal.
 run_folder "$tmp/b/stress-plain" e1 1e-7 1.0
