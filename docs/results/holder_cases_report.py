@@ -260,7 +260,7 @@ def element_heights(run, stage):
 
 
 def heights_section(run):
-    """A grid of the elements' heights (columns along the flow, rows across it), unworn and worn."""
+    """A grid of the elements' heights on the last kept surface (columns along the flow, rows across it)."""
     stage = last_surface(run)
     if stage is None:
         return []
