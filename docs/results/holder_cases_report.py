@@ -234,15 +234,6 @@ def wear_out_section(runs):
     return w
 
 
-def last_surface(run):
-    """The highest stage whose surface the run folder holds (save_state.sh keeps the first and
-    the last), or None."""
-    d = os.path.join(run.path, "surface")
-    stages = [int(f[6:10]) for f in os.listdir(d) if f.startswith("stage_") and f.endswith(".h5")] \
-        if os.path.isdir(d) else []
-    return max(stages) if stages and 0 in stages and max(stages) > 0 else None
-
-
 def element_heights(run, stage):
     """Each element's (label ij >= 11, C<ij>, i its column along the flow) highest point above the
     unworn base top [mm] on the stage's surface; the base top is where the elements stand on the
@@ -261,7 +252,7 @@ def element_heights(run, stage):
 
 def heights_section(run):
     """A grid of the elements' heights on the last kept surface (columns along the flow, rows across it)."""
-    stage = last_surface(run)
+    stage = run.last_surface()
     if stage is None:
         return []
     unworn, worn = element_heights(run, stage)

@@ -143,9 +143,13 @@ class Run:
         seconds += sum(r.get(k, 0.0) for r in self.stages for k in fem)
         return seconds / 3600.0
 
-    def n_surfaces(self):
+    def last_surface(self):
+        """The highest stage whose surface the folder holds (a kept run holds only the first and
+        the last, save_state.sh), or None when it holds no surface past stage 0."""
         d = os.path.join(self.path, "surface")
-        return len([f for f in os.listdir(d) if f.startswith("stage_") and f.endswith(".h5")]) if os.path.isdir(d) else 0
+        stages = [int(f[6:10]) for f in os.listdir(d) if f.startswith("stage_") and f.endswith(".h5")] \
+            if os.path.isdir(d) else []
+        return max(stages) if stages and 0 in stages and max(stages) > 0 else None
 
 
 def fits(x, y):
@@ -352,10 +356,10 @@ def section(pts, tri, lab, x0, field=None):
 def plot_profiles(run, out):
     """Worn profiles along the flow through the middle elements (C13, C33, C53) and the
     inner ones (C11, ...): first and last surface, and the depth between them."""
-    n = run.n_surfaces()
-    if n < 2:
+    n = run.last_surface()
+    if n is None:
         return False
-    first, last = run.surface(0), run.surface(n - 1)
+    first, last = run.surface(0), run.surface(n)
     c0 = first[0][first[1]].mean(axis=1)
     lines = []
     for lab in (13, 11):
@@ -367,7 +371,7 @@ def plot_profiles(run, out):
         y0, z0, _ = section(first[0], first[1], first[2], x0)
         y1, z1, d1 = section(last[0], last[1], last[2], x0, last[4])
         ax.plot(y0 * 1e3, z0 * 1e3, color="0.5", lw=0.8, label="unworn")
-        ax.plot(y1 * 1e3, z1 * 1e3, color="tab:red", lw=0.8, label=f"after stage {n - 1}")
+        ax.plot(y1 * 1e3, z1 * 1e3, color="tab:red", lw=0.8, label=f"after stage {n}")
         ax.set_ylabel("z [mm]")
         ax.set_title(f"{title} (x = {x0 * 1e3:.1f} mm)", fontsize=9)
         ax2 = ax.twinx()
