@@ -20,11 +20,19 @@ kept_name() { # <case>: the name of its kept run in cases/reference-study/state
   case "$1" in *.prm) basename "$(out_dir "$1")" ;; *) echo "$1" ;; esac
 }
 
-restore_kept() { # <case>: its kept run (save_state.sh) into its output folder, if that holds none;
-  # prints what the kept run holds when it unpacked one, nothing otherwise; fails when it cannot
+restore_kept() { # <case> [for-report]: its kept run (save_state.sh) into its output folder, if
+  # that holds none; prints what the kept run holds when it unpacked one, nothing otherwise;
+  # fails when it cannot. A kept run without a checkpoint (the reference scheme keeps none)
+  # cannot be continued: it is unpacked only for the reports (restore.sh passes for-report),
+  # so that run.sh starts such a case afresh instead of overwriting what it unpacked.
   local kept out
   kept="cases/reference-study/state/$(kept_name "$1").tar.xz" out=$(out_dir "$1")
   [ -f "$kept" ] && [ ! -f "$out/checkpoint.h5" ] || return 0
+  if [ "${2:-}" = for-report ]; then
+    [ ! -f "$out/summary.csv" ] || return 0
+  elif ! tar -tJf "$kept" ./checkpoint.h5 > /dev/null 2>&1; then
+    return 0
+  fi
   mkdir -p "$out"
   tar -C "$out" -xJf "$kept" || { echo "cannot unpack $kept into $out" >&2; return 2; }
   # its log goes back beside the folder, where run.sh appends to it, unless one is there

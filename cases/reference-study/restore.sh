@@ -25,6 +25,6 @@ for c in "${cases[@]}"; do
   [ -f "$(case_file "$c")" ] || { echo "restore.sh: no case file $(case_file "$c")" >&2; exit 2; }
   [ -f "cases/reference-study/state/$(kept_name "$c").tar.xz" ] ||
     { echo "restore.sh: $c has no kept run (cases/reference-study/state/$(kept_name "$c").tar.xz)" >&2; exit 2; }
-  restored=$(restore_kept "$c") || { echo "restore.sh: $c not restored" >&2; exit 2; }
+  restored=$(restore_kept "$c" for-report) || { echo "restore.sh: $c not restored" >&2; exit 2; }
   echo "restore.sh: $c: ${restored:-$(out_dir "$c") already holds a run, left as it is}"
 done

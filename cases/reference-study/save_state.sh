@@ -3,7 +3,9 @@
 # session continues on the next machine (run.sh restores a kept run into an output folder that
 # holds none). Only what the continuation and the report need is kept, as one xz archive per
 # run, state/<case>.tar.xz, with a line saying what it holds in state/<case>.txt:
-#   checkpoint.h5 (particles, worn sample, every revolution and stage record), parameters.prm
+#   checkpoint.h5 (particles, worn sample, every revolution and stage record; a run of the
+#   reference scheme has none and is kept as far as it went, never over a kept one that went
+#   further, and is not continued but started afresh by run.sh), parameters.prm
 #   (the engine version the report checks), summary.csv, stages.csv, history.h5, and the first
 #   and the last stage surface (surface/stage_*.h5: the unworn sample and the latest worn one,
 #   the two the report maps and profiles);
@@ -50,8 +52,19 @@ staging=$(mktemp -d)
 trap 'rm -rf "$staging"' EXIT
 for i in "${!args[@]}"; do
   c=${cases[$i]} out=$(out_dir "${args[$i]}")
-  [ -f "$out/checkpoint.h5" ] ||
-    { echo "save_state.sh: $out holds no checkpoint.h5 (nothing to keep for '$c')" >&2; exit 2; }
+  if [ ! -f "$out/checkpoint.h5" ]; then
+    # the reference scheme keeps no checkpoint: its run is kept as far as it went, the
+    # records and surfaces the report reads, but never in place of a kept one that went further
+    grep -q '^[[:space:]]*set Schedule[[:space:]]*=[^#]*reference' "$out/parameters.prm" 2>/dev/null &&
+      [ -f "$out/summary.csv" ] ||
+      { echo "save_state.sh: $out holds no checkpoint.h5 (nothing to keep for '$c')" >&2; exit 2; }
+    revs=$(($(wc -l < "$out/summary.csv") - 1))
+    kept_revs=$(sed -n 's/^[^:]*: \([0-9]*\) revolutions done.*/\1/p' "$kept_root/$c.txt" 2>/dev/null || true)
+    if [ -n "$kept_revs" ] && [ "$revs" -lt "$kept_revs" ]; then
+      echo "save_state.sh: $out has $revs revolutions, the kept run of '$c' $kept_revs: kept as it is" >&2
+      exit 1
+    fi
+  fi
   s="$staging/$c"
   mkdir -p "$s/surface" "$s/volume"
   for f in checkpoint.h5 parameters.prm summary.csv stages.csv history.h5; do

@@ -52,15 +52,6 @@ def staged(run):
     return rows
 
 
-def planned_staged(run):
-    """The number of staged stages the schedule asks for (`3 dem-only, 20 staged`), or None."""
-    for part in str(run.planned).split(","):
-        words = part.split()
-        if len(words) == 2 and words[1] == "staged" and words[0].isdigit():
-            return int(words[0])
-    return None
-
-
 def load(root, engine):
     runs, missing = {}, []
     for name in NAMES:
@@ -124,27 +115,16 @@ def plot(runs, out):
 
 
 def ending(run):
-    """How the run ended, as the last call of run.sh wrote it in the log beside the run folder
-    (`<folder>.log`; save_state.sh keeps it, restore.sh puts it back): finished, stopped by
-    SIGTERM with a checkpoint to continue from, or stopped by an error, named with the stage
-    it stopped in (the one after the last in stages.csv) and the error's first clause."""
-    if planned_staged(run) == len(staged(run)):
+    """How the run ended: finished, or as run.sh's last call left it (Run.last_call_ending),
+    a SIGTERM's checkpoint being where run.sh continues it."""
+    if run.planned_stages("staged") == len(staged(run)):
         return "finished"
-    log = os.path.normpath(run.path) + ".log"
-    if not os.path.isfile(log):
+    if not os.path.isfile(os.path.normpath(run.path) + ".log"):
         return "in progress or stopped (no log beside the run folder)"
-    with open(log, errors="replace") as f:
-        lines = [line.strip() for line in f]
-    starts = [k for k, line in enumerate(lines) if line.startswith("=== ")]
-    last = lines[starts[-1] if starts else 0:]
-    stage = int(run.stages[-1]["stage"]) + 1 if run.stages else 1
-    for line in reversed(last):
-        if line.startswith("stopped by SIGTERM in stage"):
-            return line.split(" (")[0] + ", continued from its checkpoint by run.sh"
-        if "error:" in line:
-            what = line.split("error:", 1)[1].split("; ")[0].strip()
-            return f"stopped by an error in stage {stage}: {what}"
-    return "in progress, or killed without a message"
+    last = run.last_call_ending()
+    if last is None:
+        return "in progress, or killed without a message"
+    return last + (", continued from its checkpoint by run.sh" if last.startswith("stopped by SIGTERM") else "")
 
 
 def run_table(runs, missing):
@@ -152,7 +132,7 @@ def run_table(runs, missing):
          "|---|---|---|---|---|---|---|"]
     for name, r in runs.items():
         rows = staged(r)
-        plan = planned_staged(r)
+        plan = r.planned_stages("staged")
         done = f"{len(rows)} of {plan}" if plan else str(len(rows))
         hours = rows[-1]["cumulative_hours"] if rows else 0.0
         w.append(f"| {name} | `{r.case}` | {r.planned} | {done} | {hours:.0f} | {r.wall_hours():.1f} | {ending(r)} |")

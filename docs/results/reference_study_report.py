@@ -143,6 +143,37 @@ class Run:
         seconds += sum(r.get(k, 0.0) for r in self.stages for k in fem)
         return seconds / 3600.0
 
+    def planned_stages(self, scheme):
+        """The number of stages of one scheme the schedule asks for (`3 dem-only, 20 staged`:
+        20 staged), or None when it names none."""
+        for part in str(self.planned).split(","):
+            words = part.split()
+            if len(words) == 2 and words[1] == scheme and words[0].isdigit():
+                return int(words[0])
+        return None
+
+    def last_call_ending(self):
+        """How the last call of run.sh on this run ended, from its part of the log run.sh writes
+        beside the folder (`<folder>.log`; save_state.sh keeps it, restore.sh puts it back):
+        "stopped by SIGTERM in stage k of n", "stopped by an error in stage k: <what>" (k the
+        stage after the last in stages.csv, <what> the error's first clause), or None when the
+        log is missing or tells neither (finished, still running, or killed without a word)."""
+        log = os.path.normpath(self.path) + ".log"
+        if not os.path.isfile(log):
+            return None
+        with open(log, errors="replace") as f:
+            lines = [line.strip() for line in f]
+        starts = [k for k, line in enumerate(lines) if line.startswith("=== ")]
+        last = lines[starts[-1] if starts else 0:]
+        stage = int(self.stages[-1]["stage"]) + 1 if self.stages else 1
+        for line in reversed(last):
+            if line.startswith("stopped by SIGTERM in stage"):
+                return line.split(" (")[0]
+            if "error:" in line:
+                what = line.split("error:", 1)[1].split("; ")[0].strip()
+                return f"stopped by an error in stage {stage}: {what}"
+        return None
+
     def last_surface(self):
         """The highest stage whose surface the folder holds (a kept run holds only the first and
         the last, save_state.sh), or None when it holds no surface past stage 0."""
@@ -404,6 +435,53 @@ def plot_flow(runs, out):
     plt.close(fig)
 
 
+def node_moving_section(runs):
+    """The `reference` scheme's runs against the staged ones of the same sample: how far each
+    went, how it ended (distorted, all 20 revolutions, or how run.sh's last call stopped it:
+    the scheme keeps no checkpoint, so a stopped run is reported as far as it went) and the
+    wear from the staged runs' first staged revolution, against the staged wear over as many."""
+    w = ["## The node-moving method on the same cases\n"]
+    P, C = runs["plain"], runs["convex"]
+    w.append("The `reference` scheme moves the sample's surface nodes inside the DEM from the first "
+             "revolution and stops at the first distorted face; its wear is counted from revolution "
+             f"{P.first_staged_rev or 4}, as the staged run's. It keeps no checkpoint: a run stopped "
+             "before it distorted or finished is reported as far as it went.\n")
+    w.append("| sample | revolutions run | how it ended | mean wear a revolution, revolutions run [mm^3] "
+             "| staged run, same revolutions [mm^3] | cumulative wear from that revolution [mm^3] "
+             "| staged, same revolutions [mm^3] |")
+    w.append("|---|---|---|---|---|---|---|")
+    for name, staged in (("plain", P), ("convex", C)):
+        key = f"{name}-reference"
+        if key not in runs:
+            w.append(f"| {name} | not run | | | | | |")
+            continue
+        r = runs[key]
+        start = staged.first_staged_rev or 4
+        done = int(r.rows[-1]["revolution"])
+        planned = r.planned_stages("reference")
+        distorted = next((str(x.get("distortion", "")) for x in r.stages if str(x.get("distortion", "")).strip()), "")
+        if distorted:
+            ended = f"distorted in revolution {done}: {distorted}"
+        elif planned and len(r.stages) >= planned:
+            ended = f"all {planned} revolutions, undistorted"
+        else:
+            ended = r.last_call_ending() or "in progress, or killed without a message"
+        mean = np.mean([x["wear_volume_m3"] for x in r.rows]) * 1e9
+        same_revs = [x["wear_volume_m3"] for x in staged.rows if x["revolution"] <= done]
+        mean_staged = fmt(np.mean(same_revs) * 1e9) if len(same_revs) == len(r.rows) else "n/a"
+        n_ref = sum(1 for x in r.rows if x["revolution"] >= start)
+        if n_ref:
+            ref = sum(x["wear_volume_m3"] for x in r.rows if x["revolution"] >= start) * 1e9
+            _, cum = staged.cumulative()
+            cum_cells = (f"{ref:.2f} ({n_ref} revolution{'s' if n_ref > 1 else ''}) | "
+                         + (fmt(cum[n_ref - 1]) if n_ref <= len(cum) else "n/a"))
+        else:
+            cum_cells = f"none: it ended before revolution {start} |"
+        w.append(f"| {name} | {done} | {ended} | {mean:.2f} | {mean_staged} | {cum_cells} |")
+    w.append("")
+    return w
+
+
 def report(runs, missing, cal, out):
     P, C = runs["plain"], runs["convex"]
     w = []
@@ -548,29 +626,7 @@ def report(runs, missing, cal, out):
         w.append(f"\nconvex / plain per seed: {', '.join(f'{c / p:.3f}' for p, c in pairs)}; mean {m:.3f} +- {fmt(h, 3)} "
                  f"(95 %, {len(pairs)} seed{'s' if len(pairs) > 1 else ''}).\n")
 
-    # The node-moving method
-    w.append("## The node-moving method on the same cases\n")
-    w.append("The `reference` scheme moves the sample's surface nodes inside the DEM from the first "
-             "revolution and stops at the first distorted face; its wear is counted from revolution "
-             f"{P.first_staged_rev or 4}, as the staged run's.\n")
-    w.append("| sample | revolutions run | how it ended | cumulative wear from that revolution [mm^3] | staged, same revolutions [mm^3] |")
-    w.append("|---|---|---|---|---|")
-    for name, staged in (("plain", P), ("convex", C)):
-        key = f"{name}-reference"
-        if key not in runs:
-            w.append(f"| {name} | not run | | | |")
-            continue
-        r = runs[key]
-        start = staged.first_staged_rev or 4
-        done = int(r.rows[-1]["revolution"])
-        ended = next((str(x.get("distortion", "")) for x in r.stages if str(x.get("distortion", "")).strip()), "")
-        ended = f"distorted: {ended}" if ended else ("completed" if done >= 20 else "stopped (session end)")
-        ref = sum(x["wear_volume_m3"] for x in r.rows if x["revolution"] >= start) * 1e9
-        n_ref = sum(1 for x in r.rows if x["revolution"] >= start)
-        _, cum = staged.cumulative()
-        same = fmt(cum[n_ref - 1]) if 0 < n_ref <= len(cum) else "n/a"
-        w.append(f"| {name} | {done} | {ended} | {ref:.2f} ({n_ref} revolutions) | {same} |")
-    w.append("")
+    w += node_moving_section(runs)
 
     # Particle size
     w.append("## Trend with particle size: convex / plain at 56 h\n")

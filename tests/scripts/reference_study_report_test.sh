@@ -3,7 +3,9 @@
 # study without its plain or convex run, runs (or a calibration) of different engine versions,
 # runs of different Archard coefficients, and a calibration whose calibrated coefficient is not
 # the one the runs used; and it accepts a complete set of one version (--check reads and checks
-# the folders without writing). The run folders are stand-ins with the files the check reads.
+# the folders without writing). Its node-moving section tells how each `reference` run ended
+# (distorted, through its schedule, or stopped, from its log) and its wear against the staged
+# run's over the same revolutions. The run folders are stand-ins with the files it reads.
 set -uo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 report="$root/docs/results/reference_study_report.py"
@@ -78,4 +80,51 @@ printf 'subsection Wear law\n  set Archard coefficient = 7.25779635e-09\nend\n' 
 rm "$tmp/cal/history.h5" "$tmp/cal/stages.csv"
 check "$tmp/e" "$tmp/cal" || fail "refused the kept calibration of the runs' coefficient: $(cat "$tmp/out")"
 grep -q "calibration present" "$tmp/out" || fail "the kept calibration was not read: $(cat "$tmp/out")"
+
+# The node-moving runs against the staged ones (stand-ins: plain and convex staged from
+# revolution 2 at 71 and 50 mm^3): a distorted run, one that ran its whole schedule and one
+# that run.sh stopped (it keeps no checkpoint), told from its log.
+reference_folder() { # <folder> <planned revolutions> <wear per revolution [m^3]> <distortion per stage ...>
+  local d=$1 n=$2 v=$3 k=0
+  shift 3
+  run_folder "$d" e1
+  printf '  set Schedule = %s reference\n' "$n" >> "$d/parameters.prm"
+  printf 'revolution,wear_volume_m3,steady_revolution\n' > "$d/summary.csv"
+  printf 'stage,scheme_name,first_revolution,distortion\n' > "$d/stages.csv"
+  for dist in "$@"; do
+    k=$((k + 1))
+    printf '%d,%s,0\n' "$k" "$v" >> "$d/summary.csv"
+    printf '%d,reference,%d,"%s"\n' "$k" "$k" "$dist" >> "$d/stages.csv"
+  done
+}
+section() { # <runs>: the node-moving section of the report on these folders, in $tmp/out
+  /usr/bin/python3 - "$root/docs/results" "$1" > "$tmp/out" 2>&1 <<'PY'
+import os, sys
+sys.path.insert(0, sys.argv[1])
+import reference_study_report as R
+runs = {n: R.Run(os.path.join(sys.argv[2], n)) for n in sorted(os.listdir(sys.argv[2]))
+        if os.path.isdir(os.path.join(sys.argv[2], n))}
+print("\n".join(R.node_moving_section(runs)))
+PY
+}
+run_folder "$tmp/f/plain" e1
+run_folder "$tmp/f/convex" e1
+sed -i 's/^2,7.1e-08/2,5e-08/' "$tmp/f/convex/summary.csv"
+reference_folder "$tmp/f/plain-reference" 3 2e-7 "" "inverted face at face 5 (C11), t = 3.1 s"
+reference_folder "$tmp/f/convex-reference" 3 1e-7 "" ""
+printf '=== t0 wearsim run --overwrite c.prm\nstopped by SIGTERM in stage 3 of 3 (revolution 3, t = 4 s); nothing was saved\n' \
+  > "$tmp/f/convex-reference.log"
+section "$tmp/f" || fail "no node-moving section: $(cat "$tmp/out")"
+grep -qF "| plain | 2 | distorted in revolution 2: inverted face at face 5 (C11), t = 3.1 s | 200.00 | 70.50 | 200.00 (1 revolution) | 71.00 |" "$tmp/out" ||
+  fail "the distorted run is not told, or its wear from revolution 2 is not 200 against 71: $(cat "$tmp/out")"
+grep -qF "| convex | 2 | stopped by SIGTERM in stage 3 of 3 | 100.00 | 60.00 | 100.00 (1 revolution) | 50.00 |" "$tmp/out" ||
+  fail "the stopped run is not told from its log: $(cat "$tmp/out")"
+reference_folder "$tmp/f/convex-reference" 3 1e-7 "" "" ""
+section "$tmp/f" || fail "no node-moving section: $(cat "$tmp/out")"
+grep -qF "| convex | 3 | all 3 revolutions, undistorted | 100.00 | n/a | 200.00 (2 revolutions) | n/a |" "$tmp/out" ||
+  fail "a run through its schedule is not told as such: $(cat "$tmp/out")"
+reference_folder "$tmp/f/plain-reference" 3 2e-7 "inverted face at face 7 (C12), t = 1.5 s"
+section "$tmp/f" || fail "no node-moving section: $(cat "$tmp/out")"
+grep -qF "| plain | 1 | distorted in revolution 1: inverted face at face 7 (C12), t = 1.5 s | 200.00 | 70.00 | none: it ended before revolution 2 | |" "$tmp/out" ||
+  fail "a run that distorted before the staged revolutions is not told as such: $(cat "$tmp/out")"
 echo "reference_study_report_test: passed"
