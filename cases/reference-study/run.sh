@@ -15,7 +15,8 @@
 #        JOBS=<n> runs at once (default: the number of cores)
 # A case with no checkpoint in output/reference-study but a run kept in
 # cases/reference-study/state (save_state.sh, carried between machines in the repository)
-# continues from the kept run.
+# continues from the kept run; a kept node-moving (`reference`) run holds no checkpoint, so
+# that case starts afresh (save_state.sh keeps the new run only if it goes further).
 set -uo pipefail
 cd "$(dirname "$0")/../.."
 wearsim=${WEARSIM:-}
