@@ -459,7 +459,7 @@ def node_moving_section(runs):
         start = staged.first_staged_rev or 4
         done = int(r.rows[-1]["revolution"])
         planned = r.planned_stages("reference")
-        distorted = next((str(x.get("distortion", "")) for x in r.stages if str(x.get("distortion", "")).strip()), "")
+        distorted = next((d for d in (str(x.get("distortion", "")).strip() for x in r.stages) if d), "")
         if distorted:
             ended = f"distorted in revolution {done}: {distorted}"
         elif planned and len(r.stages) >= planned:
@@ -469,9 +469,10 @@ def node_moving_section(runs):
         mean = np.mean([x["wear_volume_m3"] for x in r.rows]) * 1e9
         same_revs = [x["wear_volume_m3"] for x in staged.rows if x["revolution"] <= done]
         mean_staged = fmt(np.mean(same_revs) * 1e9) if len(same_revs) == len(r.rows) else "n/a"
-        n_ref = sum(1 for x in r.rows if x["revolution"] >= start)
+        compared = [x["wear_volume_m3"] for x in r.rows if x["revolution"] >= start]
+        n_ref = len(compared)
         if n_ref:
-            ref = sum(x["wear_volume_m3"] for x in r.rows if x["revolution"] >= start) * 1e9
+            ref = sum(compared) * 1e9
             _, cum = staged.cumulative()
             cum_cells = (f"{ref:.2f} ({n_ref} revolution{'s' if n_ref > 1 else ''}) | "
                          + (fmt(cum[n_ref - 1]) if n_ref <= len(cum) else "n/a"))
