@@ -483,6 +483,48 @@ def node_moving_section(runs):
     return w
 
 
+def size_trend_section(runs, missing):
+    """The 56 h convex/plain ratio at s = 4, 3 and 2. A run that has not reached 56 h after
+    steady state (s = 2 is a long case, run over several sessions) says how far it got:
+    revolutions done of its schedule's, or started with none done, or not run."""
+    w = ["## Trend with particle size: convex / plain at 56 h\n"]
+    w.append("| s | plain [mm^3] | convex [mm^3] | convex / plain | geometry moved at |")
+    w.append("|---|---|---|---|---|")
+    started = {m.split(" (")[0] for m in missing if m.endswith("(started, no revolution done yet)")}
+
+    def how_far(name):
+        if name not in runs:
+            return "not reached: started, no revolution done" if name in started else "not run"
+        r = runs[name]
+        done = int(r.rows[-1]["revolution"])
+        planned = sum(r.planned_stages(k) or 0 for k in ("dem-only", "staged"))
+        return f"not reached: {done} of {planned} revolutions done" if planned else f"not reached: {done} revolutions done"
+
+    for s, (pn, cn) in (("4", ("plain-s4", "convex-s4")), ("3", ("plain", "convex")), ("2", ("plain-s2", "convex-s2"))):
+        vals = [at(*runs[n].cumulative(), T56) if n in runs else None for n in (pn, cn)]
+        cells = [fmt(v) if v is not None else how_far(n) for n, v in zip((pn, cn), vals)]
+        p, c = vals
+        ratio = fmt(c / p, 3) if p and c else ""
+        notes = "; ".join(f"{n}: {amplifications(runs[n], 2)}" for n in (pn, cn) if n in runs and runs[n].n_staged)
+        w.append(f"| {s} | {cells[0]} | {cells[1]} | {ratio} | {notes} |")
+    short = [(n, ref) for n, ref in (("plain-s2", "plain"), ("convex-s2", "convex"))
+             if n in runs and at(*runs[n].cumulative(), T56) is None]
+    if short:
+        w.append("\nSo far, wear of the wear face a revolution at s = 2 against s = 3 (the same revolutions; "
+                 "before steady state it includes the bed's settling):\n")
+        for n, ref in short:
+            at3 = {int(x["revolution"]): x["wear_volume_m3"] for x in runs[ref].rows}
+            pairs = [f"revolution {int(x['revolution'])}: {x['wear_volume_m3'] * 1e9:.2f} "
+                     f"({fmt(at3[int(x['revolution'])] * 1e9) if int(x['revolution']) in at3 else 'n/a'})"
+                     for x in runs[n].rows]
+            w.append(f"- {n} (s = 3 in brackets): " + "; ".join(pairs) + " mm^3.")
+    w.append("\nThe wear compared is the DEM's own in each revolution. The geometry it moves is that "
+             "wear times the stage's amplification: 1, unless a stage would recede a vertex by more than "
+             "`Coupling/Maximum depth fraction` edge lengths and the case lets it run at less "
+             "(`Coupling/Adaptive amplification`, `stages.csv`).\n")
+    return w
+
+
 def report(runs, missing, cal, out):
     P, C = runs["plain"], runs["convex"]
     w = []
@@ -629,21 +671,7 @@ def report(runs, missing, cal, out):
 
     w += node_moving_section(runs)
 
-    # Particle size
-    w.append("## Trend with particle size: convex / plain at 56 h\n")
-    w.append("| s | plain [mm^3] | convex [mm^3] | convex / plain | geometry moved at |")
-    w.append("|---|---|---|---|---|")
-    for s, (pn, cn) in (("4", ("plain-s4", "convex-s4")), ("3", ("plain", "convex")), ("2", ("plain-s2", "convex-s2"))):
-        if pn in runs and cn in runs:
-            p, c = at(*runs[pn].cumulative(), T56), at(*runs[cn].cumulative(), T56)
-            notes = "; ".join(f"{n}: {amplifications(runs[n], 2)}" for n in (pn, cn))
-            w.append(f"| {s} | {fmt(p)} | {fmt(c)} | {fmt(c / p, 3) if p and c else 'not reached'} | {notes} |")
-        else:
-            w.append(f"| {s} | not run | not run | | |")
-    w.append("\nThe wear compared is the DEM's own in each revolution. The geometry it moves is that "
-             "wear times the stage's amplification: 1, unless a stage would recede a vertex by more than "
-             "`Coupling/Maximum depth fraction` edge lengths and the case lets it run at less "
-             "(`Coupling/Adaptive amplification`, `stages.csv`).\n")
+    w += size_trend_section(runs, missing)
     return "\n".join(w)
 
 

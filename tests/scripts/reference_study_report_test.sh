@@ -127,4 +127,39 @@ reference_folder "$tmp/f/plain-reference" 3 2e-7 "inverted face at face 7 (C12),
 section "$tmp/f" || fail "no node-moving section: $(cat "$tmp/out")"
 grep -qF "| plain | 1 | distorted in revolution 1: inverted face at face 7 (C12), t = 1.5 s | 200.00 | 70.00 | none: it ended before revolution 2 | |" "$tmp/out" ||
   fail "a run that distorted before the staged revolutions is not told as such: $(cat "$tmp/out")"
+
+# The size trend while s = 2 runs: a run short of 56 h after steady state says how far it got
+# (plain-s2 1 of 5 revolutions, convex-s2 started without a revolution) and its wear so far
+# against s = 3's same revolutions; the stand-in s = 3 pair reaches 56 h (2 revolutions from 2).
+trend() { # <runs>: the size-trend section on these folders (missing: R.load_runs'), in $tmp/out
+  /usr/bin/python3 - "$root/docs/results" "$1" > "$tmp/out" 2>&1 <<'PY2'
+import sys
+sys.path.insert(0, sys.argv[1])
+import reference_study_report as R
+runs, missing, _ = R.load_runs(sys.argv[2], sys.argv[2] + "/none")
+print("\n".join(R.size_trend_section(runs, missing)))
+PY2
+}
+run_folder "$tmp/g/plain" e1
+run_folder "$tmp/g/convex" e1
+printf '3,7.2e-08,1\n' >> "$tmp/g/plain/summary.csv"
+printf '3,5.2e-08,1\n' >> "$tmp/g/convex/summary.csv"
+for k in plain convex; do
+  printf 'stage,scheme_name,first_revolution,amplification\n1,dem-only,1,1\n2,staged,2,1\n3,staged,3,1\n' \
+    > "$tmp/g/$k/stages.csv"
+done
+run_folder "$tmp/g/plain-s2" e1
+printf '  set Schedule = 3 dem-only, 2 staged\n' >> "$tmp/g/plain-s2/parameters.prm"
+printf 'revolution,wear_volume_m3,steady_revolution\n1,6.5e-08,0\n' > "$tmp/g/plain-s2/summary.csv"
+printf 'stage,scheme_name,first_revolution\n1,dem-only,1\n' > "$tmp/g/plain-s2/stages.csv"
+mkdir -p "$tmp/g/convex-s2"
+trend "$tmp/g" || fail "no size-trend section: $(cat "$tmp/out")"
+grep -qF "| 3 | 143.00 | 123.00 | 0.860 | plain: 1, 1; convex: 1, 1 |" "$tmp/out" ||
+  fail "the s = 3 pair at 56 h is not 143 and 123 mm^3: $(cat "$tmp/out")"
+grep -qF "| 2 | not reached: 1 of 5 revolutions done | not reached: started, no revolution done |  |  |" "$tmp/out" ||
+  fail "the s = 2 row does not say how far its runs got: $(cat "$tmp/out")"
+grep -qF "| 4 | not run | not run |  |  |" "$tmp/out" ||
+  fail "the s = 4 row does not say it was not run: $(cat "$tmp/out")"
+grep -qF -- "- plain-s2 (s = 3 in brackets): revolution 1: 65.00 (70.00) mm^3." "$tmp/out" ||
+  fail "the s = 2 wear so far is not set against s = 3's: $(cat "$tmp/out")"
 echo "reference_study_report_test: passed"
