@@ -16,7 +16,8 @@ Usage: /usr/bin/python3 docs/results/reference_study_report.py [--runs DIR] [--o
 
 Each run's summary.csv, history.h5 and surface/stage_*.h5 are read (of the calibration, a
 `wearsim dem` run, its summary.csv and calibration.prm). The study pair is
-required; every other run missing is listed as not run. All runs present must name the same
+required; every other run missing is listed as not run, and a run short of 56 h after steady
+state says in the size trend how far it got. All runs present must name the same
 engine version (the second line of their parameters.prm), or the report is refused.
 
 "After steady state" counts from the first staged revolution (the schedule's dem-only
