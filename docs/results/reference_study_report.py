@@ -501,23 +501,23 @@ def size_trend_section(runs, missing):
         planned = sum(r.planned_stages(k) or 0 for k in ("dem-only", "staged"))
         return f"not reached: {done} of {planned} revolutions done" if planned else f"not reached: {done} revolutions done"
 
-    for s, (pn, cn) in (("4", ("plain-s4", "convex-s4")), ("3", ("plain", "convex")), ("2", ("plain-s2", "convex-s2"))):
-        vals = [at(*runs[n].cumulative(), T56) if n in runs else None for n in (pn, cn)]
-        cells = [fmt(v) if v is not None else how_far(n) for n, v in zip((pn, cn), vals)]
-        p, c = vals
+    sizes = (("4", ("plain-s4", "convex-s4")), ("3", ("plain", "convex")), ("2", ("plain-s2", "convex-s2")))
+    at56 = {n: at(*runs[n].cumulative(), T56) for _, pair in sizes for n in pair if n in runs}
+    for s, (pn, cn) in sizes:
+        p, c = at56.get(pn), at56.get(cn)
+        cells = [fmt(v) if v is not None else how_far(n) for n, v in ((pn, p), (cn, c))]
         ratio = fmt(c / p, 3) if p and c else ""
         notes = "; ".join(f"{n}: {amplifications(runs[n], 2)}" for n in (pn, cn) if n in runs and runs[n].n_staged)
         w.append(f"| {s} | {cells[0]} | {cells[1]} | {ratio} | {notes} |")
     short = [(n, ref) for n, ref in (("plain-s2", "plain"), ("convex-s2", "convex"))
-             if n in runs and at(*runs[n].cumulative(), T56) is None]
+             if n in runs and at56[n] is None]
     if short:
         w.append("\nSo far, wear of the wear face a revolution at s = 2 against s = 3 (the same revolutions; "
                  "before steady state it includes the bed's settling):\n")
         for n, ref in short:
-            at3 = {int(x["revolution"]): x["wear_volume_m3"] for x in runs[ref].rows}
+            at3 = {int(x["revolution"]): x["wear_volume_m3"] * 1e9 for x in runs[ref].rows}
             pairs = [f"revolution {int(x['revolution'])}: {x['wear_volume_m3'] * 1e9:.2f} "
-                     f"({fmt(at3[int(x['revolution'])] * 1e9) if int(x['revolution']) in at3 else 'n/a'})"
-                     for x in runs[n].rows]
+                     f"({fmt(at3.get(int(x['revolution'])))})" for x in runs[n].rows]
             w.append(f"- {n} (s = 3 in brackets): " + "; ".join(pairs) + " mm^3.")
     w.append("\nThe wear compared is the DEM's own in each revolution. The geometry it moves is that "
              "wear times the stage's amplification: 1, unless a stage would recede a vertex by more than "
