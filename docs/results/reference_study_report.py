@@ -514,10 +514,12 @@ def size_trend_section(runs, missing):
     if short:
         w.append("\nSo far, wear of the wear face a revolution at s = 2 against s = 3 (the same revolutions; "
                  "before steady state it includes the bed's settling):\n")
+        def wear_by_revolution(r):
+            return {int(x["revolution"]): x["wear_volume_m3"] * 1e9 for x in r.rows}
+
         for n, ref in short:
-            at3 = {int(x["revolution"]): x["wear_volume_m3"] * 1e9 for x in runs[ref].rows}
-            pairs = [f"revolution {int(x['revolution'])}: {x['wear_volume_m3'] * 1e9:.2f} "
-                     f"({fmt(at3.get(int(x['revolution'])))})" for x in runs[n].rows]
+            at3 = wear_by_revolution(runs[ref])
+            pairs = [f"revolution {k}: {fmt(v)} ({fmt(at3.get(k))})" for k, v in wear_by_revolution(runs[n]).items()]
             w.append(f"- {n} (s = 3 in brackets): " + "; ".join(pairs) + " mm^3.")
     w.append("\nThe wear compared is the DEM's own in each revolution. The geometry it moves is that "
              "wear times the stage's amplification: 1, unless a stage would recede a vertex by more than "
