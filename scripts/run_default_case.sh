@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds, and runs the default case: cases/quick (plain vs convex
-# sample, coupled DEM-FEM stages at s = 4 in a 30-degree sector) over three insertion seeds
-# per sample, then prints the comparison with 95 % intervals and writes the plots and
-# output/quick/report.md.
+# sample in the reference study's set-up at s = 7, coupled DEM-FEM stages), then prints the
+# reduction with its 95 % interval, its distance from the full study at s = 7 and the study's
+# answer at s = 3, and writes the plots and output/quick/report.md.
 #
 # usage: bash scripts/run_default_case.sh [--update-readme]
 #        --update-readme: also write the README's figures and picture from this run
@@ -15,8 +15,8 @@ esac
 bash scripts/install_deps.sh
 mkdir -p build
 bash scripts/build.sh
-bash cases/quick/ensemble.sh "$@"
+bash cases/quick/run.sh "$@"
 echo
 echo "report: output/quick/report.md; comparison plot: output/quick/compare.png"
-echo "plots of one pair: output/quick/plain-1/plots/, output/quick/convex-1/plots/"
-echo "ParaView: output/quick/convex-1/history.xdmf (sample surface and volume per stage)"
+echo "plots of each run: output/quick/plain/plots/, output/quick/convex/plots/"
+echo "ParaView: output/quick/convex/history.xdmf (sample surface and volume per stage)"

@@ -1,5 +1,5 @@
 # A pool of background runs, at most POOL_JOBS at once, for the case scripts (cases/quick/
-# ensemble.sh, cases/reference/scene/scene_vs_tester.sh, cases/reference-study/run.sh).
+# run.sh, cases/reference/scene/scene_vs_tester.sh, cases/reference-study/run.sh).
 # Sourced, not run:
 #
 #   source scripts/run_pool.sh

@@ -1,9 +1,11 @@
-# Where a case of the reference study's scripts lives (run.sh, save_state.sh, restore.sh), and
-# how its kept run comes back. Sourced, not run.
+# Where a case of the reference study's scripts lives (run.sh, keep_running.sh): its case file,
+# its output folder, its summary and its kept checkpoint, and how a kept checkpoint comes back.
+# Sourced, not run.
 # A case is the name of a case file in cases/reference-study without .prm (its output folder
 # output/reference-study/<name>), or the path of another case file run by the study's engine,
 # such as cases/wear-out/convex.prm, whose output folder is the `set Directory` written in the
-# file itself and whose kept run is named after that folder.
+# file itself. The run is named after its output folder; its summary and its kept checkpoint
+# live beside its case file: cases/<case>/results/<run> and cases/<case>/running/<run>.
 
 case_file() { # <case>: its case file
   case "$1" in *.prm) echo "$1" ;; *) echo "cases/reference-study/$1.prm" ;; esac
@@ -16,29 +18,57 @@ out_dir() { # <case>: its output folder
   esac
 }
 
-kept_name() { # <case>: the name of its kept run in cases/reference-study/state
-  case "$1" in *.prm) basename "$(out_dir "$1")" ;; *) echo "$1" ;; esac
+run_name() { # <case>: the name of its run (its output folder's)
+  basename "$(out_dir "$1")"
 }
 
-restore_kept() { # <case> [for-report]: its kept run (save_state.sh) into its output folder, if
-  # that holds none; prints what the kept run holds when it unpacked one, nothing otherwise;
-  # fails when it cannot. A kept run without a checkpoint (the reference scheme keeps none)
-  # cannot be continued: it is unpacked only for the reports (restore.sh passes for-report),
-  # so that run.sh starts such a case afresh instead of overwriting what it unpacked.
-  local kept out
-  kept="cases/reference-study/state/$(kept_name "$1").tar.xz" out=$(out_dir "$1")
-  [ -f "$kept" ] && [ ! -f "$out/checkpoint.h5" ] || return 0
-  if [ "${2:-}" = for-report ]; then
-    [ ! -f "$out/summary.csv" ] || return 0
-  elif ! tar -tJf "$kept" ./checkpoint.h5 > /dev/null 2>&1; then
+summary_dir() { # <case>: its run's summary (docs/results/run_summary.py), read by the reports
+  echo "$(dirname "$(case_file "$1")")/results/$(run_name "$1")"
+}
+
+running_dir() { # <case>: its unfinished run's kept checkpoint (keep_running.sh)
+  echo "$(dirname "$(case_file "$1")")/running/$(run_name "$1")"
+}
+
+holds_run() { # <folder>: whether a run has written its tables or a checkpoint there (as wearsim)
+  local f
+  for f in stages.csv summary.csv checkpoint.h5 checkpoint.previous.h5; do
+    [ -f "$1/$f" ] && return 0
+  done
+  return 1
+}
+
+summarise() { # <case>: its run's summary written from its output folder, when that has tables
+  local out
+  out=$(out_dir "$1")
+  [ -f "$out/summary.csv" ] || return 0
+  /usr/bin/python3 docs/results/run_summary.py "$out" "$(summary_dir "$1")"
+}
+
+restore_running() { # <case>: its kept checkpoint into its output folder when that holds no run;
+  # prints what it restored, nothing when there was nothing to restore; fails when it cannot.
+  # The checkpoint is unpacked and each stage's index entry becomes the stub file a resume
+  # reads (surface/ and volume/stage_NNNN.h5 holding only their "xdmf" attribute).
+  local keep out
+  keep=$(running_dir "$1") out=$(out_dir "$1")
+  [ -f "$keep/checkpoint.h5.xz" ] || return 0
+  if holds_run "$out"; then
+    [ -f "$out/checkpoint.h5" ] ||
+      echo "restore: $out holds a run without a checkpoint; $keep not restored" >&2
     return 0
   fi
-  mkdir -p "$out"
-  tar -C "$out" -xJf "$kept" || { echo "cannot unpack $kept into $out" >&2; return 2; }
-  # its log goes back beside the folder, where run.sh appends to it, unless one is there
-  if [ -f "$out/run.log" ]; then
-    [ -f "$out.log" ] || mv "$out/run.log" "$out.log"
-    rm -f "$out/run.log"
-  fi
-  cat "${kept%.tar.xz}.txt" 2>/dev/null || echo "$kept"
+  mkdir -p "$out" || return 2
+  # the stubs first, the checkpoint last: a folder with a checkpoint is one run.sh resumes
+  /usr/bin/python3 - "$keep/index" "$out" <<'EOF' || { echo "restore: cannot write the index stubs into $out" >&2; return 2; }
+import os, sys, h5py, numpy
+index, out = sys.argv[1:]
+for name in sorted(os.listdir(index)):  # <kind>_stage_NNNN.xml: the entry of <kind>/stage_NNNN.h5
+    kind, stage = name[:-4].split("_", 1)
+    os.makedirs(os.path.join(out, kind), exist_ok=True)
+    with open(os.path.join(index, name), "rb") as f, h5py.File(os.path.join(out, kind, stage + ".h5"), "w") as h:
+        h.attrs["xdmf"] = numpy.bytes_(f.read())  # a fixed-length string, as wearsim writes it
+EOF
+  xz -dc "$keep/checkpoint.h5.xz" > "$out/checkpoint.h5.tmp" && mv "$out/checkpoint.h5.tmp" "$out/checkpoint.h5" ||
+    { echo "restore: cannot unpack $keep/checkpoint.h5.xz into $out" >&2; return 2; }
+  echo "$keep into $out ($(cat "$keep/kept.txt" 2>/dev/null))"
 }

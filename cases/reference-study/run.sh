@@ -13,10 +13,17 @@
 #              its output folder is the `set Directory` the file itself writes
 #        WEARSIM=<binary> (default: the study's engine, engine.sh, built on first use),
 #        JOBS=<n> runs at once (default: the number of cores)
-# A case with no checkpoint in output/reference-study but a run kept in
-# cases/reference-study/state (save_state.sh, carried between machines in the repository)
-# continues from the kept run; a kept node-moving (`reference`) run holds no checkpoint, so
-# that case starts afresh (save_state.sh keeps the new run only if it goes further).
+# A case whose output folder holds no run but whose unfinished run is kept in
+# cases/<case>/running/<run> (keep_running.sh, carried between machines in the repository)
+# continues from the kept checkpoint; a node-moving (`reference`) run keeps none and starts
+# afresh.
+# When its runs have ended (finished, stopped or failed), each case's run is summarised into
+# cases/<case>/results/<run> (docs/results/run_summary.py), what the reports read; a run
+# without a checkpoint replaces the summary of the same case only when it went further.
+# A case whose run has a summary but neither a run in its output folder nor a kept checkpoint
+# has ended (finished, distorted, or stopped by an error or without a checkpoint) and is not
+# run again: AFRESH=1 starts it from the beginning (its summary is replaced when it stops,
+# unless it keeps no checkpoint and gets less far).
 set -uo pipefail
 cd "$(dirname "$0")/../.."
 wearsim=${WEARSIM:-}
@@ -44,16 +51,35 @@ run_one() { # <case>: start or continue one case, its log beside its folder
   exec "$wearsim" run "$mode" "$prm" >> "$out.log" 2>&1
 }
 
+summarise_all() { # every case's run summarised (run_summary.py), whatever became of it
+  local c
+  for c in "${cases[@]}"; do
+    summarise "$c" | sed 's/^/reference study: /' || echo "reference study: $c not summarised" >&2
+  done
+}
+
 stop_all() {
   pool_stop
-  echo "reference study: stopped; continue with the same command"
+  summarise_all
+  echo "reference study: stopped; continue with the same command (keep_running.sh keeps the runs)"
   exit 130
 }
 trap stop_all INT TERM
+ended() { # <case>: whether its run has ended on some machine (a summary, nothing to continue)
+  [ -z "${AFRESH:-}" ] && [ -f "$(summary_dir "$1")/run.txt" ] && ! holds_run "$(out_dir "$1")" &&
+    [ ! -f "$(running_dir "$1")/checkpoint.h5.xz" ]
+}
 for c in "${cases[@]}"; do
-  restored=$(restore_kept "$c") || exit 2
-  [ -z "$restored" ] || echo "reference study: continues from the kept run: $restored"
+  if ended "$c"; then
+    echo "reference study: $c has ended (its summary: $(summary_dir "$c")); AFRESH=1 runs it again"
+    continue
+  fi
+  restored=$(restore_running "$c") || exit 2
+  [ -z "$restored" ] || echo "reference study: continues from the kept checkpoint: $restored"
   pool_run "$c" "$(out_dir "$c").log" run_one "$c"
   echo "reference study: $c started $(date -u +%TZ)"
 done
-pool_wait || { printf 'reference study: stopped with an error: %s\n' "${POOL_FAILED[@]}"; exit 1; }
+pool_wait
+failed=$?
+summarise_all
+[ $failed -eq 0 ] || { printf 'reference study: stopped with an error: %s\n' "${POOL_FAILED[@]}"; exit 1; }

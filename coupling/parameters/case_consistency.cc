@@ -28,6 +28,10 @@
 //   f_min (element tips, the exposed edge: the wear of many contacts on a few small faces),
 //   which no a-priori bound can foresee: Adaptive amplification handles them at run time.
 // - Worn-through thickness below the sample's thickness, or every wear face starts worn through.
+// - A scene's Fill/Count no larger than its region holds at the densest packing of spheres
+//   of the size distribution's smallest diameter (dem::require_fill_count_fits; a mesh region
+//   is checked when its file is read, at the run's set-up): a larger count made the insertion
+//   try for minutes before it gave up.
 // - Pattern elements no slenderer than gmsh meshes: h over the smaller footprint semi-axis at
 //   most 7 (6 meshed in 5 to 21 s; 8, 10, 12 did not finish in a minute, 10 not in 15 min).
 //
@@ -305,6 +309,7 @@ std::vector<std::string> check_consistency(const CaseParameters& p) {
   if (has_scheme(p.coupling, Scheme::staged))
     check_worn_through(p);
   check_depth_cap(p);
+  dem::require_fill_count_fits(p.scene, p.dem.psd); // a box's or cylinder's; a mesh's at set-up
   std::vector<std::string> warnings;
   warn_threads(p.dem, warnings);
   if (p.scene.walls.empty()) // a scene's stages are seconds, not the tester's revolutions

@@ -28,7 +28,7 @@ struct StageDepthEstimate {
   double fraction_lower_bound = 0;
 };
 
-/// [-] The lowest measured wear over the slide-at-floor-speed estimate (0.072, cases/quick
+/// [-] The lowest measured wear over the slide-at-floor-speed estimate (0.072, cases/sector-30
 /// convex), divided by 7: the bound's margin.
 constexpr double depth_efficiency_floor = 0.01;
 /// [-] Area-weighted mean of the longest wear-face edge at a vertex over Mesh size: 1.00 to

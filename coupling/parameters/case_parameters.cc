@@ -1,14 +1,16 @@
 // Case-file parameters through deal.II's ParameterHandler.
 //
-// Values are in SI units (m, deg for angles as named). ParameterHandler refuses undeclared
-// entries, which makes misspelled names errors; validate() in each module then checks
-// physical sense and names the parameter, and check_consistency (case_consistency.h) the
-// combinations that would fail later, before anything is written. The resolved file is
-// produced by declaring, setting every value from the structs and printing in PRM style, so
-// it always round-trips.
+// Values are in SI units (m, deg for angles as named). Before the handler reads a file,
+// case_file_lines.h walks its lines for what the handler does not see: an INCLUDE loop and a
+// parameter set twice in one file. ParameterHandler refuses undeclared entries, which makes
+// misspelled names errors; validate() in each module then checks physical sense and names
+// the parameter, and check_consistency (case_consistency.h) the combinations that would fail
+// later, before anything is written. The resolved file is produced by declaring, setting
+// every value from the structs and printing in PRM style, so it always round-trips.
 #include "coupling/parameters/case_parameters.h"
 
 #include "coupling/parameters/case_consistency.h"
+#include "coupling/parameters/case_file_lines.h"
 #include "coupling/parameters/engine_version.h"
 #include "dem/tester/wear_tester.h"
 #include "meshes/atomic_file.h"
@@ -199,6 +201,15 @@ void declare_parameters(ParameterHandler& prm, const dem::SceneNames& names) {
 CaseParameters read_case(const std::string& path, std::ostream& warnings) {
   if (!std::filesystem::exists(path))
     throw std::runtime_error("case file '" + path + "' does not exist");
+  // Our own walk of the lines first: ParameterHandler would follow an INCLUDE loop until the
+  // stack overflows, and keeps the last of two values of one entry without a word. The
+  // repetitions are warned at once, before any refusal below that the value kept may cause.
+  try {
+    for (const auto& note : check_case_file_lines(path))
+      warnings << "warning: case file '" << path << "': " << note << "\n";
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error("case file '" + path + "': " + e.what());
+  }
   // Two readings: the first, which skips what it does not know, finds the names of the
   // scene's walls, inlets and outlets; the second declares a subsection per name and refuses
   // anything undeclared.

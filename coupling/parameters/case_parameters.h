@@ -58,10 +58,12 @@ double stress_averaging_radius(const CaseParameters& p);
 /// subsection per name in `names` (Scene/Walls, Inlets, Outlets, Flux planes).
 void declare_parameters(dealii::ParameterHandler& prm, const dem::SceneNames& names = {});
 
-/// Reads a case file. Unknown or misspelled parameters, malformed values, physically
-/// impossible values and combinations that would fail later (check_consistency,
-/// case_consistency.h) are errors naming the parameters and the file; the warnings of
-/// check_consistency go to `warnings`, each on a line "warning: case file '<path>': ...".
+/// Reads a case file. An INCLUDE loop (case_file_lines.h), unknown or misspelled parameters,
+/// malformed values, physically impossible values and combinations that would fail later
+/// (check_consistency, case_consistency.h) are errors naming the parameters and the file; a
+/// parameter set twice in one file (case_file_lines.h, written as the file is read) and the
+/// warnings of check_consistency go to `warnings`, each on a line
+/// "warning: case file '<path>': ...".
 CaseParameters read_case(const std::string& path, std::ostream& warnings);
 /// read_case with the warnings on std::cerr.
 CaseParameters read_case(const std::string& path);

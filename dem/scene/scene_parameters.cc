@@ -1,4 +1,5 @@
-// The Scene subsection's own checks (scene_parameters.h): names, list lengths, signs.
+// The Scene subsection's own checks (scene_parameters.h): names, list lengths, signs; and a
+// fill's count against what its region can hold at the densest packing of spheres.
 #include "dem/scene/scene_parameters.h"
 
 #include "meshes/surface_mesh.h"
@@ -6,6 +7,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <iomanip>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -319,6 +321,59 @@ void validate(const SceneParameters& s) {
       if (!(out.minimum[d] < out.maximum[d]))
         throw std::invalid_argument(p + "/Minimum must lie below Maximum in every direction");
   }
+}
+
+bool fills_sector_only(const SceneParameters& s) {
+  const auto& f = s.fill;
+  return f.region == "cylinder" && s.periodic_angle_deg > 0 && f.origin.size() == 3 &&
+         f.axis.size() == 3 && f.origin[0] == 0 && f.origin[1] == 0 && f.axis[0] == 0 &&
+         f.axis[1] == 0 && f.axis[2] > 0;
+}
+
+void require_fill_count_fits(const SceneParameters& s, const SizeDistribution& psd,
+                             double mesh_volume) {
+  const auto& f = s.fill;
+  if (f.region == "none" || f.count == 0 || (f.region == "mesh" && mesh_volume < 0))
+    return;
+  constexpr double pi = 3.14159265358979323846;
+  double volume = mesh_volume;
+  std::string region = "the solid of '" + f.file + "'";
+  if (f.region == "box") {
+    volume = 1;
+    for (int d = 0; d < 3; ++d)
+      volume *= f.maximum[d] - f.minimum[d];
+    region = "the box";
+  } else if (f.region == "cylinder") {
+    const double share = fills_sector_only(s) ? s.periodic_angle_deg / 360 : 1.0;
+    volume = pi * (f.radius * f.radius - f.radius_inner * f.radius_inner) *
+             meshes::norm(scene_vector(f.axis)) * share;
+    region = share < 1 ? "the cylinder's share of the periodic sector" : "the cylinder";
+  }
+  // Why the smallest size bounds every size distribution: shrink each particle about its
+  // centre to diameter d; they stay apart and inside the region, now equal spheres, which fill
+  // at most 0.7405 of it (Kepler's bound of space, which a region's walls only lower). Sizes
+  // mixed can pack denser than 0.7405 by volume, but not by count times the smallest volume.
+  const double d = psd.min_diameter();
+  const double sphere = pi / 6 * d * d * d;
+  const double bound = std::floor(densest_sphere_packing * volume / sphere);
+  if (double(f.count) <= bound)
+    return;
+  std::ostringstream m;
+  m.precision(4);
+  const auto whole = [](double x) {
+    std::ostringstream s;
+    s << std::fixed << std::setprecision(0) << x;
+    return s.str();
+  };
+  m << "Scene/Fill/Count (" << f.count << ") exceeds the most particles the fill region can "
+    << "hold, " << whole(bound) << ": " << region << " of " << volume
+    << " m^3 at the densest packing of spheres, pi/(3 sqrt 2) = 0.7405, of the size "
+       "distribution's smallest diameter d = "
+    << d << " m (DEM/PSD diameters x DEM/Scaling factor) holds 0.7405 x " << volume
+    << " m^3 / (pi/6 d^3 = " << sphere << " m^3) = " << whole(bound)
+    << " spheres, and no fill more (random insertion jams near half of that, at 0.38 solid for "
+       "equal spheres); lower Count, enlarge the region, or set Count = 0 and a Bed height";
+  throw std::invalid_argument(m.str());
 }
 
 } // namespace wear::dem

@@ -4,6 +4,7 @@
 // CAD or mesh file with its length unit, or a primitive), its material, whether it wears and
 // how it moves. scene_walls.h builds and checks the surfaces (`wearsim scene`); the scene's
 // particles, sources and sinks and its DEM run are the next parts of the issue.
+#include "dem/engine/filling.h"
 #include "dem/engine/mesh_wall.h"
 #include "dem/engine/rigid_motion.h"
 #include "meshes/parameter_visitor.h"
@@ -346,5 +347,24 @@ bool moves_rigidly(const SceneWallParameters& w);
 /// Checks the values on their own (list lengths, signs, a file given where needed); throws
 /// std::invalid_argument naming the parameter by its case-file path.
 void validate(const SceneParameters& s);
+
+/// [-] The densest packing of equal spheres, pi / (3 sqrt 2) (Kepler's conjecture, proved by
+/// Hales): spheres no smaller than d fill at most this fraction of a region.
+constexpr double densest_sphere_packing = 0.74048048969306104;
+
+/// True when the fill is a cylinder about the z axis through the origin in a periodic sector
+/// (Scene/Periodic sector): it is filled in the sector only.
+bool fills_sector_only(const SceneParameters& s);
+
+/// Throws std::invalid_argument naming Scene/Fill/Count when Count exceeds the most particles
+/// the fill region can hold: its volume V at the densest packing of spheres of the smallest
+/// diameter d_min of `psd` (DEM/PSD diameters x Scaling factor), 0.7405 V / (pi/6 d_min^3).
+/// No fill can exceed it: every particle is at least d_min across and lies wholly inside the
+/// region. A box's or cylinder's volume follows from its parameters (a cylinder filled in the
+/// sector only: the sector's share); a mesh region's is known once its file is read, and is
+/// passed as `mesh_volume` [m^3] (while it is negative, a mesh region is not checked).
+/// Nothing to check without a fill or for a fill to a Bed height.
+void require_fill_count_fits(const SceneParameters& s, const SizeDistribution& psd,
+                             double mesh_volume = -1);
 
 } // namespace wear::dem

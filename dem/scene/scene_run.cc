@@ -17,6 +17,8 @@
 // submerged (a part standing in the bed, as the tester's sample): no centre is placed within
 // the largest diameter of its bounding box, and a bed height's count leaves out its enclosed
 // volume below the bed's top (the share of its height below it, when it reaches above).
+// Before that, a Count above what the region holds at the densest packing of spheres is
+// refused (require_fill_count_fits): the insertion would try for minutes before giving up.
 #include "dem/scene/scene_run.h"
 
 #include "dem/tester/wear_tester.h"
@@ -154,9 +156,10 @@ private:
   }
 };
 
-/// `periodic`: the scene's sector [rad] (0: none); a cylinder about the z axis is then filled
-/// in the sector only, and its footprint is the sector's share.
-static SceneFillShape fill_shape(const SceneFillParameters& f, double periodic) {
+/// In a periodic sector a cylinder about the z axis is filled in the sector only
+/// (fills_sector_only), and its footprint is the sector's share.
+static SceneFillShape fill_shape(const SceneParameters& s) {
+  const SceneFillParameters& f = s.fill;
   SceneFillShape shape;
   if (f.region == "mesh") {
     meshes::CadImportOptions o{
@@ -183,10 +186,8 @@ static SceneFillShape fill_shape(const SceneFillParameters& f, double periodic) 
       shape.hi[d] = std::fmax(shape.base[d], shape.base[d] + a[d]) + e;
     }
     shape.floor_z = shape.base.z;
-    const bool about_z = shape.base.x == 0 && shape.base.y == 0 && shape.axis.x == 0 &&
-                         shape.axis.y == 0 && shape.axis.z > 0;
-    if (periodic > 0 && about_z)
-      shape.sector = periodic;
+    if (fills_sector_only(s))
+      shape.sector = s.periodic_angle_deg * pi / 180;
     shape.radius_inner = f.radius_inner;
     shape.footprint = pi * (f.radius * f.radius - f.radius_inner * f.radius_inner) *
                       (shape.sector > 0 ? shape.sector / (2 * pi) : 1.0);
@@ -348,8 +349,9 @@ SceneRun::SceneRun(const SceneParameters& scene, const TesterDemParameters& dem,
   validate(scene_);
   validate(dem_);
   if (scene_.fill.region != "none") {
-    auto built = std::make_shared<SceneFillShape>(
-        fill_shape(scene_.fill, scene_.periodic_angle_deg * pi / 180));
+    auto built = std::make_shared<SceneFillShape>(fill_shape(scene_));
+    // read_case checked a box's or cylinder's count; a mesh region's volume is known now.
+    require_fill_count_fits(scene_, dem_.psd, built->solid ? built->solid->volume() : -1);
     built->clearance = dem_.psd.max_diameter();
     require_clear_of_walls(walls_, *built,
                            built->floor_z +

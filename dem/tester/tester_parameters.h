@@ -63,6 +63,15 @@ void visit_parameters(const std::string& which, DemMaterial& m, Visitor& v) {
   v.real(which + " density", m.density, "[kg/m^3] Solid density of the " + which + ".");
 }
 
+/// [-] The largest rolling friction coefficient mu_r a case may set (validate()). The
+/// rolling resistance is the torque mu_r F_n a, a the centre-to-contact distance
+/// (docs/theory.md section 2): the couple of the normal force shifted off the line of
+/// centres by mu_r a. That shift can reach at most the edge of the particle (a sphere's
+/// contact patch, or for a real grain the face it rests on, lies within a radius of its
+/// centre), so mu_r = 1 is a physical bound; DEM studies of granular materials stay below it,
+/// mostly at 0.01 to 0.5. Keep the documentation of "Rolling friction ..." below in step.
+constexpr double max_rolling_friction = 1;
+
 /// "Restitution particle-wall", "Friction particle-wall", ... for which = "particle-wall".
 template <typename Visitor>
 void visit_parameters(const std::string& which, PairProperties& p, Visitor& v) {
@@ -70,7 +79,12 @@ void visit_parameters(const std::string& which, PairProperties& p, Visitor& v) {
          "[-] Normal coefficient of restitution, " + which + ".");
   v.real("Friction " + which, p.friction, "[-] Static friction coefficient, " + which + ".");
   v.real("Rolling friction " + which, p.rolling_friction,
-         "[-] Rolling friction coefficient (constant directional torque), " + which + ".");
+         "[-] Rolling friction coefficient mu_r, " + which +
+             ": a constant directional torque mu_r F_n a against the relative spin, a the "
+             "centre-to-contact distance. At most 1 (refused above): the torque is the normal "
+             "force shifted mu_r a off the line of centres, which for mu_r above 1 would lie "
+             "outside the particle; rolling friction coefficients in DEM of granular materials "
+             "lie below about 1, mostly between 0.01 and 0.5.");
 }
 
 /// The bed: size distribution, filling and settling.

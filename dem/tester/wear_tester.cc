@@ -40,6 +40,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 #include <stdexcept>
 
 namespace wear::dem {
@@ -50,6 +51,12 @@ constexpr double pi = 3.14159265358979323846;
 void require(bool ok, const std::string& parameter, const std::string& what) {
   if (!ok)
     throw std::invalid_argument("DEM/" + parameter + ": " + what);
+}
+
+std::string text(double x) {
+  std::ostringstream s;
+  s << x;
+  return s.str();
 }
 
 Material material(const std::string& name, const DemMaterial& m) {
@@ -90,6 +97,15 @@ void validate(const TesterDemParameters& p) {
   check_material(p.sample, "Sample");
   check_material(p.walls, "Wall");
   check_material(p.holder, "Holder");
+  for (const auto& [pair, which] :
+       {std::pair{&p.particle_particle, "particle-particle"}, {&p.particle_wall, "particle-wall"}})
+    require(pair->rolling_friction >= 0 && pair->rolling_friction <= max_rolling_friction,
+            std::string("Rolling friction ") + which,
+            "must lie in [0, " + text(max_rolling_friction) + "], got " +
+                text(pair->rolling_friction) +
+                ": the rolling resistance torque mu_r F_n a is the normal force shifted mu_r a "
+                "off the line of centres (a the centre-to-contact distance), which above 1 "
+                "would lie outside the particle (DEM of granular materials: mostly 0.01 to 0.5)");
   p.psd.validate();
   require(p.fill_height > 0, "Fill height", "must be positive [m]");
   require(p.loose_factor >= 1.2, "Loose factor", "must be at least 1.2");

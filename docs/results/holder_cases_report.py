@@ -1,20 +1,24 @@
 #!/usr/bin/python3
-"""The wear-out and stress cases in the holder (issue 32, item 6), reported from their run folders.
+"""The wear-out and stress cases in the holder (issue 32, item 6), reported from their runs' summaries.
 
 Usage: /usr/bin/python3 docs/results/holder_cases_report.py [--root DIR] [--out DIR]
            [--engine VERSION] [--check]
 
---root    where the run folders are (default output): stress-plain, stress-convex
-          (cases/stress) and wear-out-convex (cases/wear-out), as their case files name them
+--root    a folder holding the three summaries stress-plain, stress-convex and
+          wear-out-convex (default: each beside its case, cases/stress/results/stress-plain,
+          cases/stress/results/stress-convex and cases/wear-out/results/wear-out-convex)
 --out     where holder-cases.md and its plots go (default docs/results)
 --engine  the engine version every run must name (default cases/reference-study/ENGINE, the
           reference study's engine, so that these results sit beside the study's)
---check   only read and check the run folders; print what would be reported, write nothing
+--check   only read and check the summaries; print what would be reported, write nothing
 
-Each run's stages.csv and parameters.prm are read. A run missing is listed as not run; a
-run of another engine version, or one that names none, is refused, as is a root with none
-of the three runs. A run still in progress is reported as far as it got (its stages done
-of those planned), and how it ended is read from the log run.sh writes beside its folder.
+A summary folder is what docs/results/run_summary.py writes from a run folder
+(cases/reference-study/run.sh does after every call); its stages.csv, parameters.prm,
+elements.csv and ending.txt are read, nothing else. A run missing is listed as not run; a run
+of another engine version, or one that names none, is refused, as is a root with none of the
+three runs. A run still in progress is reported as far as it got (its stages done of those
+planned), and how it ended is the summary's ending.txt, from the log run.sh writes beside its
+run folder.
 
 A staged stage stands for (revolutions) x (amplification) x 28 h of the laboratory test
 (docs/wear-tester.md); `dem-only` stages wear nothing and stand for no hours. The stage's
@@ -27,7 +31,6 @@ import os
 import sys
 
 import matplotlib
-import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from reference_study_report import (HOURS_PER_REV, Run, fail, fmt, has_revolution, parse_args,  # noqa: E402
@@ -39,6 +42,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 PROG = os.path.basename(sys.argv[0])
 NAMES = {"stress-plain": "cases/stress/plain.prm", "stress-convex": "cases/stress/convex.prm",
          "wear-out-convex": "cases/wear-out/convex.prm"}
+# Each run's summary beside its case file: cases/<case>/results/<run>.
+SUMMARIES = {n: os.path.join(os.path.dirname(prm), "results", n) for n, prm in NAMES.items()}
 
 
 def staged(run):
@@ -53,15 +58,17 @@ def staged(run):
 
 
 def load(root, engine):
+    """The runs found ({name: Run}, in root or, root None, beside their case files) and those
+    not found; stops when none is found or one names another engine."""
     runs, missing = {}, []
     for name in NAMES:
-        path = os.path.join(root, name)
+        path = os.path.join(root, name) if root else SUMMARIES[name]
         if has_revolution(path) and os.path.isfile(os.path.join(path, "stages.csv")):
             runs[name] = Run(path)
         else:
             missing.append(name + (" (started, no revolution done yet)" if os.path.isdir(path) else ""))
     if not runs:
-        fail(f"none of the runs {', '.join(NAMES)} is in '{root}' "
+        fail(f"none of the runs {', '.join(NAMES)} is in '{root or ', '.join(SUMMARIES.values())}' "
              f"(bash cases/reference-study/run.sh {' '.join(NAMES.values())})")
     odd = {n: r.engine for n, r in runs.items() if r.engine != engine}
     if odd:
@@ -119,7 +126,7 @@ def ending(run):
     a SIGTERM's checkpoint being where run.sh continues it."""
     if run.planned_stages("staged") == len(staged(run)):
         return "finished"
-    if not os.path.isfile(os.path.normpath(run.path) + ".log"):
+    if not run.has_log():
         return "in progress or stopped (no log beside the run folder)"
     last = run.last_call_ending()
     if last is None:
@@ -218,16 +225,11 @@ def element_heights(run, stage):
     """Each element's (label ij >= 11, C<ij>, i its column along the flow) highest point above the
     unworn base top [mm] on the stage's surface; the base top is where the elements stand on the
     unworn surface (their lowest point there)."""
-    def tops(n):
-        pts, tri, lab, _, _ = run.surface(n)
-        z = pts[tri][:, :, 2].max(axis=1)
-        low = pts[tri][:, :, 2].min(axis=1)
-        return ({int(k): float(z[lab == k].max()) for k in np.unique(lab) if k >= 11},
-                float(low[lab >= 11].min()) if np.any(lab >= 11) else float("nan"))
-    unworn, base_top = tops(0)
-    worn, _ = tops(stage)
-    return ({k: (unworn[k] - base_top) * 1e3 for k in unworn},
-            {k: (worn[k] - base_top) * 1e3 for k in worn if k in unworn})
+    extents = run.element_extents()
+    unworn, worn = extents.get(0, {}), extents.get(stage, {})
+    base_top = min((bottom for _, bottom in unworn.values()), default=float("nan"))
+    return ({k: (top - base_top) * 1e3 for k, (top, _) in unworn.items()},
+            {k: (top - base_top) * 1e3 for k, (top, _) in worn.items() if k in unworn})
 
 
 def heights_section(run):
@@ -269,7 +271,7 @@ def report(runs, missing, engine):
 
 
 def main(argv):
-    args, check_only = parse_args(argv, {"--root": "output", "--out": "docs/results", "--engine": None},
+    args, check_only = parse_args(argv, {"--root": None, "--out": "docs/results", "--engine": None},
                                   __doc__.splitlines()[2])
     engine = args["--engine"]
     if engine is None:

@@ -1,38 +1,41 @@
 #!/usr/bin/python3
-"""The reference study's report (issue 32), generated from its run folders.
+"""The reference study's report (issue 32), generated from its runs' summaries.
 
 Usage: /usr/bin/python3 docs/results/reference_study_report.py [--runs DIR] [--out DIR]
-           [--calibration RUN] [--check]
+           [--calibration DIR] [--check]
 
---runs         the study's run folders (default output/reference-study): plain, convex (the
-               study), plain-seed2/3 and convex-seed2/3 (seeds), plain-s4/s2 and
-               convex-s4/s2 (particle size), as cases/reference-study/run.sh writes them
+--runs         the study's run summaries (default cases/reference-study/results): plain,
+               convex (the study), plain-seed2/3 and convex-seed2/3 (seeds), plain-s7/s4/s2
+               and convex-s7/s4/s2 (particle size), plain-reference and convex-reference (the
+               node-moving method), one folder each
 --out          where reference-study.md and its plots go (default docs/results)
---calibration  the calibration run (default output/calibration-plain, else the one kept in
-               cases/reference-study/state/calibration-plain); the coefficient its
-               calibration.prm holds must be the one every run used
---check        only read the run folders and check them (the study pair present, one engine
+--calibration  the calibration's summary (default cases/calibration/results/calibration-plain);
+               the coefficient its calibration.prm holds must be the one every run used
+--check        only read the summaries and check them (the study pair present, one engine
                version); print what would be reported from, write nothing
 
-Each run's summary.csv, history.h5 and surface/stage_*.h5 are read (of the calibration, a
-`wearsim dem` run, its summary.csv and calibration.prm). The study pair is
-required; every other run missing is listed as not run, and a run short of 56 h after steady
-state says in the size trend how far it got. All runs present must name the same
-engine version (the second line of their parameters.prm), or the report is refused.
+A summary folder is what docs/results/run_summary.py writes from a run folder (run.sh does
+after every call, into cases/reference-study/results/<case>; the calibration's is written by
+hand, cases/calibration/README.md); the report reads nothing else, so that it regenerates
+from the repository alone. The study pair is required; every other run missing is listed as
+not run, and a run short of 56 h after steady state says in the size trend how far it got.
+All runs present must name the same engine version (the second line of their parameters.prm),
+or the report is refused.
 
 "After steady state" counts from the first staged revolution (the schedule's dem-only
 revolutions bring the bed to steady flow on the unworn sample; the run's own steady judgement
 is printed beside). 56 h of the laboratory test are 2 revolutions, 184 h 6.57 (28 h per
 revolution, docs/wear-tester.md).
 """
-import csv
 import math
 import os
 import sys
 
-import h5py
 import matplotlib
 import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import run_summary  # noqa: E402
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -40,8 +43,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 PROG = os.path.basename(sys.argv[0])
 HOURS_PER_REV = 28.0
 T56, T184 = 56.0 / HOURS_PER_REV, 184.0 / HOURS_PER_REV
-# The calibration run on this machine, else the one kept in the repository (save_state.sh).
-CALIBRATION_FOLDERS = ["output/calibration-plain", "cases/reference-study/state/calibration-plain"]
+RUNS = "cases/reference-study/results"
+CALIBRATION = "cases/calibration/results/calibration-plain"
 T_95 = {1: 12.706, 2: 4.303, 3: 3.182, 4: 2.776, 5: 2.571}  # Student t, two-sided 95 %
 
 
@@ -63,9 +66,12 @@ def prm_settings(path):
 
 
 class Run:
-    """One run folder: its revolutions, stages, engine version and surfaces."""
+    """One run's summary folder (docs/results/run_summary.py): its revolutions, stages, engine
+    version and what the plots need of its surfaces."""
 
     def __init__(self, path):
+        """Reads the summary folder `path`; stops when it names no engine version or has no
+        revolution."""
         self.path = path
         self.name = os.path.basename(os.path.normpath(path))
         with open(os.path.join(path, "parameters.prm")) as f:
@@ -81,17 +87,7 @@ class Run:
         if not self.rows:
             fail(f"'{path}/summary.csv' has no revolution yet")
         self.params = prm_settings(os.path.join(path, "parameters.prm"))
-        self.element_labels, self.element_wear, self.column_wear = [], None, None
-        history = os.path.join(path, "history.h5")
-        # A kept `wearsim dem` run (the calibration) has no history.h5: its per-revolution
-        # particles and face fields are for ParaView, and its summary is all that is reported.
-        if has_stages or os.path.isfile(history):
-            with h5py.File(history, "r") as h:
-                if "revolutions" in h:  # a `wearsim run`'s history (a `wearsim dem` run has fields)
-                    rev = h["revolutions"]
-                    self.element_labels = [int(v) for v in rev["element_labels"][:]] if "element_labels" in rev else []
-                    self.element_wear = rev["element_wear_m3"][:] if "element_wear_m3" in rev else None
-                    self.column_wear = rev["column_wear_m3"][:]
+        self.element_labels, self.element_wear, self.column_wear = run_summary.read_revolutions(path)
         schemes = [r["scheme_name"] for r in self.stages]
         self.first_staged_rev = next(
             (int(r["first_revolution"]) for r in self.stages if r["scheme_name"] == "staged"), None)
@@ -99,18 +95,11 @@ class Run:
         self.planned = self.params.get("Schedule", "?")
 
     def _csv(self, name):
+        """The rows of one of the summary's CSV files (numbers as floats); stops when it is missing."""
         path = os.path.join(self.path, name)
         if not os.path.isfile(path):
-            fail(f"'{path}' does not exist (is '{self.path}' a wearsim run folder?)")
-        with open(path) as f:
-            rows = list(csv.DictReader(f))
-        for r in rows:
-            for k, v in list(r.items()):
-                try:
-                    r[k] = float(v)
-                except (TypeError, ValueError):
-                    pass
-        return rows
+            fail(f"'{path}' does not exist (is '{self.path}' a run summary, docs/results/run_summary.py?)")
+        return run_summary.read_csv(path)
 
     def column(self, name):
         return np.array([r[name] for r in self.rows], dtype=float)
@@ -131,10 +120,18 @@ class Run:
         s = int(self.rows[-1].get("steady_revolution", 0) or 0)
         return s
 
-    def surface(self, stage):
-        with h5py.File(os.path.join(self.path, "surface", f"stage_{stage:04d}.h5"), "r") as h:
-            return (h["points"][:], h["triangles"][:].astype(int), h["cell/label"][:, 0].astype(int),
-                    h["cell/cumulative_removed_volume"][:, 0], h["cell/wear_depth"][:, 0])
+    def face_map(self):
+        """(centroids [face, (x, y)] [m], labels) of the stage-0 wear face, or None."""
+        return run_summary.read_map(self.path)
+
+    def profiles(self):
+        """[(line name, x [m], {stage: (y, z, wear depth)})]: the wear face cut along the flow
+        on the stage-0 and the last surface."""
+        return run_summary.read_profiles(self.path)
+
+    def element_extents(self):
+        """{stage: {label: (highest z, lowest z) [m]}} on the stage-0 and the last surface."""
+        return run_summary.read_elements(self.path)
 
     def wall_hours(self):
         """Wall-clock time the run took so far [h]: its revolutions (summary.csv) and the FEM side
@@ -153,35 +150,23 @@ class Run:
                 return int(words[0])
         return None
 
+    def has_log(self):
+        """Whether the run had the log run.sh writes beside its folder (ending.txt, from it)."""
+        return os.path.isfile(os.path.join(self.path, "ending.txt"))
+
     def last_call_ending(self):
-        """How the last call of run.sh on this run ended, from its part of the log run.sh writes
-        beside the folder (`<folder>.log`; save_state.sh keeps it, restore.sh puts it back):
-        "stopped by SIGTERM in stage k of n", "stopped by an error in stage k: <what>" (k the
-        stage after the last in stages.csv, <what> the error's first clause), or None when the
-        log is missing or tells neither (finished, still running, or killed without a word)."""
-        log = os.path.normpath(self.path) + ".log"
-        if not os.path.isfile(log):
+        """How the last call of run.sh on this run ended (ending.txt: "stopped by SIGTERM in stage
+        k of n" or "stopped by an error in stage k: <what>"), or None when the log was missing or
+        told neither (finished, still running, or killed without a word)."""
+        if not self.has_log():
             return None
-        with open(log, errors="replace") as f:
-            lines = [line.strip() for line in f]
-        starts = [k for k, line in enumerate(lines) if line.startswith("=== ")]
-        last = lines[starts[-1] if starts else 0:]
-        stage = int(self.stages[-1]["stage"]) + 1 if self.stages else 1
-        for line in reversed(last):
-            if line.startswith("stopped by SIGTERM in stage"):
-                return line.split(" (")[0]
-            if "error:" in line:
-                what = line.split("error:", 1)[1].split("; ")[0].strip()
-                return f"stopped by an error in stage {stage}: {what}"
-        return None
+        with open(os.path.join(self.path, "ending.txt")) as f:
+            return f.read().strip() or None
 
     def last_surface(self):
-        """The highest stage whose surface the folder holds (a kept run holds only the first and
-        the last, save_state.sh), or None when it holds no surface past stage 0."""
-        d = os.path.join(self.path, "surface")
-        stages = [int(f[6:10]) for f in os.listdir(d) if f.startswith("stage_") and f.endswith(".h5")] \
-            if os.path.isdir(d) else []
-        return max(stages) if stages and 0 in stages and max(stages) > 0 else None
+        """The stage of the run's last surface, or None when it had none past stage 0."""
+        stage = run_summary.read_run_txt(self.path).get("last surface", "none")
+        return int(stage) if stage.isdigit() else None
 
 
 def fits(x, y):
@@ -229,17 +214,17 @@ def fmt(x, digits=2):
 
 
 def has_revolution(path):
-    """Whether the run folder's summary.csv holds a revolution (a header and a row)."""
-    f = os.path.join(path, "summary.csv")
-    if not os.path.isfile(f):
-        return False
-    with open(f) as fh:
-        return sum(1 for line in fh if line.strip()) > 1
+    """Whether the summary folder's summary.csv holds a revolution (a header and a row)."""
+    return run_summary.count_revolutions(path) > 0
 
 
 def load_runs(root, calibration):
+    """The study's runs found in root ({name: Run}), those not found (with "started, no
+    revolution done yet" when the folder is there) and the calibration (None when absent);
+    stops on a missing study pair, mixed engines or mixed Archard coefficients."""
     names = ["plain", "convex", "plain-seed2", "plain-seed3", "convex-seed2", "convex-seed3",
-             "plain-s4", "convex-s4", "plain-s2", "convex-s2", "plain-reference", "convex-reference"]
+             "plain-s7", "convex-s7", "plain-s4", "convex-s4", "plain-s2", "convex-s2", "plain-reference",
+             "convex-reference"]
     runs, missing = {}, []
     for n in names:
         p = os.path.join(root, n)
@@ -250,9 +235,7 @@ def load_runs(root, calibration):
     for n in ("plain", "convex"):
         if n not in runs:
             fail(f"the study run '{os.path.join(root, n)}' is missing (cases/reference-study/run.sh)")
-    if calibration is None:  # the run on this machine, else the one kept in the repository
-        calibration = next((c for c in CALIBRATION_FOLDERS if os.path.isfile(os.path.join(c, "summary.csv"))),
-                           CALIBRATION_FOLDERS[0])
+    calibration = calibration or CALIBRATION
     cal = Run(calibration) if os.path.isfile(os.path.join(calibration, "summary.csv")) else None
     engines = {r.engine for r in runs.values()} | ({cal.engine} if cal else set())
     if len(engines) != 1:
@@ -341,10 +324,9 @@ def plot_columns_elements(runs, upto, out):
 
 def plot_map(run, upto, out):
     """Per-element wear on the footprint: each element's faces coloured by its wear."""
-    pts, tri, lab, _, _ = run.surface(0)
+    c, lab = run.face_map()
     elements, _, _ = element_rows(run, upto)
     fig, ax = plt.subplots(figsize=(5.2, 5.6))
-    c = pts[tri].mean(axis=1)
     vmax = max(elements.values()) if elements else 1
     cmap = plt.get_cmap("viridis")
     base = lab == 3
@@ -365,47 +347,21 @@ def plot_map(run, upto, out):
     plt.close(fig)
 
 
-def section(pts, tri, lab, x0, field=None):
-    """Profile of the wear face (base top and elements) cut by the plane x = x0: the crossing
-    points (y, z) sorted along y, and the per-face `field` of the face crossed there."""
-    keep = np.nonzero((lab == 3) | (lab >= 11))[0]
-    p = pts[tri[keep]]
-    xs = p[:, :, 0] - x0
-    ys, zs, fs = [], [], []
-    for t in np.nonzero((xs.min(axis=1) <= 0) & (xs.max(axis=1) >= 0))[0]:
-        for a, b in ((0, 1), (1, 2), (2, 0)):
-            da, db = xs[t, a], xs[t, b]
-            if (da <= 0 <= db or db <= 0 <= da) and da != db:
-                s = da / (da - db)
-                q = p[t, a] + s * (p[t, b] - p[t, a])
-                ys.append(q[1])
-                zs.append(q[2])
-                fs.append(field[keep[t]] if field is not None else 0.0)
-    order = np.argsort(ys, kind="stable")
-    return np.array(ys)[order], np.array(zs)[order], np.array(fs)[order]
-
-
 def plot_profiles(run, out):
     """Worn profiles along the flow through the middle elements (C13, C33, C53) and the
-    inner ones (C11, ...): first and last surface, and the depth between them."""
-    n = run.last_surface()
-    if n is None:
+    inner ones (C11, ...): first and last surface, and the depth between them (the cuts are
+    the run summary's, run_summary.section)."""
+    n, lines = run.last_surface(), run.profiles()
+    if n is None or not lines:
         return False
-    first, last = run.surface(0), run.surface(n)
-    c0 = first[0][first[1]].mean(axis=1)
-    lines = []
-    for lab in (13, 11):
-        m = first[2] == lab
-        if np.any(m):
-            lines.append((f"through C{lab}", float(c0[m, 0].mean())))
     fig, axes = plt.subplots(len(lines), 1, figsize=(8, 2.6 * len(lines)), squeeze=False)
-    for ax, (title, x0) in zip(axes[:, 0], lines):
-        y0, z0, _ = section(first[0], first[1], first[2], x0)
-        y1, z1, d1 = section(last[0], last[1], last[2], x0, last[4])
+    for ax, (name, x0, cuts) in zip(axes[:, 0], lines):
+        y0, z0, _ = cuts[0]
+        y1, z1, d1 = cuts[n]
         ax.plot(y0 * 1e3, z0 * 1e3, color="0.5", lw=0.8, label="unworn")
         ax.plot(y1 * 1e3, z1 * 1e3, color="tab:red", lw=0.8, label=f"after stage {n}")
         ax.set_ylabel("z [mm]")
-        ax.set_title(f"{title} (x = {x0 * 1e3:.1f} mm)", fontsize=9)
+        ax.set_title(f"through {name} (x = {x0 * 1e3:.1f} mm)", fontsize=9)
         ax2 = ax.twinx()
         ax2.plot(y1 * 1e3, d1 * 1e6, color="tab:blue", lw=0.6)
         ax2.set_ylabel("worn depth (normal) [um]", color="tab:blue")
@@ -501,7 +457,8 @@ def size_trend_section(runs, missing):
         planned = sum(r.planned_stages(k) or 0 for k in ("dem-only", "staged"))
         return f"not reached: {done} of {planned} revolutions done" if planned else f"not reached: {done} revolutions done"
 
-    sizes = (("4", ("plain-s4", "convex-s4")), ("3", ("plain", "convex")), ("2", ("plain-s2", "convex-s2")))
+    sizes = (("7", ("plain-s7", "convex-s7")), ("4", ("plain-s4", "convex-s4")), ("3", ("plain", "convex")),
+             ("2", ("plain-s2", "convex-s2")))
     at56 = {n: at(*runs[n].cumulative(), T56) for _, pair in sizes for n in pair if n in runs}
     for s, (pn, cn) in sizes:
         p, c = at56.get(pn), at56.get(cn)
@@ -703,7 +660,7 @@ def write_atomic(path, text):
 
 
 def main(argv):
-    args, check_only = parse_args(argv, {"--runs": "output/reference-study", "--out": "docs/results",
+    args, check_only = parse_args(argv, {"--runs": RUNS, "--out": "docs/results",
                                          "--calibration": None}, __doc__.splitlines()[2])
     runs, missing, cal = load_runs(args["--runs"], args["--calibration"])
     if check_only:

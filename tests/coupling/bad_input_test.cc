@@ -4,14 +4,20 @@
 // No particle was created: a row refused by the case file leaves its output folder
 // unmade (read_case runs before anything is written); a row refused at the run's set-up
 // leaves no "bed:" line in the log and the folder's checkpoint as it was.
-// Rows: out-of-range values; inconsistent combinations (case_consistency.h: depth cap,
-// sample and consolidator in the sector, bed against walls and wear face, worn-through
-// thickness, element shape); files (a missing case file, a missing INCLUDE); the output
-// folder (unwritable, a file, holding a run); checkpoints (missing, truncated, of another
-// case); the command line. Also: settings that run but not as meant are warned, not refused;
-// the empty case file passes every check (default suite) and runs to completion (label
-// "long").
+// Rows: out-of-range values (a rolling friction above its bound of 1 among them);
+// inconsistent combinations (case_consistency.h: depth cap, sample and consolidator in the
+// sector, bed against walls and wear face, worn-through thickness, element shape, a scene's
+// Fill/Count above what its region holds, through `wearsim scene-run`); files (a missing case
+// file, a missing INCLUDE, a file that INCLUDEs itself, two that INCLUDE each other); the
+// output folder (unwritable, a file, holding a run); checkpoints (missing, truncated, of
+// another case); the command line. The program runs first, under a time limit: a row that
+// crashes or hangs it (an INCLUDE loop overflowed the stack; a fill count of 1e9 tried for
+// minutes) fails on its exit status instead of taking this test down with it. Also: settings
+// that run but not as meant are warned, not refused (a parameter set twice in one file among
+// them); the empty case file passes every check (default suite) and runs to completion
+// (label "long").
 #include "coupling/app/run_command.h"
+#include "coupling/app/scene_run_command.h"
 #include "coupling/output/checkpoint.h"
 #include "coupling/parameters/case_consistency.h"
 #include "coupling/parameters/case_parameters.h"
@@ -19,6 +25,7 @@
 #include <catch2/catch.hpp>
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -47,7 +54,10 @@ struct Row {
   /// Prepares the output folder, on the small plain tester's case; rows without one are
   /// refused by the command line or the case file (the defaults plus `text`).
   Setup setup;
-  std::string case_file; ///< the case file to pass, when not the row's own
+  std::string case_file;       ///< the case file to pass, when not the row's own
+  std::string command = "run"; ///< the wearsim command: run or scene-run
+  /// Files the case reads, written before the row runs: (name, text).
+  std::vector<std::pair<std::string, std::string>> files = {};
 };
 
 std::string file_text(const std::string& path) {
@@ -137,7 +147,23 @@ std::vector<Row> out_of_range_rows() {
        "subsection Coupling\n set Adaptive amplification = true\n"
        " set Minimum amplification = 2\nend\n",
        {"Coupling/Minimum amplification"}},
+      // Accepted before issue 66: the bed was filled and run with a torque 50 normal forces
+      // times the radius strong.
+      {"rolling friction particle-wall 50",
+       "subsection DEM\n set Rolling friction particle-wall = 50\nend\n",
+       {"DEM/Rolling friction particle-wall", "[0, 1], got 50", "outside the particle"}},
+      {"rolling friction particle-particle 1.5",
+       "subsection DEM\n set Rolling friction particle-particle = 1.5\nend\n",
+       {"DEM/Rolling friction particle-particle", "[0, 1], got 1.5"}},
   };
+}
+
+// A scene of one wall, a disc at z = 0 of radius 0.1 m, in its domain; the Scene subsection
+// left open for the row to add to.
+std::string scene_on_a_disc() {
+  return "subsection Scene\n set Walls = floor\n set Domain minimum = -0.2, -0.2, -0.1\n"
+         " set Domain maximum = 0.2, 0.2, 0.4\n subsection Wall floor\n  set Source = disc\n"
+         "  set Axis = 0, 0, 1\n  set Radius = 0.1\n  set Mesh size = 0.01\n end\n";
 }
 
 std::vector<Row> combination_rows() {
@@ -197,6 +223,20 @@ std::vector<Row> combination_rows() {
       {"walls too low for loose insertion",
        "subsection Geometry\n subsection Tester\n  set Wall height = 0.14\n end\nend\n",
        {"DEM/Fill height", "Geometry/Tester/Wall height"}},
+      // Tried to insert for 159 s before issue 66. The 0.1 m box at the densest packing of
+      // the default size distribution's smallest spheres (2 mm x s = 4: 8 mm) holds
+      // 0.7405 x 1e-3 m^3 / (pi/6 x (8 mm)^3) = 2762.
+      {"a scene's fill count of 1e9",
+       scene_on_a_disc() + " subsection Fill\n  set Region = box\n"
+                           "  set Minimum = -0.05, -0.05, 0.005\n"
+                           "  set Maximum = 0.05, 0.05, 0.105\n  set Count = 1000000000\n"
+                           " end\nend\nsubsection DEM\n set Threads = 1\nend\n",
+       {"Scene/Fill/Count (1000000000)", "hold, 2762: the box of 0.001 m^3", "0.7405",
+        "d = 0.008 m (DEM/PSD diameters x DEM/Scaling factor)"},
+       {},
+       {},
+       "",
+       "scene-run"},
   };
 }
 
@@ -258,6 +298,25 @@ std::vector<Row> file_and_command_rows() {
   return {
       {"a missing case file", "", {"no_such_case.prm"}, {}, {}, "no_such_case.prm"},
       {"a missing INCLUDE file", "INCLUDE no_such_calibration.prm\n", {"no_such_calibration.prm"}},
+      // Both overflowed the stack before issue 66 (exit status 139, no message).
+      {"a case file that INCLUDEs itself",
+       "",
+       {"bad_input_self.prm includes bad_input_self.prm again (line 2 of bad_input_self.prm)"},
+       {},
+       {},
+       "bad_input_self.prm",
+       "run",
+       {{"bad_input_self.prm", "# a calibrated case\nINCLUDE bad_input_self.prm\n"}}},
+      {"two case files that INCLUDE each other",
+       "",
+       {"bad_input_a.prm includes bad_input_b.prm (line 4 of bad_input_a.prm), which "
+        "includes bad_input_a.prm again (line 1 of bad_input_b.prm)"},
+       {},
+       {},
+       "bad_input_a.prm",
+       "run",
+       {{"bad_input_a.prm", "subsection DEM\n  set Threads = 1\nend\nINCLUDE bad_input_b.prm\n"},
+        {"bad_input_b.prm", "INCLUDE bad_input_a.prm\n"}}},
       {"an unknown option", "", {"--frobnicate"}, {"--frobnicate"}},
       {"--resume and --overwrite together",
        "",
@@ -266,14 +325,20 @@ std::vector<Row> file_and_command_rows() {
   };
 }
 
-// `wearsim run <args>` as a program: its exit status and what it printed.
-int run_program(const std::vector<std::string>& args, const std::string& log) {
+/// [s] A row's program is stopped after this long: a refusal takes well under a second, and a
+/// case that was not refused goes on to fill its bed for minutes.
+constexpr double program_time_limit = 30;
+
+// `wearsim <command> <args>` as a program: its exit status (128 + the signal that ended it;
+// SIGKILL when it ran past program_time_limit) and what it printed.
+int run_program(const std::string& command, const std::vector<std::string>& args,
+                const std::string& log) {
   const pid_t pid = fork();
   if (pid == 0) {
     const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     dup2(fd, 1);
     dup2(fd, 2);
-    std::vector<char*> argv{const_cast<char*>("wearsim"), const_cast<char*>("run")};
+    std::vector<char*> argv{const_cast<char*>("wearsim"), const_cast<char*>(command.c_str())};
     for (const auto& a : args)
       argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
@@ -281,7 +346,16 @@ int run_program(const std::vector<std::string>& args, const std::string& log) {
     _exit(127);
   }
   int status = 0;
-  waitpid(pid, &status, 0);
+  const auto start = std::chrono::steady_clock::now();
+  while (waitpid(pid, &status, WNOHANG) == 0) {
+    if (std::chrono::steady_clock::now() - start >
+        std::chrono::duration<double>(program_time_limit)) {
+      kill(pid, SIGKILL);
+      waitpid(pid, &status, 0);
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
@@ -293,6 +367,8 @@ std::vector<std::string> prepare(const Row& row, const std::string& dir, const s
   fs::remove_all(dir + ".replaced", ignore);
   const std::string base = row.setup ? cheap_case() : std::string();
   write_file(prm, with_directory(base + row.text, dir));
+  for (const auto& [name, text] : row.files)
+    write_file(name, text);
   if (row.setup)
     row.setup(dir);
   std::vector<std::string> args = row.options;
@@ -300,46 +376,55 @@ std::vector<std::string> prepare(const Row& row, const std::string& dir, const s
   return args;
 }
 
-// Runs one row both ways and checks the message, the exit status and that nothing was filled.
-void check_row(const Row& row, int index, bool program_too) {
+// Runs one row both ways, the program first, and checks the message, the exit status and
+// that nothing was filled.
+void check_row(const Row& row, int index) {
   const std::string dir = row.name.find("/proc") != std::string::npos
                               ? "/proc/wearsim-bad-input"
                               : "bad_input_" + std::to_string(index);
   const std::string prm = "bad_input_" + std::to_string(index) + ".prm";
   INFO("row " << index << ": " << row.name);
-  const auto args = prepare(row, dir, prm);
-  const std::string checkpoint = dir + "/checkpoint.h5";
-  const std::string before = file_text(checkpoint);
-  std::ostringstream log;
-  std::string message;
-  try {
-    run_run_command(args, log);
-  } catch (const std::exception& e) {
-    message = e.what();
-  }
-  INFO("message: " << message << "\nlog: " << log.str());
-  REQUIRE_FALSE(message.empty());
   std::vector<std::string> expected;
   for (std::string word : row.expected) {
     if (const auto at = word.find("{dir}"); at != std::string::npos)
       word.replace(at, 5, dir);
     expected.push_back(word);
   }
+  auto args = prepare(row, dir, prm);
+  const std::string out = prm + ".log";
+  const int status = run_program(row.command, args, out);
+  const std::string printed = file_text(out);
+  {
+    INFO("printed: " << printed);
+    CHECK(status == 1);
+    for (const auto& word : expected)
+      CHECK_THAT(printed, Catch::Contains(word));
+    CHECK(printed.find("bed:") == std::string::npos);
+  }
+  if (status > 128) // crashed or stopped at the time limit: in here it would do the same
+    return;
+  args = prepare(row, dir, prm); // the folder as the setup leaves it, again
+  const std::string checkpoint = dir + "/checkpoint.h5";
+  const std::string before = file_text(checkpoint);
+  std::ostringstream log;
+  std::string message;
+  try {
+    if (row.command == "scene-run")
+      run_scene_run_command(args, log);
+    else
+      run_run_command(args, log);
+  } catch (const std::exception& e) {
+    message = e.what();
+  }
+  INFO("message: " << message << "\nlog: " << log.str());
+  REQUIRE_FALSE(message.empty());
   for (const auto& word : expected)
     CHECK_THAT(message, Catch::Contains(word));
   CHECK(log.str().find("bed:") == std::string::npos);
+  CHECK(log.str().find("filled:") == std::string::npos); // a scene's fill
   if (!row.setup)
     CHECK_FALSE(fs::exists(dir)); // refused before the folder was touched
   CHECK(file_text(checkpoint) == before);
-  if (!program_too)
-    return;
-  const std::string out = prm + ".log";
-  CHECK(run_program(args, out) == 1);
-  const std::string printed = file_text(out);
-  INFO("printed: " << printed);
-  for (const auto& word : expected)
-    CHECK_THAT(printed, Catch::Contains(word));
-  CHECK(printed.find("bed:") == std::string::npos);
 }
 
 } // namespace
@@ -359,7 +444,7 @@ TEST_CASE("wearsim run: bad input is refused, naming the parameter or file, befo
     if (root && rows[k].name == "an output folder without write permission")
       continue;
     const auto row_start = std::chrono::steady_clock::now();
-    check_row(rows[k], int(k), true);
+    check_row(rows[k], int(k));
     const std::chrono::duration<double> row_time = std::chrono::steady_clock::now() - row_start;
     INFO(rows[k].name << ": " << row_time.count() << " s");
     CHECK(row_time.count() < 10); // a bed filled takes minutes at the defaults
@@ -390,6 +475,52 @@ TEST_CASE("settings that run but not as meant are warned, not refused", "[coupli
   CHECK_THAT(w, Catch::Contains("fewer than DEM/Steady revolutions (2)"));
   CHECK_THAT(w, Catch::Contains("Geometry/Sample/Mesh size (0.005 m) exceeds the elements' "
                                 "footprint width (0.004 m"));
+}
+
+TEST_CASE("a parameter set twice in one case file is warned naming it, the file and both "
+          "lines (a value set again over an INCLUDE is not)",
+          "[coupling][bad-input]") {
+  // The included file sets Scaling factor, which the case sets again after its INCLUDE line:
+  // the documented way to specialise a case (cases/reference-study/plain-s4.prm), silent.
+  // Seed twice in the case and Threads twice in the included file are slips: only the last
+  // value counted, without a word, before issue 66.
+  write_file("twice_included.prm", "subsection DEM\n  set Scaling factor = 3\n"
+                                   "  set Threads = 1\n  set Threads = 2\nend\n");
+  write_file("twice_case.prm", "INCLUDE twice_included.prm\n"
+                               "subsection DEM\n"
+                               "  set Scaling factor = 4\n"
+                               "  set Seed = 5\n"
+                               "end\n"
+                               "subsection DEM\n"
+                               "  set Seed = 7 # the one that counts\n"
+                               "end\n");
+  std::ostringstream warnings;
+  const CaseParameters p = read_case("twice_case.prm", warnings);
+  CHECK(p.dem.seed == 7);
+  CHECK(p.dem.psd.scaling_factor == 4);
+  CHECK(p.dem.n_threads == 2);
+  const std::string w = warnings.str();
+  INFO(w);
+  CHECK(std::count(w.begin(), w.end(), '\n') == 2);
+  CHECK_THAT(w, Catch::Contains("warning: case file 'twice_case.prm': DEM/Seed is set twice in "
+                                "twice_case.prm, on lines 4 and 7: only the last value (line "
+                                "7) is used"));
+  CHECK_THAT(w, Catch::Contains("warning: case file 'twice_case.prm': DEM/Threads is set twice "
+                                "in twice_included.prm, on lines 3 and 4"));
+  CHECK(w.find("Scaling factor") == std::string::npos);
+  // The program says it on stderr, before the refusal the value kept may cause: here the
+  // second Poisson ratio, 0.5, is refused.
+  write_file("twice_refused.prm", "subsection FEM\n  set Poisson ratio = 0.3\nend\n"
+                                  "subsection FEM\n  set Poisson ratio = 0.5\nend\n");
+  CHECK(run_program("run", {"twice_refused.prm"}, "twice_refused.log") == 1);
+  const std::string printed = file_text("twice_refused.log");
+  INFO(printed);
+  CHECK_THAT(printed, Catch::Contains("warning: case file 'twice_refused.prm': FEM/Poisson ratio "
+                                      "is set twice in twice_refused.prm, on lines 2 and 5"));
+  const auto error = printed.find("wearsim run: error");
+  REQUIRE(error != std::string::npos);
+  CHECK(printed.find("warning") < error);
+  CHECK(printed.find("FEM/Poisson ratio", error) != std::string::npos);
 }
 
 TEST_CASE("wearsim run: the empty case file passes every check before a run",

@@ -161,8 +161,8 @@ TEST_CASE("the a-priori depth estimate lies above the measured wear, within its 
   const Measured runs[] = {
       {"/cases/reference/plain.prm", 62.48e-9, 12000e-6},  // CHANGELOG.md, 2026-11-22 (1 mm)
       {"/cases/reference/convex.prm", 34.97e-9, 14900e-6}, // the same
-      {"/cases/quick/plain.prm", 1.88e-9, 12000e-6},       // CHANGELOG.md, seed 20111
-      {"/cases/quick/convex.prm", 1.24e-9, 14625e-6},      // the same, seed 2 (the lowest)
+      {"/cases/sector-30/plain.prm", 1.88e-9, 12000e-6},   // CHANGELOG.md, seed 20111
+      {"/cases/sector-30/convex.prm", 1.24e-9, 14625e-6},  // the same, seed 2 (the lowest)
   };
   double lowest = 1;
   for (const auto& m : runs) {

@@ -321,7 +321,7 @@ TEST_CASE("wearsim run: past the node-moving method's distortion limit the stage
 TEST_CASE("the quick case, shortened, gives a complete summary with finite positive wear",
           "[coupling][run][cases]") {
   for (const std::string kind : {"plain", "convex"}) {
-    auto p = read_case(WEAR_SOURCE_DIR "/cases/quick/" + kind + ".prm");
+    auto p = read_case(WEAR_SOURCE_DIR "/cases/sector-30/" + kind + ".prm");
     p.coupling.schedule = "1 dem-only, 1 staged";
     p.dem.settle_time = 0.15;
     p.output.directory = "quick_" + kind;

@@ -1,5 +1,5 @@
 // Mesh independence of the stress the FEM computes from one DEM window (issue 36): the quick
-// case's convex sample (cases/quick/convex.prm: 30-degree sector, s = 4, 3 mm wear-face mesh,
+// case's convex sample (cases/sector-30/convex.prm: 30-degree sector, s = 4, 3 mm wear-face mesh,
 // P1) meshed at h = 3 mm and h/2 = 1.5 mm (bottom 5 and 2.5 mm), in the DEM wall and the FEM
 // both.
 //
@@ -288,7 +288,7 @@ TEST_CASE("one DEM window's loads on the convex sample at h and h/2: the coarse-
           "traction's ball maximum and 99.9th percentile within 5 % with P2",
           "[coupling][long]") {
   std::ostringstream warnings;
-  const auto p = coupling::read_case(WEAR_SOURCE_DIR "/cases/quick/convex.prm", warnings);
+  const auto p = coupling::read_case(WEAR_SOURCE_DIR "/cases/sector-30/convex.prm", warnings);
   const meshes::Stopwatch clock;
   MeshLevel coarse = make_level(p, 1.0, "mesh_independence/h");
   MeshLevel fine = make_level(p, 0.5, "mesh_independence/h2");

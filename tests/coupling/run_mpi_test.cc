@@ -14,9 +14,8 @@
 //   wear differs by up to 70 % between realisations (a one-process run against a 2-rank run:
 //   revolution 3, 7.4 against 4.4e-11 m^3). That the bed goes on as the decomposed one would
 //   is checked in tests/dem_mpi/merged_state_test.cc, to 1e-12 m.
-// [long]: the quick case (cases/quick/plain.prm) at 1, 2 and 4 ranks, its wear per revolution
-// over the staged revolutions within the seeds' 95 % interval that cases/quick's report wrote
-// into the README.
+// [long]: the small sector (cases/sector-30/plain.prm) at 1, 2 and 4 ranks, its wear per
+// revolution over the staged revolutions within the seeds' 95 % interval of its README.
 #include "coupling/output/checkpoint.h"
 #include "small_tester.h"
 #include "wearsim_process.h"
@@ -194,16 +193,17 @@ TEST_CASE("wearsim run over 2 ranks: stopped or killed inside a stage and resume
   check_resumed_elsewhere(one + "/out", d);
 }
 
-TEST_CASE("the quick case at 1, 2 and 4 ranks wears within the seeds' interval",
+TEST_CASE("the small sector at 1, 2 and 4 ranks wears within the seeds' interval",
           "[coupling][run][mpi][long]") {
-  // The README's quick-report block: "| mean +- 95 % interval | 3.35 +- 0.85 | ...".
-  const std::string readme = file_text(std::string(WEAR_SOURCE_DIR) + "/README.md");
+  // The small sector's seeds, cases/sector-30/README.md: "| mean +- 95 % interval | 3.1 +- 0.95 |
+  // ...".
+  const std::string readme = file_text(std::string(WEAR_SOURCE_DIR) + "/cases/sector-30/README.md");
   std::smatch m;
   REQUIRE(std::regex_search(
       readme, m, std::regex(R"(\| mean \+- 95 % interval \| ([0-9.]+) \+- ([0-9.]+) \|)")));
   const double mean = std::stod(m[1]), half = std::stod(m[2]);
-  std::string text = file_text(std::string(WEAR_SOURCE_DIR) + "/cases/quick/plain.prm");
-  text = std::regex_replace(text, std::regex("output/quick/plain"), "out");
+  std::string text = file_text(std::string(WEAR_SOURCE_DIR) + "/cases/sector-30/plain.prm");
+  text = std::regex_replace(text, std::regex("output/sector-30/plain"), "out");
   for (const int n_ranks : {1, 2, 4}) {
     const std::string dir = fresh("run_mpi_quick_" + std::to_string(n_ranks), text);
     REQUIRE(run_in(dir, n_ranks, "", "case.prm", "run.log") == 0);

@@ -28,7 +28,7 @@ struct QuickRun {
 };
 
 QuickRun run_quick(const std::string& kind, int threads) {
-  auto p = read_case(WEAR_SOURCE_DIR "/cases/quick/" + kind + ".prm");
+  auto p = read_case(WEAR_SOURCE_DIR "/cases/sector-30/" + kind + ".prm");
   p.coupling.schedule = "2 dem-only";
   p.dem.n_threads = threads;
   p.output.directory = "threads_" + kind + "_" + std::to_string(threads);

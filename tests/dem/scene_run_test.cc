@@ -374,6 +374,14 @@ TEST_CASE("scene run: a tilted solid from STEP is filled to a count, inside it a
     REQUIRE(local.z >= -0.02 + r - 1e-9);
     REQUIRE(local.z <= 0.02 + r - 1e-9 + 0.0); // the top face z = 60 mm before turning
   }
+  // A count above what the solid holds at the densest packing of its 6 mm spheres,
+  // 0.7405 x 96 cm^3 / (pi/6 x (6 mm)^3) = 628, is refused once the file is read, before any
+  // particle (its volume is not known when the case file is read).
+  scene.fill.count = 629;
+  CHECK_THROWS_WITH(SceneRun(scene, gravel(), build_scene_walls(scene)),
+                    Catch::Contains("Scene/Fill/Count (629)") &&
+                        Catch::Contains("hold, 628: the solid of 'fill_tilted_box.step'"));
+  scene.fill.count = 60;
   // Moved down by 30 mm it pokes through the floor: refused, naming the wall.
   {
     wear::meshes::GmshSession session("fill solid low");

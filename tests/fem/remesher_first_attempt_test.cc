@@ -163,7 +163,7 @@ const StoredSurface stored_surfaces[] = {
 
 TEST_CASE("remeshing stored worn surfaces succeeds at the first attempt", "[fem][remesh]") {
   // Before the patches with holes were made mappable, the first attempt failed on the two
-  // refused inputs of cases/quick/convex.prm (4 of these 6 surfaces passed it).
+  // refused inputs of cases/sector-30/convex.prm (4 of these 6 surfaces passed it).
   std::filesystem::create_directories("remesher_first_attempt");
   int n = 0, n_first = 0;
   for (const auto& stored : stored_surfaces) {

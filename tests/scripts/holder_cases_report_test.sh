@@ -7,10 +7,13 @@
 # 0.5 into 0.6 (10 percentage points narrower); a run short of its schedule is told as stopped by
 # an error or by SIGTERM from the last part of its log, and an element's height is its highest
 # point above the unworn base top. The run folders are stand-ins with the files
-# the report reads.
+# the report reads, summarised by docs/results/run_summary.py as run.sh does (the report reads
+# summaries only).
 set -uo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 report="$root/docs/results/holder_cases_report.py"
+summary="$root/docs/results/run_summary.py"
+source "$root/tests/scripts/stand_in_summaries.sh"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fail() { echo "holder_cases_report_test: $*" >&2; exit 1; }
@@ -39,10 +42,11 @@ PY
   /usr/bin/python3 -c "import h5py, sys; h5py.File(sys.argv[1], 'w').close()" "$1/history.h5" ||
     fail "cannot write a stand-in history.h5 (python3-h5py)"
 }
-check() { # <root> [--out dir]: the report on a root, its output in $tmp/out
+check() { # <root> [--out dir]: the report on the summaries of a root's runs, its output in $tmp/out
   local r=$1
   shift
-  /usr/bin/python3 "$report" --root "$r" --engine e1 "$@" > "$tmp/out" 2>&1
+  summarise_stand_ins "$r"
+  /usr/bin/python3 "$report" --root "$r.summaries" --engine e1 "$@" > "$tmp/out" 2>&1
 }
 
 run_folder "$tmp/a/stress-plain" e1 1e-7 1.0

@@ -5,10 +5,13 @@
 # the one the runs used; and it accepts a complete set of one version (--check reads and checks
 # the folders without writing). Its node-moving section tells how each `reference` run ended
 # (distorted, through its schedule, or stopped, from its log) and its wear against the staged
-# run's over the same revolutions. The run folders are stand-ins with the files it reads.
+# run's over the same revolutions. The run folders are stand-ins with the files it reads,
+# summarised by docs/results/run_summary.py as run.sh does (the report reads summaries only).
 set -uo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 report="$root/docs/results/reference_study_report.py"
+summary="$root/docs/results/run_summary.py"
+source "$root/tests/scripts/stand_in_summaries.sh"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fail() { echo "reference_study_report_test: $*" >&2; exit 1; }
@@ -22,8 +25,11 @@ run_folder() { # <folder> <engine>: a stand-in `wearsim run` folder, 1 dem-only 
   /usr/bin/python3 -c "import h5py, sys; h5py.File(sys.argv[1], 'w').close()" "$1/history.h5" ||
     fail "cannot write a stand-in history.h5 (python3-h5py)"
 }
-check() { # <runs> <calibration>: the report's check, its output in $tmp/out
-  /usr/bin/python3 "$report" --check --runs "$1" --calibration "$2" > "$tmp/out" 2>&1
+check() { # <runs> <calibration>: the report's check on their summaries, its output in $tmp/out
+  summarise_stand_ins "$1"
+  rm -rf "$2.summary"
+  /usr/bin/python3 "$summary" "$2" "$2.summary" > /dev/null || fail "run_summary.py refused the stand-in $2"
+  /usr/bin/python3 "$report" --check --runs "$1.summaries" --calibration "$2.summary" > "$tmp/out" 2>&1
 }
 
 run_folder "$tmp/a/plain" e1
@@ -51,7 +57,7 @@ grep -q "convex-s4: e3" "$tmp/out" || fail "the refusal does not name the odd ru
 # The study pair incomplete.
 run_folder "$tmp/c/plain" e1
 check "$tmp/c" "$tmp/cal" && fail "accepted a study without its convex run"
-grep -q "c/convex' is missing" "$tmp/out" || fail "the refusal does not name the missing run: $(cat "$tmp/out")"
+grep -q "c.summaries/convex' is missing" "$tmp/out" || fail "the refusal does not name the missing run: $(cat "$tmp/out")"
 
 # A run folder without its engine version (older than the study).
 run_folder "$tmp/d/plain" e1
@@ -98,7 +104,8 @@ reference_folder() { # <folder> <planned revolutions> <wear per revolution [m^3]
   done
 }
 section() { # <runs>: the node-moving section of the report on these folders, in $tmp/out
-  /usr/bin/python3 - "$root/docs/results" "$1" > "$tmp/out" 2>&1 <<'PY'
+  summarise_stand_ins "$1"
+  /usr/bin/python3 - "$root/docs/results" "$1.summaries" > "$tmp/out" 2>&1 <<'PY'
 import os, sys
 sys.path.insert(0, sys.argv[1])
 import reference_study_report as R
@@ -132,7 +139,8 @@ grep -qF "| plain | 1 | distorted in revolution 1: inverted face at face 7 (C12)
 # (plain-s2 1 of 5 revolutions, convex-s2 started without a revolution) and its wear so far
 # against s = 3's same revolutions; the stand-in s = 3 pair reaches 56 h (2 revolutions from 2).
 trend() { # <runs>: the size-trend section on these folders (missing: R.load_runs'), in $tmp/out
-  /usr/bin/python3 - "$root/docs/results" "$1" > "$tmp/out" 2>&1 <<'PY2'
+  summarise_stand_ins "$1"
+  /usr/bin/python3 - "$root/docs/results" "$1.summaries" > "$tmp/out" 2>&1 <<'PY2'
 import sys
 sys.path.insert(0, sys.argv[1])
 import reference_study_report as R
@@ -152,7 +160,9 @@ run_folder "$tmp/g/plain-s2" e1
 printf '  set Schedule = 3 dem-only, 2 staged\n' >> "$tmp/g/plain-s2/parameters.prm"
 printf 'revolution,wear_volume_m3,steady_revolution\n1,6.5e-08,0\n' > "$tmp/g/plain-s2/summary.csv"
 printf 'stage,scheme_name,first_revolution\n1,dem-only,1\n' > "$tmp/g/plain-s2/stages.csv"
-mkdir -p "$tmp/g/convex-s2"
+mkdir -p "$tmp/g/convex-s2"  # started: its parameters and the header of its summary.csv
+sed 's/plain-s2/convex-s2/' "$tmp/g/plain-s2/parameters.prm" > "$tmp/g/convex-s2/parameters.prm"
+printf 'revolution,wear_volume_m3,steady_revolution\n' > "$tmp/g/convex-s2/summary.csv"
 trend "$tmp/g" || fail "no size-trend section: $(cat "$tmp/out")"
 grep -qF "| 3 | 143.00 | 123.00 | 0.860 | plain: 1, 1; convex: 1, 1 |" "$tmp/out" ||
   fail "the s = 3 pair at 56 h is not 143 and 123 mm^3: $(cat "$tmp/out")"

@@ -1,5 +1,5 @@
 #!/bin/bash
-# The wear tester as a scene against the built-in tester: the default case (cases/quick, plain
+# The wear tester as a scene against the built-in tester: the small sector (cases/sector-30, plain
 # and convex, 30-degree sector, s = 4, 2 dem-only and 4 staged revolutions at 20x) run both
 # ways over the same insertion seeds, one thread per run, as many runs at once as the machine
 # has cores. compare_scene.py then sets each path's wear per revolution (revolutions 3 to 6)
@@ -28,7 +28,7 @@ start=$(date +%s)
 
 run_one() { # <path: tester|scene> <kind> <seed>
   local out="$root/$1-$2-$3" prm command
-  if [ "$1" = tester ]; then prm=cases/quick/$2.prm command=run; else prm=cases/reference/scene/quick-$2.prm command=scene-run; fi
+  if [ "$1" = tester ]; then prm=cases/sector-30/$2.prm command=run; else prm=cases/reference/scene/quick-$2.prm command=scene-run; fi
   sed -e "s|^subsection DEM|subsection DEM\n  set Seed = $3|" \
       -e "s|set Directory = .*|set Directory = $out|" "$prm" > "$out.prm"
   "$wearsim" $command --overwrite "$out.prm" > "$out.log" 2>&1

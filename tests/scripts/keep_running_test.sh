@@ -1,0 +1,65 @@
+#!/bin/bash
+# cases/reference-study/keep_running.sh and the restore run.sh makes (case_paths.sh,
+# restore_running) on a stand-in run: an unfinished run is kept as its compressed checkpoint,
+# the index entries of its stage files and its parameters, beside its case file; restored into
+# an output folder that holds no run, the checkpoint is the same bytes and each stage file a
+# stub with the same index entry (a fixed-length string, as wearsim reads it); a folder that
+# holds a run is left alone; a checkpoint above CAP_MB is refused and the kept set left as it
+# is; a finished run's kept set is deleted.
+set -uo pipefail
+root=$(cd "$(dirname "$0")/../.." && pwd)
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail() { echo "keep_running_test: $*" >&2; exit 1; }
+
+prm=$tmp/case/plain.prm out=$tmp/output/plain-run keep=$tmp/case/running/plain-run
+mkdir -p "$tmp/case" "$out/surface" "$out/volume"
+printf 'subsection Output\n  set Directory = %s\nend\n' "$out" > "$prm"
+printf '# Fully resolved parameters of %s\n# Engine version: e1\n' "$prm" > "$out/parameters.prm"
+checkpoint() { # <stages done>: the stand-in checkpoint of a 3-stage schedule
+  /usr/bin/python3 - "$out" "$1" <<'PY' || fail "cannot write the stand-in run (python3-h5py)"
+import sys, h5py, numpy as np
+out, done = sys.argv[1], int(sys.argv[2])
+with h5py.File(out + "/checkpoint.h5", "w") as h:
+    h.attrs["stages_done"] = done
+    h.attrs["parameters"] = np.bytes_(b"subsection Coupling\n  set Schedule = 1 dem-only, 2 staged\nend\n")
+    h["dem/position"] = np.arange(3000.0)
+for kind, stage in (("surface", 0), ("surface", 1), ("volume", 1)):
+    with h5py.File(f"{out}/{kind}/stage_{stage:04d}.h5", "w") as h:
+        h.attrs["xdmf"] = np.bytes_(f"<Grid Name=\"{kind}_{stage}\"/>\n".encode())
+        h["points"] = np.zeros((4, 3))
+PY
+}
+keep() { bash "$root/cases/reference-study/keep_running.sh" "$prm" > "$tmp/out" 2>&1; }
+
+checkpoint 1
+keep || fail "refused an unfinished run: $(cat "$tmp/out")"
+[ -f "$keep/checkpoint.h5.xz" ] && [ -f "$keep/parameters.prm" ] && grep -q "1 of 3 stages done, engine e1" "$keep/kept.txt" ||
+  fail "the kept set is not complete: $(ls -R "$keep") $(cat "$tmp/out")"
+[ "$(ls "$keep/index")" = "$(printf 'surface_stage_0000.xml\nsurface_stage_0001.xml\nvolume_stage_0001.xml')" ] ||
+  fail "the index entries kept are not the three stage files': $(ls "$keep/index")"
+cp "$out/checkpoint.h5" "$tmp/checkpoint.orig"
+
+rm -rf "$out"
+restored=$(cd "$root" && source cases/reference-study/case_paths.sh && restore_running "$prm") ||
+  fail "the kept set was not restored"
+[ -n "$restored" ] && cmp -s "$tmp/checkpoint.orig" "$out/checkpoint.h5" || fail "the restored checkpoint differs"
+/usr/bin/python3 - "$out" <<'PY' || fail "the restored stubs do not hold the index entries"
+import sys, h5py
+for kind, stage in (("surface", 0), ("surface", 1), ("volume", 1)):
+    with h5py.File(f"{sys.argv[1]}/{kind}/stage_{stage:04d}.h5", "r") as h:
+        t = h.attrs.get_id("xdmf").get_type()
+        assert not t.is_variable_str() and h.attrs["xdmf"] == f"<Grid Name=\"{kind}_{stage}\"/>\n".encode()
+        assert "points" not in h
+PY
+printf 'x' > "$out/summary.csv"
+again=$(cd "$root" && source cases/reference-study/case_paths.sh && restore_running "$prm") &&
+  [ -z "$again" ] || fail "restored into a folder that holds a run: $again"
+
+CAP_MB=0 keep && fail "kept a checkpoint above CAP_MB"
+grep -q "above CAP_MB=0" "$tmp/out" && [ -f "$keep/checkpoint.h5.xz" ] || fail "the refusal lost the kept set: $(cat "$tmp/out")"
+
+checkpoint 3
+keep || fail "refused a finished run: $(cat "$tmp/out")"
+[ ! -d "$keep" ] && grep -q "finished (3 of 3 stages)" "$tmp/out" || fail "a finished run's kept set stays: $(cat "$tmp/out")"
+echo "keep_running_test: passed"
