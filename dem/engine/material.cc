@@ -48,7 +48,8 @@ void MaterialTable::set_pair(int a, int b, const PairProperties& p) {
   const std::string who = "pair (" + materials_[a].name + ", " + materials_[b].name + "): ";
   require(p.restitution > 0 && p.restitution <= 1, who + "restitution must lie in (0, 1]");
   require(p.friction >= 0, who + "friction must not be negative");
-  require(p.rolling_friction >= 0, who + "rolling friction must not be negative");
+  require(p.rolling_friction >= 0 && p.rolling_friction <= max_rolling_friction,
+          who + "rolling friction must lie in [0, 1] (max_rolling_friction)");
   pairs_[a * n + b] = pairs_[b * n + a] = p;
   pair_set_[a * n + b] = pair_set_[b * n + a] = true;
 }

@@ -17,8 +17,18 @@ struct Material {
 struct PairProperties {
   double restitution = 0.5;      ///< [-] normal coefficient of restitution, in (0, 1]
   double friction = 0.5;         ///< [-] static (Coulomb) friction coefficient
-  double rolling_friction = 0.0; ///< [-] constant-directional-torque coefficient
+  double rolling_friction = 0.0; ///< [-] constant-directional-torque coefficient, in [0, 1]
 };
+
+/// [-] The largest rolling friction coefficient mu_r a pair may have (MaterialTable::set_pair;
+/// the case file's "Rolling friction ..." parameters are refused above it by name, validate()
+/// of dem/tester). The rolling resistance is the torque mu_r F_n a, a the centre-to-contact
+/// distance (docs/theory.md section 2): the couple of the normal force shifted off the line of
+/// centres by mu_r a. That shift can reach at most the edge of the particle (a sphere's
+/// contact patch, or for a real grain the face it rests on, lies within a radius of its
+/// centre), so mu_r = 1 is a physical bound; DEM studies of granular materials stay below it,
+/// mostly at 0.01 to 0.5. Keep the documentation of "Rolling friction ..." in step.
+constexpr double max_rolling_friction = 1;
 
 /// How the damping ratio is obtained from the restitution coefficient.
 enum class RestitutionMapping {

@@ -63,15 +63,6 @@ void visit_parameters(const std::string& which, DemMaterial& m, Visitor& v) {
   v.real(which + " density", m.density, "[kg/m^3] Solid density of the " + which + ".");
 }
 
-/// [-] The largest rolling friction coefficient mu_r a case may set (validate()). The
-/// rolling resistance is the torque mu_r F_n a, a the centre-to-contact distance
-/// (docs/theory.md section 2): the couple of the normal force shifted off the line of
-/// centres by mu_r a. That shift can reach at most the edge of the particle (a sphere's
-/// contact patch, or for a real grain the face it rests on, lies within a radius of its
-/// centre), so mu_r = 1 is a physical bound; DEM studies of granular materials stay below it,
-/// mostly at 0.01 to 0.5. Keep the documentation of "Rolling friction ..." below in step.
-constexpr double max_rolling_friction = 1;
-
 /// "Restitution particle-wall", "Friction particle-wall", ... for which = "particle-wall".
 template <typename Visitor>
 void visit_parameters(const std::string& which, PairProperties& p, Visitor& v) {
