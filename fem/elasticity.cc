@@ -1,4 +1,4 @@
-// Linear elasticity on the sample (model.md section 6).
+// Linear elasticity on the sample (docs/theory.md section 6.2).
 //
 //   -div sigma(u) = 0,  sigma = lambda tr(eps) I + 2 mu eps,  eps = sym grad u
 //   u = 0 on the bottom face (label 1) or a part's clamped surfaces; sigma n = t_f = F_f / A_f on

@@ -1,5 +1,5 @@
 #pragma once
-// Linear elasticity of the sample (model.md section 6): simplex P1 or P2 elements, clamped
+// Linear elasticity of the sample (docs/theory.md section 6.2): simplex P1 or P2 elements, clamped
 // bottom face (and, in the holder, sides held at zero normal displacement), tractions from an
 // extensive per-face force field on the labelled boundary.
 #include "fem/boundary_face_map.h"

@@ -1,6 +1,6 @@
 // Surface relaxation before a recession, interior mesh motion and tetrahedron quality.
 //
-// The recession itself (model.md section 6) is in meshes/recession.cc.
+// The recession itself (docs/theory.md section 6.3) is in meshes/recession.cc.
 // Relaxation: a vertex moves by a weight times the offset to the mean of its edge neighbours,
 // restricted to its tangent plane (worn region), its flat face group or crease (unworn
 // surface), or the chord between its crease neighbours (where the wear face meets a side).
@@ -14,6 +14,7 @@
 //   dihedral angle at edge (i, j) = pi - angle between the outward normals of its two faces.
 #include "fem/mesh_motion.h"
 
+#include "meshes/constants.h"
 #include "meshes/sliding_constraint.h"
 #include "meshes/stopwatch.h"
 
@@ -41,7 +42,6 @@ namespace wear::fem {
 using meshes::Vec3;
 
 namespace {
-constexpr double pi = 3.14159265358979323846;
 
 Vec3 point(const dealii::Point<3>& p) {
   return {p[0], p[1], p[2]};

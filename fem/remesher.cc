@@ -37,6 +37,7 @@
 // An attempt also takes a third of the time: see set_size_field.
 #include "fem/remesher.h"
 
+#include "meshes/constants.h"
 #include "fem/discrete_patches.h"
 #include "meshes/gmsh_session.h"
 #include "meshes/mesh_quality.h"
@@ -58,7 +59,6 @@
 namespace wear::fem {
 
 namespace {
-constexpr double pi = 3.14159265358979323846;
 
 // Adds the triangles of `worn` as one discrete surface per label; element tag = face + 1.
 // Returns the label of each surface entity.

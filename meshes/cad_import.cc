@@ -21,6 +21,7 @@
 // 'Shapes/<product>'), and its STEP writer writes no names: surfaces are named by index.
 #include "meshes/cad_import.h"
 
+#include "meshes/constants.h"
 #include "meshes/gmsh_session.h"
 #include "meshes/stl_io.h"
 
@@ -194,7 +195,7 @@ void rotate_from_z(const gmsh::vectorpair& e, const Vec3& c, const Vec3& n) {
   const double s = norm(k), co = dot(z, n);
   if (s < 1e-14) {
     if (co < 0)
-      gmsh::model::occ::rotate(e, c.x, c.y, c.z, 1, 0, 0, M_PI);
+      gmsh::model::occ::rotate(e, c.x, c.y, c.z, 1, 0, 0, wear::pi);
     return;
   }
   gmsh::model::occ::rotate(e, c.x, c.y, c.z, k.x, k.y, k.z, std::atan2(s, co));

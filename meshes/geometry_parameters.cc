@@ -6,6 +6,7 @@
 // is at most 2 semi_y. A footprint must also keep a gap to the base edges.
 #include "meshes/geometry_parameters.h"
 
+#include "meshes/constants.h"
 #include "meshes/sample_generator.h"
 
 #include <cmath>
@@ -107,7 +108,7 @@ void validate(const GeometryParameters& g) {
   require(std::abs(p.incline_deg) < 30, L + "Incline", "must be below 30 degrees");
   // The lowest point: the bottom (of the holder) at the lower end of the inclined sample.
   const double half = g.sample.length / 2 + rim, depth = g.sample.thickness + rim;
-  const double incline = std::abs(p.incline_deg) * 3.14159265358979323846 / 180;
+  const double incline = std::abs(p.incline_deg) * pi / 180;
   require(p.wear_face_height - depth * std::cos(incline) - half * std::sin(incline) > 0,
           L + "Wear face height", what + " would cut through the floor");
 }

@@ -8,6 +8,8 @@
 // face against the other face, with strict interiors so shared vertices do not count.
 #include "meshes/mesh_quality.h"
 
+#include "meshes/constants.h"
+
 #include <algorithm>
 #include <cmath>
 #include <unordered_map>
@@ -15,8 +17,6 @@
 namespace wear::meshes {
 
 namespace {
-
-constexpr double pi = 3.14159265358979323846;
 
 bool segment_hits_triangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b,
                            const Vec3& c) {

@@ -35,3 +35,42 @@
 #include <cstdint>
 #include <string>
 #include <vector>
+
+namespace wear::meshes {
+
+/// A visitor that only collects the case-file paths of the parameters it is shown
+/// ("DEM/Rotation rate"), for checks that need to know which entries a visit function names.
+struct ParameterPaths {
+  std::vector<std::string> paths;   ///< in visiting order
+  std::vector<std::string> section; ///< the subsections entered
+
+  void enter(const std::string& s) { section.push_back(s); }
+  void leave() { section.pop_back(); }
+  void real(const std::string& n, double&, const std::string&) { add(n); }
+  void integer(const std::string& n, int&, int, int, const std::string&) { add(n); }
+  void unsigned_integer(const std::string& n, unsigned int&, int, int, const std::string&) {
+    add(n);
+  }
+  void count(const std::string& n, std::uint64_t&, const std::string&) { add(n); }
+  void boolean(const std::string& n, bool&, const std::string&) { add(n); }
+  void choice(const std::string& n, bool&, const std::string&, const std::string&,
+              const std::string&) {
+    add(n);
+  }
+  void selection(const std::string& n, std::string&, const std::string&, const std::string&) {
+    add(n);
+  }
+  void text(const std::string& n, std::string&, const std::string&) { add(n); }
+  void real_list(const std::string& n, std::vector<double>&, const std::string&) { add(n); }
+  void int_list(const std::string& n, std::vector<int>&, const std::string&) { add(n); }
+
+private:
+  void add(const std::string& name) {
+    std::string p;
+    for (const auto& s : section)
+      p += s + "/";
+    paths.push_back(p + name);
+  }
+};
+
+} // namespace wear::meshes

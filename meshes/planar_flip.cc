@@ -8,6 +8,8 @@
 // flip raises the smallest angle of the pair, so the passes end (bounded for safety).
 #include "meshes/planar_flip.h"
 
+#include "meshes/constants.h"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -35,7 +37,7 @@ bool runs(const Triangle& t, std::uint32_t a, std::uint32_t b) {
 } // namespace
 
 std::size_t flip_flat_edges(SurfaceMesh& m, double max_angle_deg) {
-  const double cos_flat = std::cos(max_angle_deg * 3.14159265358979323846 / 180);
+  const double cos_flat = std::cos(max_angle_deg * pi / 180);
   std::size_t n_flips = 0;
   for (int pass = 0; pass < 100; ++pass) {
     std::size_t n_pass = 0;
@@ -55,7 +57,7 @@ std::size_t flip_flat_edges(SurfaceMesh& m, double max_angle_deg) {
         std::swap(a, b);
       const std::uint32_t c = opposite(m.triangles[f], a, b), d = opposite(m.triangles[g], a, b);
       const auto& x = m.vertices;
-      if (angle_at(x[c], x[a], x[b]) + angle_at(x[d], x[a], x[b]) <= 3.14159265358979323846 + 1e-12)
+      if (angle_at(x[c], x[a], x[b]) + angle_at(x[d], x[a], x[b]) <= pi + 1e-12)
         continue;
       const Triangle t1{a, d, c}, t2{d, b, c};
       const Vec3 n1 = cross(x[d] - x[a], x[c] - x[a]), n2 = cross(x[b] - x[d], x[c] - x[d]);

@@ -1,4 +1,4 @@
-// Recession of a worn surface (model.md sections 5 and 6), for both deformation schemes.
+// Recession of a worn surface (docs/theory.md sections 5 and 6.3), for both deformation schemes.
 //
 // Area-weighted node recession: D_v = sum_{f in W(v)} V_f / sum_{f in W(v)} A_f along
 // n_v = normalized(sum_{f in W(v)} A_f n_f), W(v) the wearing faces around v; x_v -= D_v n_v.

@@ -9,12 +9,13 @@
 // every trajectory.
 #include "meshes/sample_frame.h"
 
+#include "meshes/constants.h"
+
 #include <cmath>
 
 namespace wear::meshes {
 
 namespace {
-constexpr double pi = 3.14159265358979323846;
 
 // A copy of the surface with every vertex mapped, as a new revision of the same triangles.
 template <typename Map>

@@ -8,13 +8,15 @@
 // in these planes and lines leaves its shape, and the enclosed volume, unchanged.
 #include "meshes/sliding_constraint.h"
 
+#include "meshes/constants.h"
+
 #include <cmath>
 
 namespace wear::meshes {
 
 std::vector<SlidingConstraint> sliding_constraints(const SurfaceMesh& m, double crease_angle_deg) {
   const std::size_t nv = m.n_vertices();
-  const double cos_crease = std::cos(crease_angle_deg * 3.14159265358979323846 / 180);
+  const double cos_crease = std::cos(crease_angle_deg * pi / 180);
   // Up to three groups per vertex: a fourth makes it fixed anyway.
   struct Groups {
     int n = 0;

@@ -7,6 +7,8 @@
 // Segment through triangle: Moeller-Trumbore, the segment's parameter in [0, 1].
 #include "meshes/solid_region.h"
 
+#include "meshes/constants.h"
+
 #include <cmath>
 #include <stdexcept>
 
@@ -71,7 +73,6 @@ bool SolidRegion::contains(const Vec3& p) const {
     const double denominator = la * lb * lc + dot(a, b) * lc + dot(b, c) * la + dot(c, a) * lb;
     omega += 2 * std::atan2(numerator, denominator);
   }
-  constexpr double pi = 3.14159265358979323846;
   return omega > 2 * pi; // winding number above 1/2
 }
 

@@ -13,6 +13,7 @@
 // without a search.
 #include "meshes/tester_walls.h"
 
+#include "meshes/constants.h"
 #include "meshes/structured_grid.h"
 
 #include <algorithm>
@@ -24,7 +25,6 @@
 namespace wear::meshes {
 
 namespace {
-constexpr double pi = 3.14159265358979323846;
 int divisions(double length, double size) {
   return std::max(1, static_cast<int>(std::ceil(length / size - 1e-9)));
 }

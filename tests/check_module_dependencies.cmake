@@ -1,8 +1,9 @@
 # Fails when a module includes what it must not (links go one way):
 #   meshes/ includes no other module and no deal.II;
-#   dem/ never includes deal.II, fem/ or coupling/, and its engine never includes the wear
-#   tester built on it (dem/tester/) nor the ranks' MPI layer (dem/parallel/); only
-#   dem/parallel includes mpi.h;
+#   dem/ never includes deal.II, fem/ or coupling/; its engine never includes what runs on
+#   it (dem/wear/, dem/scene/, dem/tester/) nor the ranks' MPI layer (dem/parallel/); the
+#   wall loads and wear laws (dem/wear/) include neither the scenes nor the tester, and the
+#   scenes never include the tester; only dem/parallel includes mpi.h;
 #   fem/ never includes dem/ or coupling/;
 #   inside coupling/, only the command line (app/) sees everything: the loop and the run
 #   output never include app/, the parameters include neither the loop, the output nor
@@ -10,9 +11,10 @@
 set(rules
   "meshes|deal\\.II/|fem/|dem/|coupling/"
   "dem|deal\\.II/|fem/|coupling/"
-  "dem/engine|dem/tester/|dem/parallel/|mpi\\.h"
+  "dem/engine|dem/tester/|dem/scene/|dem/wear/|dem/parallel/|mpi\\.h"
+  "dem/wear|dem/tester/|dem/scene/|mpi\\.h"
+  "dem/scene|dem/tester/|mpi\\.h"
   "dem/tester|mpi\\.h"
-  "dem/scene|mpi\\.h"
   "dem/validation|mpi\\.h"
   "fem|dem/|coupling/"
   "coupling/loop|coupling/app/"

@@ -17,7 +17,7 @@
 #include "coupling/output/scene_series.h"
 #include "coupling/parameters/case_parameters.h"
 #include "dem/scene/scene_run.h"
-#include "dem/tester/wear_law.h"
+#include "dem/wear/wear_law.h"
 #include "fem/worn_sample.h"
 
 #include <map>

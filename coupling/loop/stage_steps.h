@@ -6,7 +6,7 @@
 #include "coupling/loop/stage_record.h"
 #include "coupling/loop/wear_increment.h"
 #include "coupling/output/run_output.h"
-#include "dem/tester/wall_loads.h"
+#include "dem/wear/wall_loads.h"
 #include "fem/elasticity.h"
 #include "fem/worn_sample.h"
 #include "meshes/face_field.h"

@@ -10,8 +10,8 @@
 #include "dem/scene/flux_plane.h"
 #include "dem/scene/inlet.h"
 #include "dem/tester/tester_evaluation.h"
-#include "dem/tester/wall_loads.h"
 #include "dem/tester/wear_tester.h"
+#include "dem/wear/wall_loads.h"
 #include "fem/worn_sample.h"
 
 #include <optional>

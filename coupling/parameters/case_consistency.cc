@@ -40,6 +40,8 @@
 // steady-state settings a run cannot meet; a mesh coarser than the elements it should show.
 #include "coupling/parameters/case_consistency.h"
 
+#include "meshes/constants.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -49,7 +51,6 @@
 namespace wear::coupling {
 
 namespace {
-constexpr double pi = 3.14159265358979323846;
 constexpr double gravity = 9.81;              ///< [m/s^2]
 constexpr double max_element_slenderness = 7; ///< [-] h / min(a, b) that gmsh still meshes
 

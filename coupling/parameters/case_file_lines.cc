@@ -71,8 +71,8 @@ std::string lines_text(const std::vector<int>& lines) {
 /// Reads the last file of `chain` inside the subsections `path` (an INCLUDEd file is read
 /// where its INCLUDE line stands); appends a sentence to `notes` for each entry this file
 /// sets more than once.
-void walk(std::vector<Link>& chain, std::vector<std::string> path,
-          std::vector<std::string>& notes) {
+void walk(std::vector<Link>& chain, std::vector<std::string> path, CaseFileWalk& result) {
+  std::vector<std::string>& notes = result.repeated;
   std::ifstream in(chain.back().name);
   if (!in)
     return;                                   // the handler names the file it cannot open
@@ -113,6 +113,7 @@ void walk(std::vector<Link>& chain, std::vector<std::string> path,
       if (lines.empty())
         order.push_back(entry);
       lines.push_back(first);
+      result.entries.push_back({entry, chain.back().name, first});
     } else if (starts_with(line, "include ", "INCLUDE ")) {
       const std::string target = trim(line.substr(8));
       std::error_code ignore;
@@ -124,7 +125,7 @@ void walk(std::vector<Link>& chain, std::vector<std::string> path,
         if (std::filesystem::equivalent(target, link.name, ignore))
           refuse_loop(chain, target, first);
       chain.push_back({target, first});
-      walk(chain, path, notes);
+      walk(chain, path, result);
       chain.pop_back();
     }
   }
@@ -143,11 +144,15 @@ void walk(std::vector<Link>& chain, std::vector<std::string> path,
 
 } // namespace
 
-std::vector<std::string> check_case_file_lines(const std::string& path) {
+CaseFileWalk walk_case_file(const std::string& path) {
   std::vector<Link> chain{{path, 0}};
-  std::vector<std::string> notes;
-  walk(chain, {}, notes);
-  return notes;
+  CaseFileWalk result;
+  walk(chain, {}, result);
+  return result;
+}
+
+std::vector<std::string> check_case_file_lines(const std::string& path) {
+  return walk_case_file(path).repeated;
 }
 
 } // namespace wear::coupling

@@ -2,7 +2,8 @@
 // A case file's lines as deal.II's ParameterHandler reads them (comments, continued lines,
 // `subsection`, `end`, `set`, `INCLUDE`), walked before it parses them, for two things the
 // handler does not see: an INCLUDE loop (the handler follows it until the stack overflows)
-// and a parameter set twice in one file (the handler keeps the last value silently).
+// and a parameter set twice in one file (the handler keeps the last value silently); and
+// which entries the files set at all (the handler cannot tell a default from a value set).
 #include <string>
 #include <vector>
 
@@ -18,5 +19,21 @@ namespace wear::coupling {
 /// specialise a case and is not reported. Files that cannot be opened are left to the
 /// handler, whose message names them.
 std::vector<std::string> check_case_file_lines(const std::string& path);
+
+/// One `set` line of a case file or of a file it INCLUDEs.
+struct CaseFileEntry {
+  std::string path; ///< the entry's case-file path, "DEM/Rotation rate"
+  std::string file; ///< the file that sets it, as the case or its INCLUDE line names it
+  int line = 0;     ///< the line (the first of a continued line)
+};
+
+/// What check_case_file_lines finds, and every entry the files set, in reading order.
+struct CaseFileWalk {
+  std::vector<std::string> repeated; ///< check_case_file_lines' sentences
+  std::vector<CaseFileEntry> entries;
+};
+
+/// check_case_file_lines, and the entries set.
+CaseFileWalk walk_case_file(const std::string& path);
 
 } // namespace wear::coupling

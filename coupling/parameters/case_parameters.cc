@@ -2,21 +2,25 @@
 //
 // Values are in SI units (m, deg for angles as named). Before the handler reads a file,
 // case_file_lines.h walks its lines for what the handler does not see: an INCLUDE loop and a
-// parameter set twice in one file. ParameterHandler refuses undeclared entries, which makes
-// misspelled names errors; validate() in each module then checks physical sense and names
-// the parameter, and check_consistency (case_consistency.h) the combinations that would fail
-// later, before anything is written. The resolved file is produced by declaring, setting
-// every value from the structs and printing in PRM style, so it always round-trips.
+// parameter set twice in one file, and the entries set. ParameterHandler refuses undeclared
+// entries, which makes misspelled names errors; an entry the case does not use (a tester's
+// parameter in a scene, a scene's in the tester: case_scope.h) is refused by name; validate() in
+// each module then checks physical sense and names the parameter, and check_consistency
+// (case_consistency.h) the combinations that would fail later, before anything is written. The
+// resolved file is produced by declaring, setting every value from the structs and printing in PRM
+// style, so it always round-trips.
 #include "coupling/parameters/case_parameters.h"
 
 #include "coupling/parameters/case_consistency.h"
 #include "coupling/parameters/case_file_lines.h"
+#include "coupling/parameters/case_scope.h"
 #include "coupling/parameters/engine_version.h"
 #include "dem/tester/wear_tester.h"
 #include "meshes/atomic_file.h"
 
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
@@ -198,14 +202,54 @@ void declare_parameters(ParameterHandler& prm, const dem::SceneNames& names) {
   visit(defaults, declare);
 }
 
+namespace {
+/// The value of the entry at `path` ("DEM/Rotation rate") in `prm`.
+std::string value_at(ParameterHandler& prm, const std::string& path) {
+  std::vector<std::string> parts;
+  for (std::size_t b = 0, e; b <= path.size(); b = e + 1) {
+    e = std::min(path.find('/', b), path.size());
+    parts.push_back(path.substr(b, e - b));
+  }
+  for (std::size_t k = 0; k + 1 < parts.size(); ++k)
+    prm.enter_subsection(parts[k]);
+  const std::string value = prm.get(parts.back());
+  for (std::size_t k = 0; k + 1 < parts.size(); ++k)
+    prm.leave_subsection();
+  return value;
+}
+
+/// The entries of `set` whose value in `p` differs from its default, each compared in the
+/// resolved form (the same text for the same value). A resolved parameters.prm sets every
+/// entry, and one left at its default changes nothing whether the case uses it or not.
+std::vector<CaseFileEntry> changed_entries(const CaseParameters& p,
+                                           const std::vector<CaseFileEntry>& set) {
+  const dem::SceneNames names{p.scene.wall_names, p.scene.inlet_names, p.scene.outlet_names,
+                              p.scene.flux_plane_names};
+  ParameterHandler given, defaults;
+  declare_parameters(given, names);
+  declare_parameters(defaults, names);
+  CaseParameters copy = p, plain = defaults_with_scene(names);
+  Store store_given{given}, store_defaults{defaults};
+  visit(copy, store_given);
+  visit(plain, store_defaults);
+  std::vector<CaseFileEntry> changed;
+  for (const auto& e : set)
+    if (value_at(given, e.path) != value_at(defaults, e.path))
+      changed.push_back(e);
+  return changed;
+}
+} // namespace
+
 CaseParameters read_case(const std::string& path, std::ostream& warnings) {
   if (!std::filesystem::exists(path))
     throw std::runtime_error("case file '" + path + "' does not exist");
   // Our own walk of the lines first: ParameterHandler would follow an INCLUDE loop until the
   // stack overflows, and keeps the last of two values of one entry without a word. The
   // repetitions are warned at once, before any refusal below that the value kept may cause.
+  CaseFileWalk lines;
   try {
-    for (const auto& note : check_case_file_lines(path))
+    lines = walk_case_file(path);
+    for (const auto& note : lines.repeated)
       warnings << "warning: case file '" << path << "': " << note << "\n";
   } catch (const std::invalid_argument& e) {
     throw std::runtime_error("case file '" + path + "': " + e.what());
@@ -239,6 +283,7 @@ CaseParameters read_case(const std::string& path, std::ostream& warnings) {
   visit(p, parse);
   std::vector<std::string> notes;
   try {
+    require_used_parameters(p, changed_entries(p, lines.entries));
     meshes::validate(p.geometry);
     dem::validate(p.scene);
     dem::validate(p.dem);

@@ -7,7 +7,7 @@
 #include "dem/scene/scene_parameters.h"
 #include "dem/tester/reference_deformation.h"
 #include "dem/tester/tester_parameters.h"
-#include "dem/tester/wear_law.h"
+#include "dem/wear/wear_law.h"
 #include "fem/fem_parameters.h"
 #include "meshes/geometry_parameters.h"
 

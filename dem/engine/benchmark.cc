@@ -3,6 +3,7 @@
 // and nz = round(45000 / sites per layer) layers, giving the anchor's 44,448 particles.
 #include "dem/engine/benchmark.h"
 
+#include "meshes/constants.h"
 #include "dem/engine/filling.h"
 #include "meshes/structured_grid.h"
 #include "meshes/tester_walls.h"
@@ -13,7 +14,6 @@
 namespace wear::dem {
 
 namespace {
-constexpr double pi = 3.14159265358979323846;
 constexpr double d0 = 7.95e-3, ri = 0.29, ro = 0.50;
 
 // Lattice sites of one layer inside the full annulus, as gen_meshes.py counts them.
@@ -156,8 +156,7 @@ void build_benchmark(System& s, const std::string& workload, bool mesh_walls) {
 }
 
 SlabDecomposition benchmark_slabs(const System& s, int n_ranks) {
-  const double angle =
-      s.settings.periodic.enabled ? s.settings.periodic.angle : 2 * 3.14159265358979323846;
+  const double angle = s.settings.periodic.enabled ? s.settings.periodic.angle : 2 * pi;
   return SlabDecomposition::uniform_angular(angle, n_ranks, ri);
 }
 

@@ -1,10 +1,10 @@
 #pragma once
 // Hertz-Mindlin (no slip) contact with restitution-based viscous damping, tangential
 // history with a Coulomb limit, and constant-directional-torque rolling friction
-// (shared/spec/model.md section 2). The tangential force acts at the undeformed radius
+// (docs/theory.md section 2). The tangential force acts at the undeformed radius
 // (rigid-body lever, as in the Chung & Ooi relations and EDEM); rolling friction uses the
-// centre-to-contact distance as model.md asks. Inline: called once per contact per step, never
-// through a virtual function.
+// centre-to-contact distance as docs/theory.md section 2 states. Inline: called once per contact
+// per step, never through a virtual function.
 #include "dem/engine/material.h"
 #include "meshes/vec3.h"
 

@@ -10,6 +10,7 @@
 // settling test and the bed's figures are taken over all ranks.
 #include "dem/engine/filling.h"
 
+#include "meshes/constants.h"
 #include "dem/engine/insertion_grid.h"
 #include "dem/engine/system.h"
 
@@ -83,7 +84,7 @@ FillRegion annular_sector_region(double r_in, double r_out, double angle, double
               return false;
             double th = std::atan2(x.y, x.x);
             if (th < 0)
-              th += 2 * 3.14159265358979323846;
+              th += 2 * pi;
             // keep the margin from both cut planes as an arc length at this radius
             return th * r >= m && (angle - th) * r >= m;
           }};
@@ -162,7 +163,7 @@ double packing_fraction(const Particles& p, double area, double z_lo, double z_h
   double v = 0;
   for (std::size_t i = 0; i < p.n_real; ++i)
     if (p.position[i].z >= z_lo && p.position[i].z < z_hi)
-      v += 4.0 / 3.0 * 3.14159265358979323846 * std::pow(p.radius[i], 3);
+      v += 4.0 / 3.0 * pi * std::pow(p.radius[i], 3);
   return v / (area * (z_hi - z_lo));
 }
 
@@ -178,8 +179,7 @@ FillReport fill_to_height(System& system, const std::function<FillRegion(double)
   const auto frac = psd.number_fractions();
   double mean_volume = 0;
   for (std::size_t k = 0; k < frac.size(); ++k)
-    mean_volume +=
-        frac[k] * 3.14159265358979323846 / 6 * std::pow(psd.diameters[k] * psd.scaling_factor, 3);
+    mean_volume += frac[k] * pi / 6 * std::pow(psd.diameters[k] * psd.scaling_factor, 3);
   const auto n = static_cast<std::size_t>(packing * area * target_height / mean_volume);
   const FillRegion region = make_region(z_floor + loose_factor * target_height);
   const std::size_t got = insert_random(system.particles, region, psd, n, density, material, seed);

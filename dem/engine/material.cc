@@ -1,12 +1,14 @@
 // Materials, pair properties and the restitution-to-damping mapping.
 //
-// Effective moduli (model.md): 1/E* = sum (1 - nu^2)/E, 1/G* = sum 2 (2 - nu)(1 + nu)/E.
-// Damping: beta = ln e / sqrt(ln^2 e + pi^2). With x = L X, t = (L / v0) T and
-// L = (m v0^2 / K)^(2/5), K = 4/3 E* sqrt(R*), the damped Hertz impact becomes
-// X'' = -(X^(3/2) - sqrt(5) beta X^(1/4) X'), independent of m, R, E and v0; the
-// realised restitution is therefore a function of beta alone. Integrated with RK4 until the
-// overlap closes; with the force clamped at zero the last phase is force-free.
+// Effective moduli (docs/theory.md section 2): 1/E* = sum (1 - nu^2)/E, 1/G* = sum 2 (2 - nu)(1 +
+// nu)/E. Damping: beta = ln e / sqrt(ln^2 e + pi^2). With x = L X, t = (L / v0) T and L = (m v0^2 /
+// K)^(2/5), K = 4/3 E* sqrt(R*), the damped Hertz impact becomes X'' = -(X^(3/2) - sqrt(5) beta
+// X^(1/4) X'), independent of m, R, E and v0; the realised restitution is therefore a function of
+// beta alone. Integrated with RK4 until the overlap closes; with the force clamped at zero the last
+// phase is force-free.
 #include "dem/engine/material.h"
+
+#include "meshes/constants.h"
 
 #include <cmath>
 #include <limits>
@@ -15,7 +17,6 @@
 namespace wear::dem {
 
 namespace {
-constexpr double pi = 3.14159265358979323846;
 void require(bool ok, const std::string& what) {
   if (!ok)
     throw std::invalid_argument(what);

@@ -32,7 +32,8 @@ constexpr double max_rolling_friction = 1;
 
 /// How the damping ratio is obtained from the restitution coefficient.
 enum class RestitutionMapping {
-  /// beta = ln e / sqrt(ln^2 e + pi^2) (model.md). With the normal force clamped at zero
+  /// beta = ln e / sqrt(ln^2 e + pi^2) (docs/theory.md section 2). With the normal force clamped at
+  /// zero
   /// the realised restitution is then somewhat higher than e.
   classical,
   /// beta solved so that the realised restitution of the clamped law equals e exactly
@@ -41,7 +42,7 @@ enum class RestitutionMapping {
   exact
 };
 
-/// Precomputed contact constants of one material pair (model.md section 2).
+/// Precomputed contact constants of one material pair (docs/theory.md section 2).
 struct ContactParameters {
   double e_star = 0; ///< [Pa] effective Young's modulus
   double g_star = 0; ///< [Pa] effective shear modulus
@@ -73,7 +74,7 @@ private:
   RestitutionMapping mapping_ = RestitutionMapping::classical;
 };
 
-/// beta from e by model.md's formula.
+/// beta from e by docs/theory.md section 2's formula.
 double classical_damping_ratio(double restitution);
 /// Realised restitution of the clamped Hertz law with damping ratio beta (dimensionless
 /// impact X'' = -max(0, X^1.5 - sqrt(5) beta X^0.25 X'), X(0) = 0, X'(0) = 1).

@@ -1,4 +1,4 @@
-// The particle-pair contact kernel (model.md section 2, law in contact_law.h).
+// The particle-pair contact kernel (docs/theory.md section 2, law in contact_law.h).
 //
 // A block of listed pairs goes through three passes:
 //   1. distance of every listed pair; the touching ones (|x_i - x_j| < R_i + R_j) are

@@ -2,6 +2,7 @@
 // Particle storage as structure of arrays: one contiguous array per quantity, indexed by
 // particle. Slots [n_real, n_real + n_ghost) hold periodic images (ghosts) that mirror
 // an owner particle; the step loop never resizes these arrays.
+#include "meshes/constants.h"
 #include "meshes/vec3.h"
 
 #include <cstdint>
@@ -34,7 +35,7 @@ struct Particles {
     force.push_back({});
     torque.push_back({});
     radius.push_back(r);
-    const double m = density * 4.0 / 3.0 * 3.14159265358979323846 * r * r * r;
+    const double m = density * 4.0 / 3.0 * pi * r * r * r;
     mass.push_back(m);
     inertia.push_back(0.4 * m * r * r);
     material.push_back(material_id);

@@ -3,6 +3,7 @@
 // say which rank owns a point, and the messages between neighbouring ranks. dem/parallel
 // implements the messages over MPI (MpiRankLink), slab_decomposition.h cuts the slabs; the
 // engine never includes mpi.h.
+#include "meshes/constants.h"
 #include "meshes/vec3.h"
 
 #include <algorithm>
@@ -31,7 +32,7 @@ struct SlabCuts {
   double coordinate(const Vec3& x) const {
     if (!angular)
       return x[axis];
-    constexpr double two_pi = 2 * 3.14159265358979323846;
+    constexpr double two_pi = 2 * pi;
     const double gap = two_pi - (bound.back() - bound.front());
     double theta = std::atan2(x.y, x.x);
     while (theta < bound.front() - 0.5 * gap)

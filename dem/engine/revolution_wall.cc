@@ -32,6 +32,8 @@
 // that from every listed face (off the triangulated part) falls back to a scan of all faces.
 #include "dem/engine/revolution_wall.h"
 
+#include "meshes/constants.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -45,7 +47,6 @@ using meshes::norm;
 using meshes::normalized;
 
 namespace {
-constexpr double pi = 3.14159265358979323846;
 
 bool finite(const Vec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);

@@ -12,6 +12,8 @@
 // histogram's bins), cut k lies where C = k C_total / n_ranks.
 #include "dem/engine/slab_decomposition.h"
 
+#include "meshes/constants.h"
+
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -30,7 +32,7 @@ void check_bounds(const std::vector<double>& bound) {
 
 SlabDecomposition SlabDecomposition::angular(std::vector<double> bound, double inner_radius) {
   check_bounds(bound);
-  if (bound.back() - bound.front() > 2 * 3.14159265358979323846 + 1e-12)
+  if (bound.back() - bound.front() > 2 * pi + 1e-12)
     throw std::invalid_argument("SlabDecomposition: the slabs span more than the full circle");
   if (!(inner_radius >= 0))
     throw std::invalid_argument("SlabDecomposition: the inner radius must not be negative");

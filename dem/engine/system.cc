@@ -13,6 +13,8 @@
 // rebuild (inside the domain); failures name the particle and suggest a cause.
 #include "dem/engine/system.h"
 
+#include "meshes/constants.h"
+
 #include <omp.h>
 
 #include <algorithm>
@@ -24,7 +26,6 @@
 namespace wear::dem {
 
 namespace {
-constexpr double pi = 3.14159265358979323846;
 enum ErrorKind { no_error = 0, not_finite = 1, too_fast = 2, outside = 3, too_many_walls = 4 };
 } // namespace
 

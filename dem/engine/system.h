@@ -55,10 +55,10 @@ struct DemSettings {
 /// moment of the impulse about the origin [N s m] x 3.
 constexpr std::size_t n_wear_values = 13;
 
-/// Extensive per-face integrals on a wearing wall over the current window (model.md s. 4).
-/// Points are the contact points on the wall (the closest point to the particle centre), in
-/// the wall's frame (a moving wall's mesh as given, its body frame; vectors rotated there too);
-/// the moments are about its origin.
+/// Extensive per-face integrals on a wearing wall over the current window (docs/theory.md section
+/// 4). Points are the contact points on the wall (the closest point to the particle centre), in the
+/// wall's frame (a moving wall's mesh as given, its body frame; vectors rotated there too); the
+/// moments are about its origin.
 struct WearIntegrals {
   std::vector<Vec3> impulse;          ///< [N s] integral of the force on the face
   std::vector<double> normal_impulse; ///< [N s] integral of F_n

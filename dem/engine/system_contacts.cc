@@ -31,6 +31,7 @@
 #include "dem/engine/contact_law.h"
 #include "dem/engine/pair_kernel.h"
 #include "dem/engine/system.h"
+#include "meshes/constants.h"
 #include "meshes/surface_mesh.h"
 
 #include <algorithm>
@@ -49,7 +50,7 @@ struct Candidate {
 };
 constexpr int max_wall_candidates = 32;
 /// Contacts of one wall whose normals differ by less than 25 degrees are one contact.
-const double cos_merge_angle = std::cos(25.0 * 3.14159265358979323846 / 180.0);
+const double cos_merge_angle = std::cos(25.0 * pi / 180.0);
 /// [-] Of the radius: a junction contact within this of another wall's counts as level with it.
 constexpr double junction_level_tolerance = 1e-6;
 

@@ -38,6 +38,7 @@
 // the ranks.
 #include "dem/engine/reused_buffer.h"
 #include "dem/engine/system.h"
+#include "meshes/constants.h"
 
 #include <omp.h>
 
@@ -180,7 +181,7 @@ void System::check_ranks_at_setup() {
   const std::string what = "DEM over " + std::to_string(link.n_ranks()) + " ranks: ";
   // Angular slabs round the full circle (an annulus) are a ring too, whose seam turns by
   // 2 pi: the identity of a system without a periodic boundary (cos_t_ = 1, sin_t_ = 0).
-  constexpr double two_pi = 2 * 3.14159265358979323846;
+  constexpr double two_pi = 2 * pi;
   const bool full_circle = slab_cuts_.angular && at(b.back() - b.front(), two_pi);
   if (settings.periodic.enabled && full_circle)
     throw std::invalid_argument(what + "the slabs of a periodic sector span the sector, not the "

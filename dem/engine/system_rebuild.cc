@@ -24,6 +24,7 @@
 // history. Wall-contact slots are per particle, found again by stable id.
 #include "dem/engine/reused_buffer.h"
 #include "dem/engine/system.h"
+#include "meshes/constants.h"
 #include "meshes/surface_mesh.h"
 
 #include <omp.h>
@@ -53,8 +54,7 @@ inline Vec3 reorient_history(const Vec3& h, bool lower_second, bool ghost, doubl
 /// split at its middle.
 inline signed char sector_wrap(const Vec3& x, double angle) {
   const double th = std::atan2(x.y, x.x);
-  const double theta =
-      th < 0 && th < -0.5 * (2 * 3.141592653589793 - angle) ? th + 2 * 3.141592653589793 : th;
+  const double theta = th < 0 && th < -0.5 * (2 * pi - angle) ? th + 2 * pi : th;
   if (theta < 0)
     return +1;
   if (theta >= angle)

@@ -7,6 +7,8 @@
 // particles inside the grid.
 #include "dem/scene/binned_fields.h"
 
+#include "meshes/constants.h"
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -44,7 +46,6 @@ BinnedFields::BinnedFields(const FieldGrid& grid) : grid_(grid) {
 }
 
 void BinnedFields::sample(const Particles& p) {
-  constexpr double pi = 3.14159265358979323846;
   for (std::size_t i = 0; i < p.n_real; ++i) {
     const long c = grid_.cell_of(p.position[i]);
     if (c < 0)

@@ -15,6 +15,7 @@
 // system within the box (plus a diameter) and of the batch's own (InsertionGrid).
 #include "dem/scene/inlet.h"
 
+#include "meshes/constants.h"
 #include "dem/engine/insertion_grid.h"
 
 #include <algorithm>
@@ -25,7 +26,6 @@
 namespace wear::dem {
 
 namespace {
-constexpr double pi = 3.14159265358979323846;
 constexpr int max_tries = 1000;
 
 double sphere_mass(double d, double density) {

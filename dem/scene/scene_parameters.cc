@@ -2,6 +2,7 @@
 // fill's count against what its region can hold at the densest packing of spheres.
 #include "dem/scene/scene_parameters.h"
 
+#include "meshes/constants.h"
 #include "meshes/surface_mesh.h"
 
 #include <algorithm>
@@ -335,7 +336,6 @@ void require_fill_count_fits(const SceneParameters& s, const SizeDistribution& p
   const auto& f = s.fill;
   if (f.region == "none" || f.count == 0 || (f.region == "mesh" && mesh_volume < 0))
     return;
-  constexpr double pi = 3.14159265358979323846;
   double volume = mesh_volume;
   std::string region = "the solid of '" + f.file + "'";
   if (f.region == "box") {

@@ -7,6 +7,10 @@
 // per-face integrals (engine "wearing" walls), so each gets its force, moment and Archard
 // load-distance per window; `Wears` marks the FEM part only.
 //
+// A fill to a bed height (Fill/Bed height) is placed at random up to DEM/Loose factor heights
+// above its floor, counted from DEM/Assumed packing, and settles with the walls at rest until
+// it is still (settled_mean_speed) or for DEM/Settle time at most, as the tester's bed does.
+//
 // Time: inlet batches, flux-plane and field samples and outlets act every exchange interval (the
 // shortest inlet interval, at most a tenth of the output interval), the engine stepping in between.
 // A scene that starts empty sets the engine up at its first particle, its clock starting there.
@@ -21,8 +25,7 @@
 // refused (require_fill_count_fits): the insertion would try for minutes before giving up.
 #include "dem/scene/scene_run.h"
 
-#include "dem/tester/wear_tester.h"
-
+#include "meshes/constants.h"
 #include "meshes/cad_import.h"
 #include "meshes/solid_region.h"
 #include "meshes/triangle_geometry.h"
@@ -39,11 +42,6 @@
 namespace wear::dem {
 
 namespace {
-constexpr double pi = 3.14159265358979323846;
-
-Material material(const std::string& name, const DemMaterial& m) {
-  return {name, 2 * m.shear_modulus * (1 + m.poisson_ratio), m.poisson_ratio, m.density};
-}
 
 Vec3 vec(const std::vector<double>& v) {
   return scene_vector(v);
@@ -52,8 +50,7 @@ Vec3 vec(const std::vector<double>& v) {
 } // namespace
 
 /// Where the fill places particles: the Fill box, cylinder or solid of a mesh, or for a bed
-/// height its part up to 2.5 heights above its floor (loose, before settling).
-constexpr double loose_factor = 2.5;
+/// height its part up to DEM/Loose factor heights above its floor (loose, before settling).
 struct SceneFillShape {
   bool cylinder = false;
   std::shared_ptr<const meshes::SolidRegion> solid; ///< Region = mesh
@@ -157,8 +154,9 @@ private:
 };
 
 /// In a periodic sector a cylinder about the z axis is filled in the sector only
-/// (fills_sector_only), and its footprint is the sector's share.
-static SceneFillShape fill_shape(const SceneParameters& s) {
+/// (fills_sector_only), and its footprint is the sector's share. A fill to a bed height is
+/// placed up to `loose_factor` heights above its floor.
+static SceneFillShape fill_shape(const SceneParameters& s, double loose_factor) {
   const SceneFillParameters& f = s.fill;
   SceneFillShape shape;
   if (f.region == "mesh") {
@@ -343,13 +341,13 @@ NearestImage nearest_image(const SceneParameters& s) {
 
 } // namespace
 
-SceneRun::SceneRun(const SceneParameters& scene, const TesterDemParameters& dem,
+SceneRun::SceneRun(const SceneParameters& scene, const DemParameters& dem,
                    std::vector<SceneWall> walls)
     : scene_(scene), dem_(dem), walls_(std::move(walls)) {
   validate(scene_);
   validate(dem_);
   if (scene_.fill.region != "none") {
-    auto built = std::make_shared<SceneFillShape>(fill_shape(scene_));
+    auto built = std::make_shared<SceneFillShape>(fill_shape(scene_, dem_.loose_factor));
     // read_case checked a box's or cylinder's count; a mesh region's volume is known now.
     require_fill_count_fits(scene_, dem_.psd, built->solid ? built->solid->volume() : -1);
     built->clearance = dem_.psd.max_diameter();
@@ -362,7 +360,8 @@ SceneRun::SceneRun(const SceneParameters& scene, const TesterDemParameters& dem,
     if (shape.hi.z > shape.full_top + 1e-12)
       throw std::invalid_argument(
           "Scene/Fill: a bed of " + std::to_string(scene_.fill.bed_height) +
-          " m is placed loosely up to 2.5 times its height above the region's floor; " +
+          " m is placed loosely up to DEM/Loose factor = " + std::to_string(dem_.loose_factor) +
+          " times its height above the region's floor; lower Loose factor or " +
           (shape.cylinder
                ? "lengthen Axis to at least " + std::to_string(shape.hi.z - shape.floor_z) + " m"
                : "raise Maximum z to at least " + std::to_string(shape.hi.z) + " m"));
@@ -421,10 +420,10 @@ SceneRun::SceneRun(const SceneParameters& scene, const TesterDemParameters& dem,
 
 void SceneRun::add_materials_and_walls() {
   auto& m = system_.materials;
-  particle_material_ = m.add(material("particle", dem_.particle));
-  const int wall = m.add(material("walls", dem_.walls));
-  const int sample = m.add(material("sample", dem_.sample));
-  const int holder = m.add(material("holder", dem_.holder));
+  particle_material_ = m.add(engine_material("particle", dem_.particle));
+  const int wall = m.add(engine_material("walls", dem_.walls));
+  const int sample = m.add(engine_material("sample", dem_.sample));
+  const int holder = m.add(engine_material("holder", dem_.holder));
   m.set_pair(particle_material_, particle_material_, dem_.particle_particle);
   for (int w : {wall, sample, holder}) {
     m.set_pair(particle_material_, w, dem_.particle_wall);
@@ -443,7 +442,7 @@ void SceneRun::add_materials_and_walls() {
   s.gravity = vec(scene_.gravity);
   s.domain = {vec(scene_.domain_min), vec(scene_.domain_max)};
   const double r_min = 0.5 * dem_.psd.min_diameter();
-  const Material particle = material("particle", dem_.particle);
+  const Material particle = engine_material("particle", dem_.particle);
   const double rayleigh = pi * r_min * std::sqrt(particle.density / particle.shear_modulus()) /
                           (0.1631 * particle.poisson_ratio + 0.8766);
   s.time_step = dem_.time_step_fraction * rayleigh;
@@ -548,7 +547,8 @@ void SceneRun::fill(const std::function<void(const std::string&)>& progress) {
   const auto report = fill_to_height(
       system_, [&shape, r_max](double z_top) { return shape.region(r_max, z_top); },
       shape.footprint - shape.submerged_volume / f.bed_height, shape.floor_z, f.bed_height,
-      dem_.psd, dem_.particle.density, particle_material_, dem_.seed, loose_factor, 0.01, 2.0,
+      dem_.psd, dem_.particle.density, particle_material_, dem_.seed, dem_.loose_factor,
+      settled_mean_speed, dem_.settle_time,
       [&](double t) {
         if (progress)
           progress("settling the fill: t = " + std::to_string(t) + " s");
@@ -661,7 +661,7 @@ SceneWindow SceneRun::advance(double t_end) {
 WallLoads SceneRun::wall_loads(std::size_t k, const WearLaw& law, double duration) const {
   const WearIntegrals integrals = system_.wear_integrals(int(k));
   return dem::wall_loads(integrals, law.removed_volume(integrals), walls_.at(k).surface.mesh,
-                         duration, load_spreading(dem_));
+                         duration, load_spreading(dem_.wall_loads, dem_.psd));
 }
 
 void SceneRun::replace_wall_surface(std::size_t k, const meshes::SurfaceMesh& mesh) {

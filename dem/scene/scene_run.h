@@ -3,13 +3,13 @@
 // by inlets and drained by outlets, advanced window by window with a record per window.
 #include "dem/engine/system.h"
 #include "dem/scene/binned_fields.h"
+#include "dem/scene/dem_parameters.h"
 #include "dem/scene/flux_plane.h"
 #include "dem/scene/inlet.h"
 #include "dem/scene/outlet.h"
 #include "dem/scene/scene_walls.h"
-#include "dem/tester/tester_parameters.h"
-#include "dem/tester/wall_loads.h"
-#include "dem/tester/wear_law.h"
+#include "dem/wear/wall_loads.h"
+#include "dem/wear/wear_law.h"
 
 #include <functional>
 #include <map>
@@ -63,8 +63,7 @@ public:
   /// Takes the built walls (build_scene_walls) and checks what needs them: the fill box
   /// may not cut a wall (message naming the wall and its file). Throws before any particle
   /// exists.
-  SceneRun(const SceneParameters& scene, const TesterDemParameters& dem,
-           std::vector<SceneWall> walls);
+  SceneRun(const SceneParameters& scene, const DemParameters& dem, std::vector<SceneWall> walls);
 
   /// Materials, walls with their motions, the fill (settled when filled to a bed height)
   /// and the engine's set-up; `progress` hears what happens.
@@ -100,7 +99,7 @@ public:
 
 private:
   SceneParameters scene_;
-  TesterDemParameters dem_;
+  DemParameters dem_;
   std::vector<SceneWall> walls_;
   std::vector<Inlet> inlets_;
   std::vector<Outlet> outlets_;

@@ -1,4 +1,4 @@
-// Reference deformation (model.md section 5), the node-moving method of the reference study.
+// Reference deformation (docs/theory.md section 5), the node-moving method of the reference study.
 //
 // Per update, every node moves by the area-weighted node recession of the update's removed
 // volume, x_v -= D_v n_v with D_v = sum dV_f / sum A_f and n_v the area-weighted normal over the

@@ -1,5 +1,5 @@
 #pragma once
-// The reference deformation method (model.md section 5): surface nodes of the wearing wall
+// The reference deformation method (docs/theory.md section 5): surface nodes of the wearing wall
 // move inward by the local wear depth; the topology never changes, so the run is valid only
 // until the surface distorts.
 #include "meshes/mesh_quality.h"

@@ -28,6 +28,7 @@
 // every rank, so that every rank holds the same records.
 #include "dem/tester/wear_tester.h"
 
+#include "meshes/constants.h"
 #include "dem/engine/rank_states.h"
 
 #include "meshes/sample_frame.h"
@@ -46,22 +47,6 @@
 namespace wear::dem {
 
 namespace {
-constexpr double pi = 3.14159265358979323846;
-
-void require(bool ok, const std::string& parameter, const std::string& what) {
-  if (!ok)
-    throw std::invalid_argument("DEM/" + parameter + ": " + what);
-}
-
-std::string text(double x) {
-  std::ostringstream s;
-  s << x;
-  return s.str();
-}
-
-Material material(const std::string& name, const DemMaterial& m) {
-  return {name, 2 * m.shear_modulus * (1 + m.poisson_ratio), m.poisson_ratio, m.density};
-}
 
 /// Floor, cylinders and the consolidator as revolution walls about z, at rest; returns the
 /// walls that turn with the bed (floor, inner, outer).
@@ -85,45 +70,14 @@ std::vector<int> add_tester_walls(System& s, const meshes::TesterGeometry& t, in
 } // namespace
 
 void validate(const TesterDemParameters& p) {
-  const auto check_material = [](const DemMaterial& m, const std::string& which) {
-    require(m.shear_modulus > 0 && std::isfinite(m.shear_modulus), which + " shear modulus",
-            "must be positive [Pa]");
-    require(m.poisson_ratio > -1 && m.poisson_ratio < 0.5, which + " Poisson ratio",
-            "must lie in (-1, 0.5)");
-    require(m.density > 0 && std::isfinite(m.density), which + " density",
-            "must be positive [kg/m^3]");
-  };
-  check_material(p.particle, "Particle");
-  check_material(p.sample, "Sample");
-  check_material(p.walls, "Wall");
-  check_material(p.holder, "Holder");
-  for (const auto& [pair, which] :
-       {std::pair{&p.particle_particle, "particle-particle"}, {&p.particle_wall, "particle-wall"}})
-    require(pair->rolling_friction >= 0 && pair->rolling_friction <= max_rolling_friction,
-            std::string("Rolling friction ") + which,
-            "must lie in [0, " + text(max_rolling_friction) + "], got " +
-                text(pair->rolling_friction) +
-                ": the rolling resistance torque mu_r F_n a is the normal force shifted mu_r a "
-                "off the line of centres (a the centre-to-contact distance), which above 1 "
-                "would lie outside the particle (DEM of granular materials: mostly 0.01 to 0.5)");
-  p.psd.validate();
-  require(p.fill_height > 0, "Fill height", "must be positive [m]");
-  require(p.loose_factor >= 1.2, "Loose factor", "must be at least 1.2");
-  require(p.assumed_packing > 0.2 && p.assumed_packing < 0.74, "Assumed packing",
-          "must lie in (0.2, 0.74)");
-  require(p.settle_time > 0, "Settle time", "must be positive [s]");
-  require(p.rotation_rate_deg > 0 && std::isfinite(p.rotation_rate_deg), "Rotation rate",
-          "must be positive [deg/s]");
-  require(p.time_step_fraction > 0 && p.time_step_fraction <= 0.4, "Time step fraction",
-          "must lie in (0, 0.4] of the Rayleigh time");
-  require(p.max_speed > 0, "Maximum speed", "must be positive [m/s]");
-  require(p.n_threads >= 0, "Threads", "must be 0 (all cores) or positive");
-  require(p.revolutions >= 1, "Revolutions", "must be at least 1");
-  require(p.samples_per_revolution >= 2, "Samples per revolution", "must be at least 2");
-  require(p.steady_threshold > 0, "Steady threshold", "must be positive");
-  require(p.steady_revolutions >= 1, "Steady revolutions", "must be at least 1");
-  require(p.coarse_graining_width >= 0 && std::isfinite(p.coarse_graining_width),
-          "Coarse-graining width", "must be 0 (the mean particle radius) or positive [m]");
+  validate(static_cast<const DemParameters&>(p));
+  require_dem(p.fill_height > 0, "Fill height", "must be positive [m]");
+  require_dem(p.rotation_rate_deg > 0 && std::isfinite(p.rotation_rate_deg), "Rotation rate",
+              "must be positive [deg/s]");
+  require_dem(p.revolutions >= 1, "Revolutions", "must be at least 1");
+  require_dem(p.samples_per_revolution >= 2, "Samples per revolution", "must be at least 2");
+  require_dem(p.steady_threshold > 0, "Steady threshold", "must be positive");
+  require_dem(p.steady_revolutions >= 1, "Steady revolutions", "must be at least 1");
 }
 
 WearTester::WearTester(const meshes::GeometryParameters& geometry, const TesterDemParameters& dem,
@@ -143,9 +97,9 @@ WearTester::WearTester(const meshes::GeometryParameters& geometry, const TesterD
   const auto& t = geometry_.tester;
   sector_ = t.sector_angle_deg * pi / 180;
   auto& m = system_.materials;
-  particle_material_ = m.add(material("particle", dem_.particle));
-  const int sample_material = m.add(material("sample", dem_.sample));
-  const int wall_material = m.add(material("walls", dem_.walls));
+  particle_material_ = m.add(engine_material("particle", dem_.particle));
+  const int sample_material = m.add(engine_material("sample", dem_.sample));
+  const int wall_material = m.add(engine_material("walls", dem_.walls));
   m.set_pair(particle_material_, particle_material_, dem_.particle_particle);
   m.set_pair(particle_material_, sample_material, dem_.particle_wall);
   m.set_pair(particle_material_, wall_material, dem_.particle_wall);
@@ -163,7 +117,7 @@ WearTester::WearTester(const meshes::GeometryParameters& geometry, const TesterD
   sample_wall_ =
       system_.add_wall(MeshWall(placed, sample_material, {}, true, "sample", std::move(covered)));
   if (t.holder) {
-    const int holder_material = m.add(material("holder", dem_.holder));
+    const int holder_material = m.add(engine_material("holder", dem_.holder));
     m.set_pair(particle_material_, holder_material, dem_.particle_wall);
     for (int other : {sample_material, wall_material, holder_material})
       m.set_pair(holder_material, other, dem_.particle_wall); // walls never meet
@@ -181,7 +135,7 @@ WearTester::WearTester(const meshes::GeometryParameters& geometry, const TesterD
   revolution_time_ = sector_ / (dem_.rotation_rate_deg * pi / 180);
 
   const double mean_d = dem_.psd.mean_diameter();
-  spreading_ = dem::load_spreading(dem_);
+  spreading_ = dem::load_spreading(dem_.wall_loads, dem_.psd);
   evaluation_ =
       std::make_unique<TesterEvaluation>(sample, geometry_.sample, geometry_.placement, mean_d,
                                          dem_.steady_threshold, dem_.steady_revolutions);
@@ -304,7 +258,7 @@ FillReport WearTester::fill_and_settle(const std::function<void(const TesterProg
   const meshes::Stopwatch wall_clock;
   const auto report = fill_to_height(
       system_, make_region, area, 0, dem_.fill_height, dem_.psd, dem_.particle.density,
-      particle_material_, dem_.seed, dem_.loose_factor, 0.01, dem_.settle_time,
+      particle_material_, dem_.seed, dem_.loose_factor, settled_mean_speed, dem_.settle_time,
       [&](double time) {
         count_particles(); // every rank, before the progress that only some show
         if (!progress)

@@ -9,8 +9,8 @@
 #include "dem/tester/reference_deformation.h"
 #include "dem/tester/tester_evaluation.h"
 #include "dem/tester/tester_parameters.h"
-#include "dem/tester/wall_loads.h"
-#include "dem/tester/wear_law.h"
+#include "dem/wear/wall_loads.h"
+#include "dem/wear/wear_law.h"
 #include "meshes/geometry_parameters.h"
 
 #include <functional>

@@ -9,6 +9,7 @@
 // sliding relations of the paper (Tests 4-8).
 #include "dem/validation/chung_ooi.h"
 
+#include "meshes/constants.h"
 #include "dem/engine/system.h"
 #include "meshes/structured_grid.h"
 
@@ -17,7 +18,6 @@
 namespace wear::dem::validation {
 
 namespace {
-constexpr double pi = 3.14159265358979323846;
 using meshes::cross;
 using meshes::dot;
 using meshes::norm;

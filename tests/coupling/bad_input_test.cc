@@ -7,8 +7,9 @@
 // Rows: out-of-range values (a rolling friction above its bound of 1 among them);
 // inconsistent combinations (case_consistency.h: depth cap, sample and consolidator in the
 // sector, bed against walls and wear face, worn-through thickness, element shape, a scene's
-// Fill/Count above what its region holds, through `wearsim scene-run`); files (a missing case
-// file, a missing INCLUDE, a file that INCLUDEs itself, two that INCLUDE each other); the
+// Fill/Count above what its region holds, through `wearsim scene-run`); parameters the case
+// does not use (the tester's in a scene, a scene's in the tester: case_scope.h); files (a missing
+// case file, a missing INCLUDE, a file that INCLUDEs itself, two that INCLUDE each other); the
 // output folder (unwritable, a file, holding a run); checkpoints (missing, truncated, of
 // another case); the command line. The program runs first, under a time limit: a row that
 // crashes or hangs it (an INCLUDE loop overflowed the stack; a fill count of 1e9 tried for
@@ -21,6 +22,7 @@
 #include "coupling/output/checkpoint.h"
 #include "coupling/parameters/case_consistency.h"
 #include "coupling/parameters/case_parameters.h"
+#include "meshes/constants.h"
 
 #include <catch2/catch.hpp>
 
@@ -39,6 +41,7 @@
 #include <thread>
 
 using namespace wear::coupling;
+using wear::pi;
 namespace fs = std::filesystem;
 
 namespace {
@@ -237,6 +240,28 @@ std::vector<Row> combination_rows() {
        {},
        "",
        "scene-run"},
+      // Ignored without a word before the scenes and the tester shared their DEM parameters.
+      {"the tester's own DEM parameters in a scene",
+       scene_on_a_disc() + "end\nsubsection DEM\n set Rotation rate = 45\n"
+                           " set Fill height = 0.1\nend\n",
+       {"2 parameters this case does not use", "DEM/Rotation rate (line 13 of",
+        "DEM/Fill height (line 14 of", "the built-in wear tester's own",
+        "this case is a scene (Scene/Walls = floor)"},
+       {},
+       {},
+       "",
+       "scene-run"},
+      {"the tester's geometry in a scene without its sample",
+       scene_on_a_disc() +
+           "end\nsubsection Geometry\n subsection Tester\n  set Sector angle = 60\n end\nend\n",
+       {"Geometry/Tester/Sector angle (line 14 of", "without the tester's sample or holder"},
+       {},
+       {},
+       "",
+       "scene-run"},
+      {"a scene's parameter in the tester",
+       "subsection Scene\n set End time = 3\nend\n",
+       {"Scene/End time (line 2 of", "the built-in wear tester (Scene/Walls is empty)"}},
   };
 }
 
@@ -540,7 +565,7 @@ TEST_CASE("wearsim run: the empty case file passes every check before a run",
   const StageDepthEstimate e = stage_depth_estimate(p);
   REQUIRE(e.known);
   CHECK(e.pressure == Approx(2650 * 0.49 * 9.81 * 0.090).epsilon(1e-12));
-  CHECK(e.path == Approx(150 * 3.14159265358979323846 / 180 * 0.395).epsilon(1e-12));
+  CHECK(e.path == Approx(150 * pi / 180 * 0.395).epsilon(1e-12));
   CHECK(e.mean_depth == Approx(5.93e-6).epsilon(2e-3));
   CHECK(e.fraction_lower_bound == Approx(0.01 * e.mean_depth / 1.5e-3).epsilon(1e-12));
   CHECK(e.fraction_lower_bound < 1e-4);

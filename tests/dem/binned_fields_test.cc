@@ -2,6 +2,7 @@
 // volume, a rigid motion's binned velocity is the motion at the cell's mass centre, samples
 // average, and a bad grid is refused naming Scene/Fields.
 #include "dem/scene/binned_fields.h"
+#include "meshes/constants.h"
 
 #include <catch2/catch.hpp>
 
@@ -9,10 +10,9 @@
 #include <random>
 
 using namespace wear::dem;
+using wear::pi;
 
 namespace {
-
-constexpr double pi = 3.14159265358979323846;
 
 /// n particles at random in [0, 0.1]^3, radii 1 to 3 mm, density 2650 kg/m^3.
 Particles random_particles(std::size_t n, unsigned seed) {

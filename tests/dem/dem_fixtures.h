@@ -2,6 +2,7 @@
 // Shared set-ups for the DEM tests.
 #include "dem/engine/filling.h"
 #include "dem/engine/system.h"
+#include "meshes/constants.h"
 #include "meshes/tester_walls.h"
 
 #include <catch2/catch.hpp>
@@ -11,7 +12,7 @@
 
 namespace wear::dem::testing {
 
-constexpr double pi = 3.14159265358979323846;
+using wear::pi;
 
 /// The planes y = 0, y = L, z = 0, z = L facing inwards, reaching `margin` past x = 0 and
 /// x = L: a closed box [0, L]^3 with `closed` (the planes x = 0 and x = L too, no margin), else

@@ -143,8 +143,9 @@ TEST_CASE("rigid motion: bad motions are refused with the wall's name") {
 }
 
 // The particle-wall pairs of these tests have no rolling friction: the constant torque of
-// model.md's rolling friction chatters about zero relative spin (a few 1e-6 rad/s at rest on
-// a plate, fixed or moving alike), which would hide the 1e-6 relative these checks ask.
+// The rolling friction of docs/theory.md section 2 chatters about zero relative spin (a few 1e-6
+// rad/s at rest on a plate, fixed or moving alike), which would hide the 1e-6 relative these checks
+// ask.
 
 TEST_CASE("moving walls: a particle resting on a plate that starts to rise rises with it") {
   System s;

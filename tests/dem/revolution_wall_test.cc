@@ -3,6 +3,7 @@
 // refusals of bad input.
 #include "dem/engine/revolution_wall.h"
 #include "dem/engine/system.h"
+#include "meshes/constants.h"
 #include "meshes/tester_walls.h"
 
 #include <catch2/catch.hpp>
@@ -14,6 +15,7 @@
 #include <vector>
 
 using namespace wear::dem;
+using wear::pi;
 using wear::meshes::cross;
 using wear::meshes::dot;
 using wear::meshes::norm;
@@ -21,7 +23,6 @@ using wear::meshes::normalized;
 using wear::meshes::Vec3;
 
 namespace {
-constexpr double pi = 3.14159265358979323846;
 
 /// The frame of revolution_wall.h: e1 = x projected normal to the axis (y when the axis lies
 /// within 25 degrees of x), e2 = axis x e1.

@@ -1,6 +1,7 @@
 // A scene's DEM run (dem/scene/scene_run.h): a bin drains through its orifice with every
-// particle counted, an empty scene fed by an inlet starts at its first particle, and a fill
-// box through a wall is refused before any particle exists.
+// particle counted, an empty scene fed by an inlet starts at its first particle, a fill
+// box through a wall is refused before any particle exists, and a fill to a bed height
+// follows the DEM subsection's Loose factor and Settle time.
 #include "dem/scene/scene_run.h"
 #include "dem/tester/wear_tester.h"
 #include "meshes/gmsh_session.h"
@@ -185,6 +186,48 @@ TEST_CASE("scene run: a fill to a bed height settles before the run starts") {
   }
   CHECK(grid_volume == Approx(double(n) * 4.0 / 3.0 * M_PI * std::pow(0.003, 3)).epsilon(1e-12));
   CHECK(speed < 0.01);
+}
+
+TEST_CASE("scene run: a fill to a bed height follows DEM/Loose factor and Settle time") {
+  // The bed of 30 mm placed loosely up to L x 30 mm over the floor and settled for at most
+  // 0.02 s: the settling checks every 0.02 s whether the bed is still and stops at the first
+  // check at or past Settle time, so it ends between 0.02 and 0.04 s, long before the bed is
+  // still; in 0.04 s a particle falls at most g t^2 / 2 = 7.8 mm, so the highest particle's
+  // top lies within 12 mm under the insertion region's top 1 mm + L x 30 mm. Before the
+  // scenes read the DEM subsection's values, L was 2.5 and the settling 2 s whatever the case
+  // said (the bed still after about 0.3 s).
+  SceneParameters scene = pinhole_bin();
+  scene.fill.count = 0;
+  scene.fill.bed_height = 0.03;
+  scene.fill.minimum = {-0.04, -0.04, 0.001};
+  scene.fill.maximum = {0.04, 0.04, 0.1};
+  for (const double loose : {2.0, 3.0}) {
+    INFO("Loose factor " << loose);
+    DemParameters d = gravel();
+    d.loose_factor = loose;
+    d.settle_time = 0.02;
+    SceneRun run(scene, d, build_scene_walls(scene));
+    run.setup();
+    CHECK(run.time() >= 0.02);
+    CHECK(run.time() <= 0.04 + 1e-9);
+    const auto& p = run.system().particles;
+    REQUIRE(p.n_real > 500);
+    double top = 0, mean_speed = 0;
+    for (std::size_t i = 0; i < p.n_real; ++i) {
+      top = std::max(top, p.position[i].z + p.radius[i]);
+      mean_speed += wear::meshes::norm(p.velocity[i]) / double(p.n_real);
+    }
+    const double region_top = 0.001 + loose * 0.03;
+    CHECK(top <= region_top + 1e-9);
+    CHECK(top > region_top - 0.012);
+    CHECK(mean_speed > 0.05); // still falling: the settling was cut short
+  }
+  // A loose bed above the region is refused, naming the parameter to change.
+  DemParameters tall = gravel();
+  tall.loose_factor = 4;
+  CHECK_THROWS_WITH(SceneRun(scene, tall, build_scene_walls(scene)),
+                    Catch::Contains("DEM/Loose factor = 4") &&
+                        Catch::Contains("raise Maximum z to at least 0.121"));
 }
 
 TEST_CASE("scene run: a cylinder fills the bin to a count or a bed height, clear of its wall") {

@@ -2,7 +2,7 @@
 // follow a mesh in another frame with impulse vectors rotated and scalar loads unchanged,
 // loads of another mesh revision are refused rather than silently mixed, and the
 // coarse-grained traction of a real DEM window keeps its force and moment.
-#include "dem/tester/wall_loads.h"
+#include "dem/wear/wall_loads.h"
 #include "meshes/sample_frame.h"
 #include "meshes/structured_grid.h"
 #include "meshes/surface_locator.h"

@@ -3,7 +3,7 @@
 // flat plate; fits and statistics of the evaluation.
 #include "dem/tester/reference_deformation.h"
 #include "dem/tester/tester_evaluation.h"
-#include "dem/tester/wear_law.h"
+#include "dem/wear/wear_law.h"
 #include "meshes/structured_grid.h"
 #include "tests/dem/dem_fixtures.h"
 

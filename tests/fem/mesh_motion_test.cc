@@ -8,6 +8,7 @@
 #include "fem/boundary_face_map.h"
 #include "fem/mesh_motion.h"
 #include "fem/sample_triangulation.h"
+#include "meshes/constants.h"
 #include "meshes/mesh_quality.h"
 #include "meshes/recession.h"
 #include "meshes/sample_generator.h"
@@ -20,6 +21,7 @@
 #include <cmath>
 
 using namespace wear::fem;
+using wear::pi;
 using wear::meshes::Recession;
 using wear::meshes::Vec3;
 using wear::meshes::volume_exact_recession;
@@ -420,7 +422,6 @@ namespace {
 wear::meshes::SurfaceMesh half_cylinder(double r, double l, int n_x, int n_arc) {
   namespace label = wear::meshes::label;
   wear::meshes::SurfaceMesh m;
-  const double pi = std::acos(-1.0);
   const auto arc = [&](int i, int j) { return std::uint32_t(i * (n_arc + 1) + j); };
   for (int i = 0; i <= n_x; ++i)
     for (int j = 0; j <= n_arc; ++j) {
@@ -469,7 +470,6 @@ TEST_CASE("an offset that cannot reach its volume reports what it reaches", "[fe
   const auto m = half_cylinder(r, l, 10, 24);
   REQUIRE(wear::meshes::surface_quality(m).valid());
   const double v0 = wear::meshes::enclosed_volume(m);
-  const double pi = std::acos(-1.0);
   CHECK(v0 == Approx(pi * r * r * l / 2).epsilon(0.01)); // the inscribed 24-gon: -0.3 %
   const auto achieved = [&](const Recession& rec) {
     auto moved = m;

@@ -7,6 +7,7 @@
 // and every new mesh keeps its labels and their areas, its volume and the worn surface.
 #include "fem/discrete_patches.h"
 #include "fem/remesher.h"
+#include "meshes/constants.h"
 #include "meshes/sample_generator.h"
 
 #include <catch2/catch.hpp>
@@ -19,6 +20,7 @@
 #include <vector>
 
 using namespace wear::fem;
+using wear::pi;
 using wear::meshes::SurfaceMesh;
 using wear::meshes::Vec3;
 
@@ -97,7 +99,7 @@ TEST_CASE("patch shape counts the loops and tells whether the patch projects", "
   // Rolled into 3/4 of a cylinder (radius 2 mm, the axis along y): faces turned more than
   // 90 deg from the plane's normal, which projection would fold, and corners a millimetre or
   // more off the plane over a diagonal of about 11 mm.
-  const double r = 0.002, pi = 3.14159265358979323846;
+  const double r = 0.002;
   const auto rolled = grid_patch(10, 4, 6, [&](int i, int j) {
     const double phi = 1.5 * pi * i / 10 - 0.75 * pi;
     return Vec3{r * std::sin(phi), 0.001 * j, r * std::cos(phi)};

@@ -3,6 +3,7 @@
 // plate gives the analytic truncated-Gaussian traction at h and h/2; and a window of many
 // contacts gives a traction that changes little between h and h/2, unlike the per-face one.
 #include "meshes/coarse_graining.h"
+#include "meshes/constants.h"
 #include "meshes/structured_grid.h"
 #include "meshes/surface_locator.h"
 
@@ -12,9 +13,9 @@
 #include <random>
 
 using namespace wear::meshes;
+using wear::pi;
 
 namespace {
-constexpr double pi = 3.14159265358979323846;
 
 // A 60 x 40 mm plate with a 10 mm high Gaussian hill (radius 8 mm) at (30, 20) mm; the hill
 // (z > 3 mm) is element C11, the rest the base.

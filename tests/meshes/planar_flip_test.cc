@@ -1,6 +1,7 @@
 // Delaunay flips in flat regions: a jittered grid folded along a line (two planes) is
 // re-triangulated so every edge inside a plane is locally Delaunay; the area, the orientation,
 // the open boundary and the fold line are kept, and the smallest angle does not drop.
+#include "meshes/constants.h"
 #include "meshes/planar_flip.h"
 
 #include <catch2/catch.hpp>
@@ -9,6 +10,7 @@
 #include <set>
 
 using namespace wear::meshes;
+using wear::pi;
 
 namespace {
 double min_angle(const SurfaceMesh& m) {
@@ -29,7 +31,7 @@ TEST_CASE("Delaunay flips in flat regions keep the surface and fix its triangles
   // Interior vertices are jittered along the grid lines (within their plane), which leaves
   // many edges not Delaunay; diagonals all run the same way.
   const int nx = 13, ny = 9;
-  const double h = 1e-3, tilt = 30 * 3.14159265358979323846 / 180;
+  const double h = 1e-3, tilt = 30 * pi / 180;
   SurfaceMesh m;
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
@@ -93,7 +95,7 @@ TEST_CASE("Delaunay flips in flat regions keep the surface and fix its triangles
                      w = m.vertices[e.second] - m.vertices[v];
           opposite += std::atan2(norm(cross(u, w)), dot(u, w));
         }
-    CHECK(opposite <= 3.14159265358979323846 + 1e-9);
+    CHECK(opposite <= pi + 1e-9);
   }
   CHECK(boundary == boundary0);
   for (std::size_t f = 0; f < m.n_faces(); ++f) // orientation kept: normals up

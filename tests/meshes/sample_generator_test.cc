@@ -1,3 +1,4 @@
+#include "meshes/constants.h"
 #include "meshes/mesh_quality.h"
 #include "meshes/sample_frame.h"
 #include "meshes/sample_generator.h"
@@ -7,9 +8,9 @@
 #include <cmath>
 
 using namespace wear::meshes;
+using wear::pi;
 
 namespace {
-constexpr double pi = 3.14159265358979323846;
 
 SampleGeometry convex(double size, bool volume) {
   SampleGeometry s;

@@ -1,3 +1,4 @@
+#include "meshes/constants.h"
 #include "meshes/tester_walls.h"
 
 #include <catch2/catch.hpp>
@@ -6,11 +7,12 @@
 #include <cmath>
 
 using namespace wear::meshes;
+using wear::pi;
 
 TEST_CASE("tester walls: areas, normals, cut planes", "[meshes][walls]") {
   TesterGeometry t;
   const auto w = generate_tester_walls(t);
-  const double pi = 3.14159265358979323846, Th = t.sector_angle_deg * pi / 180;
+  const double Th = t.sector_angle_deg * pi / 180;
   const double ri = t.inner_radius, ro = t.outer_radius, H = t.wall_height;
   // Chords of the polygonal arcs lose area of order (dtheta)^2 / 6.
   CHECK(total_area(w.floor) == Approx(Th / 2 * (ro * ro - ri * ri)).epsilon(1e-4));

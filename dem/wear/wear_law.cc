@@ -4,7 +4,7 @@
 // Both are linear in extensive integrals, so the volume of a face set is the law applied to
 // the sum, and splitting contacts over faces conserves volume exactly. Each law is one entry
 // of the catalogue (name, description, parameters, factory).
-#include "dem/tester/wear_law.h"
+#include "dem/wear/wear_law.h"
 
 #include <cmath>
 #include <stdexcept>

@@ -4,9 +4,10 @@
 // on, among them the coarse-grained impulse (meshes/coarse_graining.h) that the FEM
 // receives. Only extensive, window-integrated quantities cross the module boundary;
 // intensive ones (pressure, traction, wear depth) are derived where they are used.
+#include "dem/engine/filling.h"
 #include "dem/engine/system.h"
-#include "dem/tester/tester_parameters.h"
 #include "meshes/face_field.h"
+#include "meshes/parameter_visitor.h"
 
 #include <functional>
 
@@ -20,9 +21,35 @@ struct LoadSpreading {
   bool wear = false;     ///< wear_volume coarse-grained (else per face)
 };
 
-/// The spreading the DEM subsection declares: Coarse-graining width (0: half the
-/// number-weighted mean diameter at the scaling factor), Wall traction, Wear field.
-LoadSpreading load_spreading(const TesterDemParameters& dem);
+/// How the DEM subsection asks a window's loads to be laid on a wall's faces.
+struct WallLoadParameters {
+  /// [m] width w of the kernel that coarse-grains the wall loads; 0: the number-mean particle
+  /// radius at the scaling factor
+  double coarse_graining_width = 0;
+  bool coarse_grained_traction = true; ///< the FEM receives the coarse-grained traction
+  bool coarse_grained_wear = false;    ///< the wear-law volume is coarse-grained too
+};
+
+/// The DEM subsection's entries of WallLoadParameters (inside the subsection).
+template <typename Visitor>
+void visit_parameters(WallLoadParameters& d, Visitor& v) {
+  v.real("Coarse-graining width", d.coarse_graining_width,
+         "[m] Width w of the Gaussian kernel, cut at 3w, that coarse-grains the contact loads "
+         "on a wearing wall into continuum fields (force and moment kept exactly); 0 uses the "
+         "number-mean particle radius at the Scaling factor.");
+  v.choice("Wall traction", d.coarse_grained_traction, "coarse-grained", "per face",
+           "The traction the FEM receives: the coarse-grained field of the contact forces, "
+           "independent of the triangulation, or each face's own window impulse over its area "
+           "(noisier on finer meshes).");
+  v.choice("Wear field", d.coarse_grained_wear, "coarse-grained", "per face",
+           "The wear-law volume: per face as the contacts fell, or coarse-grained with the "
+           "same kernel over the faces of each contact's label (label totals kept).");
+}
+
+/// The spreading `p` declares for particles of size distribution `psd`: Coarse-graining
+/// width (0: half the number-weighted mean diameter at the scaling factor), Wall traction,
+/// Wear field.
+LoadSpreading load_spreading(const WallLoadParameters& p, const SizeDistribution& psd);
 
 struct WallLoads {
   meshes::FaceField<meshes::Vec3> impulse; ///< [N s] integral of the contact force

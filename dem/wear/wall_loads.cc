@@ -9,7 +9,7 @@
 // so the coarse-grained traction has the window's force and moment, not those of loads
 // moved to face centroids. A face loaded only tangentially (no normal impulse, which a
 // contact never gives) would spread from its centroid.
-#include "dem/tester/wall_loads.h"
+#include "dem/wear/wall_loads.h"
 
 #include "meshes/coarse_graining.h"
 
@@ -90,9 +90,9 @@ WallLoads WallLoads::follow(const meshes::SurfaceMesh& mesh,
   return w;
 }
 
-LoadSpreading load_spreading(const TesterDemParameters& dem) {
-  return {dem.coarse_graining_width > 0 ? dem.coarse_graining_width : dem.psd.mean_diameter() / 2,
-          dem.coarse_grained_traction, dem.coarse_grained_wear};
+LoadSpreading load_spreading(const WallLoadParameters& p, const SizeDistribution& psd) {
+  return {p.coarse_graining_width > 0 ? p.coarse_graining_width : psd.mean_diameter() / 2,
+          p.coarse_grained_traction, p.coarse_grained_wear};
 }
 
 WallLoads wall_loads(const WearIntegrals& integrals, const std::vector<double>& wear_volume,
