@@ -65,12 +65,18 @@ std::string wear_rows(const dem::SceneRun& run, const dem::SceneWindow& w) {
   return r.str();
 }
 
-/// Wall k where it is now (a moving wall at its current pose).
+/// Wall k where it is now (a moving wall at its current pose; an exact surface of
+/// revolution, which keeps its place, as its triangles).
 void write_wall(const dem::SceneRun& run, int k, const std::string& dir) {
+  const std::string path = dir + "/" + run.walls()[std::size_t(k)].parameters.name + ".vtu";
+  if (run.system().wall_kind(k) == dem::WallKind::revolution) {
+    meshes::write_vtu(run.walls()[std::size_t(k)].surface.mesh, path);
+    return;
+  }
   const auto& wall = run.system().wall(k);
   meshes::SurfaceMesh m = wall.mesh();
   m.vertices = wall.world_vertices();
-  meshes::write_vtu(m, dir + "/" + wall.name() + ".vtu");
+  meshes::write_vtu(m, path);
 }
 
 } // namespace

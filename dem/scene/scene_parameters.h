@@ -21,20 +21,21 @@ struct SceneWallParameters {
   std::string file;            ///< STEP, IGES, BREP or STL (source = file)
   std::string unit = "m";      ///< m | mm, the file's length unit
   double mesh_size = 5e-3;     ///< [m] triangle size for CAD files and primitives
-  std::vector<double> origin{0, 0, 0};  ///< [m] plane corner, disc centre, base centre, box corner
-  std::vector<double> edge_u{1, 0, 0};  ///< [m] plane: first edge
-  std::vector<double> edge_v{0, 1, 0};  ///< [m] plane: second edge
-  std::vector<double> axis{0, 0, 1};    ///< [m] disc normal; cylinder/cone axis; box size
-  double radius = 0;                    ///< [m] disc, cylinder; cone base
-  double radius_top = 0;                ///< [m] cone top
-  double radius_inner = 0;              ///< [m] disc: central hole (an annulus)
-  bool caps = false;                    ///< cylinder, cone: with end discs
-  std::string material = "wall";        ///< wall | sample | holder (the DEM subsection's)
-  bool wears = false;                   ///< its faces accumulate wear (a closed solid)
-  std::string wearing_surfaces = "all"; ///< a wearing wall's surfaces that wear: numbers or all
-  std::string clamped_surfaces;         ///< a wearing wall's surfaces held fixed in the FEM
-  std::string motion = "fixed";         ///< fixed | rotation | translation | oscillation
-  std::vector<double> axis_point{0, 0, 0};    ///< [m] rotation
+  std::vector<double> origin{0, 0, 0}; ///< [m] plane corner, disc centre, base centre, box corner
+  std::vector<double> edge_u{1, 0, 0}; ///< [m] plane: first edge
+  std::vector<double> edge_v{0, 1, 0}; ///< [m] plane: second edge
+  std::vector<double> axis{0, 0, 1};   ///< [m] disc normal; cylinder/cone axis; box size
+  double radius = 0;                   ///< [m] disc, cylinder; cone base
+  double radius_top = 0;               ///< [m] cone top
+  double radius_inner = 0;             ///< [m] disc: central hole (an annulus)
+  bool caps = false;                   ///< cylinder, cone: with end discs
+  bool exact = true; ///< a disc or open cylinder that can be an exact surface of revolution is
+  std::string material = "wall";           ///< wall | sample | holder (the DEM subsection's)
+  bool wears = false;                      ///< its faces accumulate wear (a closed solid)
+  std::string wearing_surfaces = "all";    ///< a wearing wall's surfaces that wear: numbers or all
+  std::string clamped_surfaces;            ///< a wearing wall's surfaces held fixed in the FEM
+  std::string motion = "fixed";            ///< fixed | rotation | translation | oscillation
+  std::vector<double> axis_point{0, 0, 0}; ///< [m] rotation
   std::vector<double> rotation_axis{0, 0, 1}; ///< [-] rotation, right-handed
   double angular_velocity = 0;                ///< [rad/s] rotation
   std::vector<double> velocity{0, 0, 0};      ///< [m/s] translation
@@ -282,6 +283,14 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
            "[m] Disc: a central hole of this radius (an annulus, e.g. a hopper's flat floor "
            "around its orifice); 0: none.");
     v.boolean("Caps", w.caps, "Cylinder, cone: with the end discs (a closed solid).");
+    v.boolean("Exact surface", w.exact,
+              "A disc (an annulus with Inner radius) or a cylinder without Caps that does not "
+              "wear and does not move as a rigid body (Motion fixed or a surface motion) is an "
+              "exact surface of revolution in the DEM: contacts with the surface itself, not "
+              "with its triangles, so a round orifice's rim is a circle and a drum's wall is "
+              "smooth; its triangles at Mesh size then only collect its loads (force, moment, "
+              "Archard load-distance per face). false: the triangles are the wall. Other walls "
+              "are triangles whatever this says.");
     v.selection("Material", w.material, "wall|sample|holder",
                 "The DEM material of the wall: one of the DEM subsection's Wall, Sample and "
                 "Holder materials.");

@@ -5,7 +5,9 @@
 // time of the smallest particle, T_R = pi r sqrt(rho / G) / (0.1631 nu + 0.8766); skin =
 // half the smallest radius; list reach = the largest radius. Every wall accumulates its
 // per-face integrals (engine "wearing" walls), so each gets its force, moment and Archard
-// load-distance per window; `Wears` marks the FEM part only.
+// load-distance per window; `Wears` marks the FEM part only. A disc or open cylinder that
+// keeps its place and does not wear is an exact surface of revolution (revolution_surface,
+// scene_walls.h), its triangles the faces its integrals are summed on.
 //
 // A fill to a bed height (Fill/Bed height) is placed at random up to DEM/Loose factor heights
 // above its floor, counted from DEM/Assumed packing, and settles with the walls at rest until
@@ -25,8 +27,8 @@
 // refused (require_fill_count_fits): the insertion would try for minutes before giving up.
 #include "dem/scene/scene_run.h"
 
-#include "meshes/constants.h"
 #include "meshes/cad_import.h"
+#include "meshes/constants.h"
 #include "meshes/solid_region.h"
 #include "meshes/triangle_geometry.h"
 
@@ -433,6 +435,11 @@ void SceneRun::add_materials_and_walls() {
   for (const auto& w : walls_) {
     const std::string& name = w.parameters.material;
     const int id = name == "sample" ? sample : name == "holder" ? holder : wall;
+    if (const auto surface = revolution_surface(w.parameters)) {
+      system_.add_wall(RevolutionWall(*surface, id, surface_motion(w.parameters), true,
+                                      w.parameters.name, &w.surface.mesh));
+      continue;
+    }
     MeshWall mesh_wall(w.surface.mesh, id, surface_motion(w.parameters), true, w.parameters.name,
                        w.covered_labels);
     mesh_wall.set_rigid_motion(rigid_motion(w.parameters));
@@ -643,7 +650,7 @@ SceneWindow SceneRun::advance(double t_end) {
       loads.force = wi.total_impulse / duration;
       loads.torque = wi.total_impulse_moment / duration;
       loads.archard = wi.total_archard;
-      const auto& labels = system_.wall(int(k)).mesh().face_labels;
+      const auto& labels = walls_[k].surface.mesh.face_labels;
       for (std::size_t f = 0; f < labels.size(); ++f)
         loads.archard_label[labels[f]] += wi.archard[f];
     }

@@ -14,6 +14,12 @@
 // tester. The sample keeps its labels and their roles (meshes::label::wears, clamped); with
 // both walls present, the sample's sides and bottom and the holder's pocket coincide and are
 // named covered, as in the tester (MeshWall: one contact where wear face and rim meet).
+//
+// A disc or an open cylinder that does not wear and keeps its place (revolution_surface) is
+// an exact surface of revolution in the engine (RevolutionWall), as the tester's floor and
+// cylinders are; its triangles stay the wall's surface for the fill's checks, the output and
+// the per-face sums of its loads. The triangles are chords of the exact surface, inside it by
+// at most their sagitta (h^2 / 8 R for edges h on a circle of radius R).
 #include "dem/scene/scene_walls.h"
 
 #include "meshes/sample_frame.h"
@@ -187,6 +193,30 @@ std::vector<SceneWall> build_scene_walls(const SceneParameters& scene,
     walls.push_back(std::move(wall));
   }
   return walls;
+}
+
+std::optional<RevolutionSurface> revolution_surface(const SceneWallParameters& w) {
+  if (!w.exact || w.wears || moves_rigidly(w))
+    return std::nullopt;
+  RevolutionSurface s;
+  const Vec3 axis = scene_vector(w.axis);
+  s.axis_point = scene_vector(w.origin);
+  s.axis = meshes::normalized(axis);
+  if (w.source == "disc") {
+    s.kind = RevolutionKind::annulus;
+    s.height = 0;
+    s.inner_radius = w.radius_inner;
+    s.outer_radius = w.radius;
+    return s;
+  }
+  if (w.source == "cylinder" && !w.caps) {
+    s.kind = RevolutionKind::cylinder;
+    s.radius = w.radius;
+    s.axial_min = 0;
+    s.axial_max = meshes::norm(axis);
+    return s;
+  }
+  return std::nullopt;
 }
 
 } // namespace wear::dem

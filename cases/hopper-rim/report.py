@@ -1,0 +1,108 @@
+#!/usr/bin/env python3
+"""The rim study's figures (cases/hopper-rim/README.md) from its runs' series.
+
+    /usr/bin/python3 cases/hopper-rim/report.py [output/hopper-rim] [--update-readme]
+
+Per run, the discharge rate W [kg/s] is the least-squares slope of the outlet's mass
+(scene_series.csv, outlet_below_mass_kg) against time over 0.6 <= t <= 1.3 s: from 0.15 s
+after the plug starts to drop (the flow formed) to the run's end, while the bed still stands
+well above the orifice. For each orifice D the 32-gon and 128-gon runs of one seed share
+their settled bed (the same insertion; the plates differ only at the rim, under the plug),
+so the rims are compared seed by seed: the relative difference of a seed,
+(W_32 - W_128) / W_128, and its mean over the seeds with the 95 % interval of Student's t
+(n - 1 degrees of freedom). The rims agree when that interval contains 0; it is narrow
+enough to say so when its half-width is under 4 %.
+With --update-readme the table replaces the block between the README's markers.
+"""
+import csv
+import math
+import os
+import re
+import sys
+
+T_FROM, T_TO = 0.6, 1.3 + 1e-9
+# two-sided 95 % quantiles of Student's t, by degrees of freedom
+T95 = {1: 12.706, 2: 4.303, 3: 3.182, 4: 2.776, 5: 2.571, 6: 2.447, 7: 2.365, 8: 2.306,
+       9: 2.262, 10: 2.228, 11: 2.201, 12: 2.179, 13: 2.160, 14: 2.145, 15: 2.131}
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def rate(series):
+    """[kg/s] slope of the outlet's mass over T_FROM <= t <= T_TO; None if the run is short."""
+    t, m = [], []
+    with open(series) as f:
+        for row in csv.DictReader(f):
+            time = float(row["time_s"])
+            if T_FROM - 1e-9 <= time <= T_TO:
+                t.append(time)
+                m.append(float(row["outlet_below_mass_kg"]))
+    if not t or t[-1] < 1.3 - 1e-6:
+        return None
+    tm, mm = sum(t) / len(t), sum(m) / len(m)
+    return sum((a - tm) * (b - mm) for a, b in zip(t, m)) / sum((a - tm) ** 2 for a in t)
+
+
+def engine(folder):
+    with open(os.path.join(folder, "parameters.prm")) as f:
+        for line in f:
+            if line.startswith("# Engine version:"):
+                return line.split(":", 1)[1].strip()
+    return "unknown"
+
+
+def mean_interval(x):
+    n = len(x)
+    m = sum(x) / n
+    if n < 2:
+        return m, float("nan")
+    s = math.sqrt(sum((v - m) ** 2 for v in x) / (n - 1))
+    return m, T95.get(n - 1, 1.96) * s / math.sqrt(n)
+
+
+def main():
+    args = [a for a in sys.argv[1:] if not a.startswith("--")]
+    out = args[0] if args else os.path.join(ROOT, "output", "hopper-rim")
+    runs = {}
+    engines = set()
+    for name in sorted(os.listdir(out)):
+        m = re.fullmatch(r"(\d+)-(\d+)-s(\d+)", name)
+        series = os.path.join(out, name, "scene_series.csv")
+        if not m or not os.path.exists(series):
+            continue
+        w = rate(series)
+        if w is None:
+            continue
+        runs[(int(m.group(2)), int(m.group(1)), int(m.group(3)))] = w
+        engines.add(engine(os.path.join(out, name)))
+    lines = ["Engine version %s; W from 0.6 to 1.3 s; seeds paired (same settled bed)." %
+             ", ".join(sorted(engines)), "",
+             "| D [mm] | D/d | seeds | W 128-gon [kg/s] | W 32-gon [kg/s] | "
+             "(W_32 - W_128) / W_128, mean +- 95 % |",
+             "|---|---|---|---|---|---|"]
+    for d_mm in sorted({k[0] for k in runs}):
+        seeds = sorted(s for (d, n, s) in runs if d == d_mm and n == 32 and (d, 128, s) in runs)
+        if not seeds:
+            continue
+        w32 = [runs[(d_mm, 32, s)] for s in seeds]
+        w128 = [runs[(d_mm, 128, s)] for s in seeds]
+        rel = [100 * (a - b) / b for a, b in zip(w32, w128)]
+        m128, h128 = mean_interval(w128)
+        m32, h32 = mean_interval(w32)
+        mr, hr = mean_interval(rel)
+        lines.append("| %d | %.0f | %d | %.4f +- %.4f | %.4f +- %.4f | %+.2f +- %.2f %% |" %
+                     (d_mm, d_mm / 6, len(seeds), m128, h128, m32, h32, mr, hr))
+    text = "\n".join(lines) + "\n"
+    print(text, end="")
+    if "--update-readme" in sys.argv:
+        readme = os.path.join(ROOT, "cases", "hopper-rim", "README.md")
+        with open(readme) as f:
+            body = f.read()
+        begin, end = "<!-- rim-report:begin -->\n", "<!-- rim-report:end -->"
+        i, j = body.index(begin) + len(begin), body.index(end)
+        with open(readme + ".tmp", "w") as f:
+            f.write(body[:i] + text + body[j:])
+        os.replace(readme + ".tmp", readme)
+
+
+if __name__ == "__main__":
+    main()
