@@ -27,7 +27,9 @@
 //  can only misplace a q within round-off of an edge, where both branches give the same p.
 //
 // Wear accounting: a contact's extensive integrals go to the face of the accounting
-// triangulation whose closest point to the contact point is nearest (lowest index on ties).
+// triangulation whose closest point to the contact point is nearest (lowest index on ties);
+// an accounting of one face (a wall whose loads are wanted as totals) takes every contact
+// without a search.
 // The accounting grid registers faces within the longest edge length; a point farther than
 // that from every listed face (off the triangulated part) falls back to a scan of all faces.
 #include "dem/engine/revolution_wall.h"
@@ -177,6 +179,8 @@ void RevolutionWall::set_accounting(const meshes::SurfaceMesh& mesh) {
 
 std::uint32_t RevolutionWall::accounting_face(const Vec3& p) const {
   const MeshWall& m = *accounting_;
+  if (m.n_faces() == 1) // the wall's loads as one face: nothing to search
+    return 0;
   std::uint32_t best = ~0u;
   double best_d2 = std::numeric_limits<double>::infinity();
   const auto consider = [&](std::uint32_t f) {

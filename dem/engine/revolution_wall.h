@@ -44,7 +44,8 @@ class RevolutionWall {
 public:
   /// A `wearing` wall needs `accounting`, a triangulation of the same surface (e.g. from
   /// meshes::generate_tester_walls): each contact's wear integrals go to its face under the
-  /// contact point. Throws std::invalid_argument naming the wall on bad input.
+  /// contact point. One triangle on the surface accounts the wall's loads as totals (every
+  /// contact on face 0, no search). Throws std::invalid_argument naming the wall on bad input.
   RevolutionWall(const RevolutionSurface& surface, int material_id, const WallMotion& motion,
                  bool wearing, std::string name, const meshes::SurfaceMesh* accounting = nullptr);
 

@@ -277,6 +277,41 @@ inline Vec3 System::carried_wall_history(const WallSlot* old, bool* taken, std::
   return old[best].delta;
 }
 
+// The elastic energy of the wall contacts as the force counts them: the same contacts found
+// and merged (find_wall_contacts, merged_into_another), at most wall_slots per particle, each
+// the Hertz energy 8/15 E* sqrt(r) delta^(5/2) of its overlap. Summing every face's report
+// instead counted a contact on a shared edge or vertex once per face that reports it, and the
+// contacts the force merges on a tessellated concave surface each.
+void System::add_wall_elastic_energy(double& e) const {
+  const auto& p = particles;
+  Candidate found[max_wall_candidates];
+  const WallTable walls{wall_kind_.data(), wall_local_.data(), walls_.data(),
+                        revolution_walls_.data()};
+  const std::uint32_t* candidates = wall_candidate_.data();
+  for (std::size_t i = 0; i < p.n_real; ++i) {
+    const auto b = wall_candidate_offset_[i], end = wall_candidate_offset_[i + 1];
+    if (b == end)
+      continue;
+    const int n_found =
+        find_wall_contacts(walls, candidates + b, candidates + end,
+                           wall_candidate_bound_.data() + b, p.position[i], p.radius[i], found);
+    const double level = junction_level_tolerance * p.radius[i];
+    int n_kept = 0;
+    for (int c = 0; c < n_found && n_kept < wall_slots; ++c) {
+      if (merged_into_another(found, n_found, c, level))
+        continue;
+      ++n_kept;
+      const Candidate& cand = found[c];
+      const int material = walls.kind[cand.wall] == WallKind::revolution
+                               ? walls.revolution[walls.local[cand.wall]].material()
+                               : walls.mesh[walls.local[cand.wall]].material();
+      const double d = p.radius[i] - cand.dist;
+      const auto& k = contact_[p.material[i] * n_mat_ + material];
+      e += 8.0 / 15.0 * k.e_star * std::sqrt(p.radius[i]) * std::pow(d, 2.5);
+    }
+  }
+}
+
 void System::wall_forces(int thread, Vec3* F, Vec3* T) {
   const auto& p = particles;
   const double dt = dt_;

@@ -106,37 +106,4 @@ void System::size_wear_accumulators() {
   }
 }
 
-void System::add_wall_elastic_energy(double& e) const {
-  const auto& p = particles;
-  for (std::size_t i = 0; i < p.n_real; ++i)
-    for (auto k = wall_candidate_offset_[i]; k < wall_candidate_offset_[i + 1]; ++k) {
-      const std::uint32_t w = wall_candidate_[k] >> 24;
-      const std::size_t local = std::size_t(wall_local_[w]);
-      double d = 0;
-      int material = 0;
-      if (wall_kind_[w] == WallKind::revolution) {
-        const Vec3& x = p.position[i];
-        const RevolutionWall& rw = revolution_walls_[local];
-        const double dist = meshes::norm(x - rw.closest(x));
-        d = dist > 0 ? p.radius[i] - dist : 0;
-        material = rw.material();
-      } else {
-        const MeshWall& mw = walls_[local];
-        const Vec3 x = mw.to_body(p.position[i]);
-        const std::uint32_t f = wall_candidate_[k] & 0xFFFFFFu;
-        const auto cf = mw.closest(f, x);
-        d = p.radius[i] - meshes::norm(x - cf.point);
-        // Junction contacts are left out: where a flush wall continues the surface, its
-        // contact stands for them and is counted.
-        if (d > 0 && mw.contact_ownership(f, cf, x) != ContactOwnership::owned)
-          d = 0;
-        material = mw.material();
-      }
-      if (d <= 0)
-        continue;
-      const auto& c = contact_[p.material[i] * n_mat_ + material];
-      e += 8.0 / 15.0 * c.e_star * std::sqrt(p.radius[i]) * std::pow(d, 2.5);
-    }
-}
-
 } // namespace wear::dem

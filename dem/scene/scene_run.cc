@@ -7,7 +7,7 @@
 // per-face integrals (engine "wearing" walls), so each gets its force, moment and Archard
 // load-distance per window; `Wears` marks the FEM part only. A disc or open cylinder that
 // keeps its place and does not wear is an exact surface of revolution (revolution_surface,
-// scene_walls.h), its triangles the faces its integrals are summed on.
+// scene_walls.h) of one label, its window integrals summed as totals on one face.
 //
 // A fill to a bed height (Fill/Bed height) is placed at random up to DEM/Loose factor heights
 // above its floor, counted from DEM/Assumed packing, and settles with the walls at rest until
@@ -47,6 +47,17 @@ namespace {
 
 Vec3 vec(const std::vector<double>& v) {
   return scene_vector(v);
+}
+
+/// The first triangle of `m` with its label: the accounting face of an exact wall, whose
+/// loads are totals.
+meshes::SurfaceMesh first_face(const meshes::SurfaceMesh& m) {
+  meshes::SurfaceMesh one;
+  const auto& t = m.triangles.at(0);
+  one.vertices = {m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]};
+  one.triangles = {{0, 1, 2}};
+  one.face_labels = {m.face_labels.at(0)};
+  return one;
 }
 
 } // namespace
@@ -436,8 +447,11 @@ void SceneRun::add_materials_and_walls() {
     const std::string& name = w.parameters.material;
     const int id = name == "sample" ? sample : name == "holder" ? holder : wall;
     if (const auto surface = revolution_surface(w.parameters)) {
+      // Its loads as totals on one face (one label: a disc's or an open cylinder's): locating
+      // each contact among the triangles made a bin's settling 1.6 times slower.
+      const meshes::SurfaceMesh one_face = first_face(w.surface.mesh);
       system_.add_wall(RevolutionWall(*surface, id, surface_motion(w.parameters), true,
-                                      w.parameters.name, &w.surface.mesh));
+                                      w.parameters.name, &one_face));
       continue;
     }
     MeshWall mesh_wall(w.surface.mesh, id, surface_motion(w.parameters), true, w.parameters.name,
@@ -598,6 +612,12 @@ void SceneRun::exchange() {
   n_removed_ += apply_outlets(system_, outlets_);
 }
 
+const std::vector<int>& SceneRun::accounting_labels(std::size_t k) const {
+  return system_.wall_kind(int(k)) == WallKind::revolution
+             ? system_.revolution_wall(int(k)).accounting()->mesh().face_labels
+             : walls_[k].surface.mesh.face_labels;
+}
+
 SceneWindow SceneRun::advance(double t_end) {
   SceneWindow w;
   w.t_begin = time_;
@@ -650,7 +670,7 @@ SceneWindow SceneRun::advance(double t_end) {
       loads.force = wi.total_impulse / duration;
       loads.torque = wi.total_impulse_moment / duration;
       loads.archard = wi.total_archard;
-      const auto& labels = walls_[k].surface.mesh.face_labels;
+      const auto& labels = accounting_labels(k);
       for (std::size_t f = 0; f < labels.size(); ++f)
         loads.archard_label[labels[f]] += wi.archard[f];
     }

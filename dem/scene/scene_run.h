@@ -115,6 +115,9 @@ private:
   /// True once the engine is set up (a set-up builds the lists once at least).
   bool engine_ready() const { return system_.n_rebuilds() > 0; }
   void add_materials_and_walls();
+  /// The labels of the faces wall k's window integrals are summed on: its triangles, or the
+  /// one face of an exact surface of revolution.
+  const std::vector<int>& accounting_labels(std::size_t k) const;
   void fill(const std::function<void(const std::string&)>& progress);
   /// Inlet batches, flux-plane samples and outlets at the current time; sets the engine up
   /// at the first particle when it started empty.

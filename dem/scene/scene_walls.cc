@@ -17,9 +17,9 @@
 //
 // A disc or an open cylinder that does not wear and keeps its place (revolution_surface) is
 // an exact surface of revolution in the engine (RevolutionWall), as the tester's floor and
-// cylinders are; its triangles stay the wall's surface for the fill's checks, the output and
-// the per-face sums of its loads. The triangles are chords of the exact surface, inside it by
-// at most their sagitta (h^2 / 8 R for edges h on a circle of radius R).
+// cylinders are, its loads summed as totals (it has one label); its triangles stay the wall's
+// surface for the fill's checks and the output. They are chords of the exact surface, inside
+// it by at most their sagitta (h^2 / 8 R for edges h on a circle of radius R).
 #include "dem/scene/scene_walls.h"
 
 #include "meshes/sample_frame.h"
