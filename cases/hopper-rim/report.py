@@ -20,7 +20,7 @@ import os
 import re
 import sys
 
-T_FROM, T_TO = 0.7, 1.3 + 1e-9
+T_FROM, T_TO = 0.7, 1.3 + 1e-3  # [s] the rows land within a time step of the interval
 # two-sided 95 % quantiles of Student's t, by degrees of freedom
 T95 = {1: 12.706, 2: 4.303, 3: 3.182, 4: 2.776, 5: 2.571, 6: 2.447, 7: 2.365, 8: 2.306,
        9: 2.262, 10: 2.228, 11: 2.201, 12: 2.179, 13: 2.160, 14: 2.145, 15: 2.131}
@@ -33,10 +33,10 @@ def rate(series):
     with open(series) as f:
         for row in csv.DictReader(f):
             time = float(row["time_s"])
-            if T_FROM - 1e-9 <= time <= T_TO:
+            if T_FROM - 1e-3 <= time <= T_TO:
                 t.append(time)
                 m.append(float(row["outlet_below_mass_kg"]))
-    if not t or t[-1] < 1.3 - 1e-6:
+    if not t or t[-1] < 1.3 - 1e-3:
         return None
     tm, mm = sum(t) / len(t), sum(m) / len(m)
     return sum((a - tm) * (b - mm) for a, b in zip(t, m)) / sum((a - tm) ** 2 for a in t)
