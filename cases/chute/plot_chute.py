@@ -51,9 +51,10 @@ def read_stage(path):
 
 def main():
     run = sys.argv[1] if len(sys.argv) > 1 else "output/chute"
-    stages = sorted(glob.glob(os.path.join(run, "surface", "stage_*.h5")))
+    liner = os.path.join(run, "parts", "liner")
+    stages = sorted(glob.glob(os.path.join(liner, "surface", "stage_*.h5")))
     if len(stages) < 2:
-        sys.exit(f"plot_chute: no stage surfaces under '{run}/surface' (run the case first)")
+        sys.exit(f"plot_chute: no stage surfaces under '{liner}/surface' (run the case first)")
     out = os.path.join(run, "plots")
     os.makedirs(out, exist_ok=True)
 
@@ -89,7 +90,7 @@ def main():
     fig.savefig(os.path.join(out, "liner_profiles.png"), dpi=150)
     plt.close(fig)
 
-    with open(os.path.join(run, "stages.csv"), newline="") as f:
+    with open(os.path.join(liner, "stages.csv"), newline="") as f:
         rows = list(csv.DictReader(f))
     stage = [int(r["stage"]) for r in rows]
     applied = [float(r["applied_volume_m3"]) * 1e9 for r in rows]
@@ -119,7 +120,7 @@ def plot_fields(run, out):
     files = sorted(glob.glob(os.path.join(run, "fields", "record_*.h5")))
     if not files:
         return False
-    with open(os.path.join(run, "stages.csv"), newline="") as f:
+    with open(os.path.join(run, "parts", "liner", "stages.csv"), newline="") as f:
         rows = list(csv.DictReader(f))
     begin = float(rows[-2]["time_s"]) if len(rows) > 1 else 0.0  # the last stage's start
     phi, vel, last = 0, 0, []

@@ -21,6 +21,7 @@
 //                   wear window; attribute n_threads)
 //   /open_stage/... the stage's summed loads per face and its open revolution (steps done,
 //                   the evaluation's samples; column forces as n_columns x n_samples)
+//   /scene/...      a scene run's own part and its wearing parts (scene_checkpoint.cc)
 // The checkpoint a write replaces is kept as checkpoint.previous.h5 (a hard link taken
 // before the rename), and a resume falls back to it when the latest one does not read.
 // Every value is stored in its binary form, so a read gives back the same bits. The file is
@@ -220,41 +221,6 @@ std::vector<R> read_records(const Hdf5Reader& h5, const std::string& group) {
   return out;
 }
 
-std::vector<double> flat(const std::vector<meshes::Vec3>& v) {
-  std::vector<double> out;
-  out.reserve(3 * v.size());
-  for (const auto& x : v)
-    out.push_back(x.x), out.push_back(x.y), out.push_back(x.z);
-  return out;
-}
-
-std::vector<meshes::Vec3> vec3s(const std::vector<double>& v, const std::string& name) {
-  if (v.size() % 3 != 0)
-    throw std::runtime_error("'" + name + "' is not n x 3");
-  std::vector<meshes::Vec3> out(v.size() / 3);
-  for (std::size_t k = 0; k < out.size(); ++k)
-    out[k] = {v[3 * k], v[3 * k + 1], v[3 * k + 2]};
-  return out;
-}
-
-template <typename T>
-std::vector<std::int64_t> wide(const std::vector<T>& v) {
-  return {v.begin(), v.end()};
-}
-
-template <typename T>
-std::vector<T> narrow(const std::vector<std::int64_t>& v) {
-  return {v.begin(), v.end()};
-}
-
-void write_vec3(Hdf5File& h5, const std::string& name, const std::vector<meshes::Vec3>& v) {
-  h5.write(name, flat(v), {v.size(), 3});
-}
-
-void write_doubles(Hdf5File& h5, const std::string& name, const std::vector<double>& v) {
-  h5.write(name, v, {v.size()});
-}
-
 void write_continuation(Hdf5File& h5, const std::string& dem_group, const dem::SystemState& d) {
   const std::string g = dem_group + "/continuation";
   write_vec3(h5, g + "/reference_position", d.reference_position);
@@ -404,13 +370,7 @@ dem::RevolutionSamples read_samples(const Hdf5Reader& h5, const std::string& g) 
 }
 
 void write_open_stage(Hdf5File& h5, const OpenStage& o) {
-  write_vec3(h5, "/open_stage/impulse", o.impulse);
-  write_vec3(h5, "/open_stage/traction_impulse", o.traction_impulse);
-  write_doubles(h5, "/open_stage/normal_impulse", o.normal_impulse);
-  write_doubles(h5, "/open_stage/archard", o.archard);
-  write_doubles(h5, "/open_stage/sliding_work", o.sliding_work);
-  write_doubles(h5, "/open_stage/contact_steps", o.contact_steps);
-  write_doubles(h5, "/open_stage/wear_volume", o.wear_volume);
+  write_load_arrays(h5, "/open_stage", o);
   write_doubles(h5, "/open_stage/progress",
                 {double(o.revolutions_done), o.dem_seconds, o.duration,
                  double(o.revolution.steps_done), o.revolution.wall_seconds});
@@ -419,21 +379,7 @@ void write_open_stage(Hdf5File& h5, const OpenStage& o) {
 
 OpenStage read_open_stage(const Hdf5Reader& h5) {
   OpenStage o;
-  o.impulse = vec3s(h5.doubles("/open_stage/impulse"), "open_stage/impulse");
-  o.traction_impulse =
-      vec3s(h5.doubles("/open_stage/traction_impulse"), "open_stage/traction_impulse");
-  o.normal_impulse = h5.doubles("/open_stage/normal_impulse");
-  o.archard = h5.doubles("/open_stage/archard");
-  o.sliding_work = h5.doubles("/open_stage/sliding_work");
-  o.contact_steps = h5.doubles("/open_stage/contact_steps");
-  o.wear_volume = h5.doubles("/open_stage/wear_volume");
-  const std::size_t nf = o.impulse.size();
-  if (o.traction_impulse.size() != nf)
-    throw std::runtime_error("the open stage's loads are of different lengths");
-  for (const auto* v :
-       {&o.normal_impulse, &o.archard, &o.sliding_work, &o.contact_steps, &o.wear_volume})
-    if (v->size() != nf)
-      throw std::runtime_error("the open stage's loads are of different lengths");
+  read_load_arrays(h5, "/open_stage", o);
   const auto x = h5.doubles("/open_stage/progress");
   if (x.size() != 5 || !(x[0] >= 0) || !(x[3] >= 0))
     throw std::runtime_error("'/open_stage/progress' does not hold the stage's progress");
@@ -443,77 +389,15 @@ OpenStage read_open_stage(const Hdf5Reader& h5) {
   return o;
 }
 
-void write_scene(Hdf5File& h5, const SceneCheckpoint& s) {
-  write_doubles(h5, "/scene/progress",
-                {s.time, s.stage_end, double(s.n_records), double(s.n_removed)});
-  write_doubles(h5, "/scene/outlet_mass", s.outlet_mass);
-  h5.write("/scene/outlet_counts", wide(s.outlet_counts), {s.outlet_counts.size()});
-  h5.write("/scene/labels", s.labels, {s.labels.size()});
-  write_doubles(h5, "/scene/removed_per_label", s.removed_per_label);
-  h5.write("/scene/n_inlets", std::vector<int>{int(s.inlets.size())}, {1});
-  for (std::size_t k = 0; k < s.inlets.size(); ++k) {
-    const auto& in = s.inlets[k];
-    const std::string g = "/scene/inlet_" + std::to_string(k);
-    write_doubles(h5, g + "/pending", in.pending);
-    write_doubles(h5, g + "/inserted", {in.inserted_mass, double(in.n_inserted)});
-    h5.attribute(g, "rng", in.rng);
-  }
-  h5.write("/scene/n_flux_planes", std::vector<int>{int(s.flux_planes.size())}, {1});
-  for (std::size_t k = 0; k < s.flux_planes.size(); ++k) {
-    const auto& f = s.flux_planes[k];
-    const std::string g = "/scene/flux_plane_" + std::to_string(k);
-    h5.write(g + "/ids", f.ids, {f.ids.size()});
-    std::vector<double> last;
-    for (const auto& x : f.last)
-      last.insert(last.end(), {x.x, x.y, x.z});
-    h5.write(g + "/last", last, {f.last.size(), 3});
-    write_doubles(h5, g + "/counts", {f.net_mass, double(f.n_forward), double(f.n_backward)});
-  }
-}
-
-SceneCheckpoint read_scene(const Hdf5Reader& h5) {
-  SceneCheckpoint s;
-  const auto x = h5.doubles("/scene/progress");
-  if (x.size() != 4)
-    throw std::runtime_error("'/scene/progress' does not hold the scene's progress");
-  s.time = x[0], s.stage_end = x[1], s.n_records = int(x[2]), s.n_removed = std::uint64_t(x[3]);
-  s.outlet_mass = h5.doubles("/scene/outlet_mass");
-  s.outlet_counts = narrow<std::uint64_t>(h5.int64s("/scene/outlet_counts"));
-  s.labels = h5.ints("/scene/labels");
-  s.removed_per_label = h5.doubles("/scene/removed_per_label");
-  if (s.labels.size() != s.removed_per_label.size() ||
-      s.outlet_mass.size() != s.outlet_counts.size())
-    throw std::runtime_error("the scene's per-label or per-outlet records differ in length");
-  const auto n_inlets = h5.ints("/scene/n_inlets");
-  for (int k = 0; k < n_inlets.at(0); ++k) {
-    const std::string g = "/scene/inlet_" + std::to_string(k);
-    dem::InletState in;
-    in.pending = h5.doubles(g + "/pending");
-    const auto inserted = h5.doubles(g + "/inserted");
-    if (inserted.size() != 2)
-      throw std::runtime_error("'" + g + "/inserted' does not hold the inserted mass and count");
-    in.inserted_mass = inserted[0], in.n_inserted = std::uint64_t(inserted[1]);
-    in.rng = h5.text_attribute(g, "rng");
-    s.inlets.push_back(in);
-  }
-  const auto n_planes = h5.ints("/scene/n_flux_planes");
-  for (int k = 0; k < n_planes.at(0); ++k) {
-    const std::string g = "/scene/flux_plane_" + std::to_string(k);
-    dem::FluxPlaneState f;
-    f.ids = h5.int64s(g + "/ids");
-    const auto last = h5.doubles(g + "/last");
-    for (std::size_t q = 0; q + 2 < last.size(); q += 3)
-      f.last.push_back({last[q], last[q + 1], last[q + 2]});
-    const auto c = h5.doubles(g + "/counts");
-    if (c.size() != 3 || f.ids.size() != f.last.size() || last.size() != 3 * f.last.size())
-      throw std::runtime_error("'" + g + "' does not hold a flux plane's state");
-    f.net_mass = c[0], f.n_forward = std::uint64_t(c[1]), f.n_backward = std::uint64_t(c[2]);
-    s.flux_planes.push_back(f);
-  }
-  return s;
-}
-
 } // namespace
+
+void write_stage_records(Hdf5File& h5, const std::string& g, const std::vector<StageRecord>& r) {
+  write_records(h5, g, r);
+}
+
+std::vector<StageRecord> read_stage_records(const Hdf5Reader& h5, const std::string& g) {
+  return read_records<StageRecord>(h5, g);
+}
 
 std::vector<double> pack(const dem::RevolutionRecord& r) {
   return pack_one(r);
@@ -559,24 +443,8 @@ void write_checkpoint(const std::string& path, const Checkpoint& c,
   h5.write("/face_von_mises", c.face_von_mises, {c.face_von_mises.size()});
   write_records(h5, "/revolutions", c.revolutions);
   write_records(h5, "/stages", c.stages);
-  if (c.has_sample) {
-    const auto& s = c.sample;
-    h5.write("/sample/vertices", s.vertices, {s.vertices.size() / 3, 3});
-    h5.write("/sample/tetrahedra", s.tetrahedra, {s.tetrahedra.size() / 4, 4});
-    h5.write("/sample/boundary_faces", s.boundary_faces, {s.boundary_faces.size() / 3, 3});
-    h5.write("/sample/boundary_ids", s.boundary_ids, {s.boundary_ids.size()});
-    const auto& m = s.surface;
-    write_vec3(h5, "/sample/surface/vertices", m.vertices);
-    std::vector<std::int64_t> tri;
-    for (const auto& t : m.triangles)
-      tri.insert(tri.end(), t.begin(), t.end());
-    h5.write("/sample/surface/triangles", tri, {m.n_faces(), 3});
-    h5.write("/sample/surface/labels", m.face_labels, {m.n_faces()});
-    h5.attribute("/sample/surface", "revision", double(m.revision()));
-    h5.write("/sample/removed_volume", s.removed_volume, {s.removed_volume.size()});
-    h5.write("/sample/wear_depth", s.wear_depth, {s.wear_depth.size()});
-    h5.attribute("/sample", "n_remeshes", double(s.n_remeshes));
-  }
+  if (c.has_sample)
+    write_sample_state(h5, "/sample", c.sample);
   h5.attribute("/", "stages_done", double(c.stages_done));
   h5.attribute("/", "revolutions_done", double(c.revolutions_done));
   h5.attribute("/", "has_sample", c.has_sample ? 1.0 : 0.0);
@@ -588,40 +456,6 @@ void write_checkpoint(const std::string& path, const Checkpoint& c,
   if (c.scene)
     write_scene(h5, *c.scene);
   h5.commit(previous_checkpoint_path(path));
-}
-
-OpenStage open_stage(const dem::WallLoads& loads, int revolutions_done, double dem_seconds,
-                     const dem::OpenRevolution& revolution) {
-  OpenStage o;
-  o.revolutions_done = revolutions_done;
-  o.dem_seconds = dem_seconds;
-  o.impulse = loads.impulse.values();
-  o.traction_impulse = loads.traction_impulse.values();
-  o.normal_impulse = loads.normal_impulse.values();
-  o.archard = loads.archard.values();
-  o.sliding_work = loads.sliding_work.values();
-  o.contact_steps = loads.contact_steps.values();
-  o.wear_volume = loads.wear_volume.values();
-  o.duration = loads.duration;
-  o.revolution = revolution;
-  return o;
-}
-
-dem::WallLoads loads_of(const OpenStage& o, const meshes::SurfaceMesh& surface) {
-  if (o.impulse.size() != surface.n_faces())
-    throw std::runtime_error("checkpoint: the open stage's loads are on " +
-                             std::to_string(o.impulse.size()) + " faces, the sample surface has " +
-                             std::to_string(surface.n_faces()));
-  dem::WallLoads l = dem::WallLoads::zero(surface);
-  l.impulse.values() = o.impulse;
-  l.traction_impulse.values() = o.traction_impulse;
-  l.normal_impulse.values() = o.normal_impulse;
-  l.archard.values() = o.archard;
-  l.sliding_work.values() = o.sliding_work;
-  l.contact_steps.values() = o.contact_steps;
-  l.wear_volume.values() = o.wear_volume;
-  l.duration = o.duration;
-  return l;
 }
 
 void require_same_case(const Checkpoint& c, const std::string& parameters,
@@ -687,33 +521,14 @@ Checkpoint read_checkpoint(const std::string& path, const DemPart& part) {
     c.face_von_mises = h5.doubles("/face_von_mises");
     c.revolutions = read_records<dem::RevolutionRecord>(h5, "/revolutions");
     c.stages = read_records<StageRecord>(h5, "/stages");
-    if (c.has_sample) {
-      auto& s = c.sample;
-      s.vertices = h5.doubles("/sample/vertices");
-      s.tetrahedra = h5.int64s("/sample/tetrahedra");
-      s.boundary_faces = h5.int64s("/sample/boundary_faces");
-      s.boundary_ids = h5.ints("/sample/boundary_ids");
-      auto& m = s.surface;
-      m.vertices = vec3s(h5.doubles("/sample/surface/vertices"), "surface/vertices");
-      const auto tri = h5.int64s("/sample/surface/triangles");
-      m.triangles.resize(tri.size() / 3);
-      for (std::size_t f = 0; f < m.triangles.size(); ++f)
-        for (int k = 0; k < 3; ++k)
-          m.triangles[f][k] = std::uint32_t(tri[3 * f + k]);
-      m.face_labels = h5.ints("/sample/surface/labels");
-      m.set_revision(std::uint64_t(h5.attribute("/sample/surface", "revision")));
-      m.validate("checkpoint surface");
-      s.removed_volume = h5.doubles("/sample/removed_volume");
-      s.wear_depth = h5.doubles("/sample/wear_depth");
-      s.n_remeshes = int(h5.attribute("/sample", "n_remeshes"));
-      if (s.removed_volume.size() != m.n_faces() || s.wear_depth.size() != m.n_faces())
-        throw std::runtime_error("sample fields do not match its surface");
-    }
+    if (c.has_sample)
+      c.sample = read_sample_state(h5, "/sample");
     if (open)
       c.open_stage = read_open_stage(h5);
     if (h5.has_attribute("/", "has_scene") && h5.attribute("/", "has_scene") != 0)
       c.scene = read_scene(h5);
-    if (int(c.stages.size()) != c.stages_done || int(c.revolutions.size()) != c.revolutions_done)
+    if ((!c.scene && int(c.stages.size()) != c.stages_done) ||
+        int(c.revolutions.size()) != c.revolutions_done)
       throw std::runtime_error("the record counts do not match the stage and revolution counts");
   } catch (const std::exception& e) {
     throw std::runtime_error("checkpoint '" + path + "' is damaged or incomplete: " + e.what());

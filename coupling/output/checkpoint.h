@@ -6,13 +6,11 @@
 // every stage and at in-stage checkpoints, the one before kept beside it; read back with
 // every size checked.
 #include "coupling/loop/stage_record.h"
+#include "coupling/output/checkpoint_arrays.h"
+#include "coupling/output/scene_checkpoint.h"
 #include "dem/engine/system.h"
-#include "dem/scene/flux_plane.h"
-#include "dem/scene/inlet.h"
 #include "dem/tester/tester_evaluation.h"
 #include "dem/tester/wear_tester.h"
-#include "dem/wear/wall_loads.h"
-#include "fem/worn_sample.h"
 
 #include <optional>
 #include <ostream>
@@ -20,41 +18,6 @@
 #include <vector>
 
 namespace wear::coupling {
-
-/// A stage stopped inside its DEM part: what it had summed and where its revolution stands.
-/// The loads are dem::WallLoads's fields on the current sample surface, sample frame.
-struct OpenStage {
-  int revolutions_done = 0;                   ///< completed revolutions of the stage
-  double dem_seconds = 0;                     ///< [s] wall time of its DEM so far (reporting only)
-  std::vector<meshes::Vec3> impulse;          ///< [N s] per face
-  std::vector<meshes::Vec3> traction_impulse; ///< [N s] per face, as the FEM receives it
-  std::vector<double> normal_impulse, archard, sliding_work; ///< [N s], [N m], [J] per face
-  std::vector<double> contact_steps, wear_volume;            ///< [-], [m^3] per face
-  double duration = 0;                                       ///< [s] of the summed windows
-  dem::OpenRevolution revolution;
-};
-
-/// An open stage holding `loads` (sample frame) after `revolutions_done` revolutions.
-OpenStage open_stage(const dem::WallLoads& loads, int revolutions_done, double dem_seconds,
-                     const dem::OpenRevolution& revolution);
-/// The open stage's loads on `surface` (the current sample surface); throws when the face
-/// counts differ.
-dem::WallLoads loads_of(const OpenStage& o, const meshes::SurfaceMesh& surface);
-
-/// A scene run's own part (`wearsim scene-run`, coupling/loop/scene_coupled_run.h), between
-/// two of its windows: where the scene stands beside the engine's state.
-struct SceneCheckpoint {
-  double time = 0;             ///< [s] scene time
-  double stage_end = 0;        ///< [s] where the open stage (or the run) ends
-  int n_records = 0;           ///< windows recorded so far
-  std::uint64_t n_removed = 0; ///< particles the outlets took
-  std::vector<dem::InletState> inlets;
-  std::vector<double> outlet_mass;          ///< [kg] per outlet
-  std::vector<std::uint64_t> outlet_counts; ///< per outlet
-  std::vector<dem::FluxPlaneState> flux_planes;
-  std::vector<int> labels;               ///< the part's labels with removed volume so far
-  std::vector<double> removed_per_label; ///< [m^3] per label above (staged stages)
-};
 
 /// Which part of a checkpoint's DEM state a reader takes: rank `rank` of `n_ranks`.
 struct DemPart {
@@ -78,7 +41,8 @@ struct Checkpoint {
   std::vector<StageRecord> stages;
   /// Present in an in-stage checkpoint (the DEM state then carries its continuation part).
   std::optional<OpenStage> open_stage;
-  /// Present in a scene run's checkpoint (which always carries the DEM's continuation).
+  /// Present in a scene run's checkpoint (which always carries the DEM's continuation); its
+  /// wearing parts carry their own samples and stage records (`sample` and `stages` unused).
   std::optional<SceneCheckpoint> scene;
 };
 

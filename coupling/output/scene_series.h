@@ -4,7 +4,8 @@
 // mass each outlet took and the net mass through each flux plane so far, per wall the
 // window-mean force and moment about the origin in the wall's frame and the window's Archard
 // load-distance, the particles' mean and largest speed), scene_wear.csv (the window's Archard
-// load-distance per wall and label: the wear per labelled surface group), particles_<k>.vtu,
+// load-distance per wall and label: the wear per labelled surface group), particles_<k>.vtu
+// (unless Scene/Particle snapshots is false),
 // and the walls: walls/<name>.vtu once for a wall that does not move, walls_<k>/<name>.vtu
 // at every record for one that moves (a wearing part's worn surfaces: the wear loop's
 // surface/ series); with Scene/Fields, the window's binned solid fraction, velocity and
@@ -19,19 +20,21 @@ namespace wear::coupling {
 
 class SceneSeries {
 public:
-  /// Writes the fixed walls into `directory`/walls/ and starts the tables.
-  SceneSeries(std::string directory, const dem::SceneRun& run);
+  /// Writes the fixed walls into `directory`/walls/ and starts the tables; `snapshots`: the
+  /// particles at every record (Scene/Particle snapshots).
+  SceneSeries(std::string directory, const dem::SceneRun& run, bool snapshots);
   /// Continues the records of a resumed run: the tables as they stood after its first
   /// `n_records` records (later rows, written after the checkpoint, are dropped) and the
   /// fields files up to that record. Throws naming a table that holds fewer.
-  SceneSeries(std::string directory, const dem::SceneRun& run, int n_records);
+  SceneSeries(std::string directory, const dem::SceneRun& run, bool snapshots, int n_records);
   /// The next record, of window w, with the run as it stands at the window's end.
   void add(const dem::SceneWindow& w, const dem::SceneRun& run);
   int n_records() const { return n_records_; }
 
 private:
   std::string directory_;
-  std::string series_, wear_;                         ///< the tables so far
+  bool snapshots_ = true;
+  std::string series_, wear_; ///< the tables so far
   int n_records_ = 0;
   std::vector<bool> changing_;                        ///< per wall: written at every record
   std::vector<std::pair<int, double>> field_records_; ///< record and time of each fields file

@@ -112,6 +112,7 @@ struct SceneParameters {
   std::vector<double> gravity{0, 0, -9.81};      ///< [m/s^2]
   double end_time = 1;                           ///< [s] simulated
   double output_interval = 0.05;                 ///< [s] between records
+  bool particle_snapshots = true;                ///< particles_<k>.vtu at every record
   /// [s] DEM time of a stage of the wear loop (Coupling/Schedule) when a wall wears; 0: no
   /// stages, the scene runs to End time
   double stage_duration = 0;
@@ -160,6 +161,9 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
   v.real("End time", s.end_time, "[s] Simulated time of `wearsim scene-run`.");
   v.real("Output interval", s.output_interval,
          "[s] Simulated time between records of the run's series (and progress lines).");
+  v.boolean("Particle snapshots", s.particle_snapshots,
+            "Write the particles at every record (particles_<k>.vtu: position, velocity, "
+            "radius, ...); false: the tables and walls only (a long run's disk, or a timing).");
   v.real("Periodic sector", s.periodic_angle_deg,
          "[deg] The scene is the sector 0 <= theta < angle about the z axis through the "
          "origin, its two planes joined periodically (a particle leaving one enters through "

@@ -56,7 +56,7 @@ struct SceneRunState {
   std::vector<FluxPlaneState> flux_planes;
 };
 
-struct SceneFillShape; // the Fill region as built once (scene_run.cc)
+struct SceneFillShape; // the Fill region as built once (scene_fill.h)
 
 class SceneRun {
 public:

@@ -18,6 +18,7 @@
 
 #include <gmsh.h>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <filesystem>
@@ -115,6 +116,26 @@ std::string plate_case(const std::string& dir, const std::string& plate_extra,
   return text.substr(0, at) + output_extra + "end\n";
 }
 
+// The plate case with a second wearing part: the frame's north side a 50 x 6 x 50 mm steel
+// box that wears on the face towards the bed (surface 3, y = 55 mm) and is bolted at its back
+// (surface 4, clamped).
+std::string two_part_case(const std::string& text) {
+  const std::string north = frame_side("north", 0.005, 0.055, 0.055, 0.055);
+  const auto at = text.find(north);
+  return text.substr(0, at) +
+         "  subsection Wall north\n"
+         "    set Source = box\n"
+         "    set Origin = 0.005, 0.055, 0.0105\n"
+         "    set Axis = 0.05, 0.006, 0.05\n"
+         "    set Mesh size = 0.004\n"
+         "    set Material = sample\n"
+         "    set Wears = true\n"
+         "    set Wearing surfaces = 3\n"
+         "    set Clamped surfaces = 4\n"
+         "  end\n" +
+         text.substr(at + north.size());
+}
+
 CaseParameters read_text(const std::string& name, const std::string& text) {
   std::ofstream(name) << text;
   std::ostringstream warnings;
@@ -164,6 +185,19 @@ std::vector<double> series_after(const std::string& path, const std::string& nam
   return values;
 }
 
+// The mean of column `name` of scene_series.csv over the windows after time `after` [s],
+// each weighted by its length (the time since the row before).
+double window_weighted(const std::string& path, const std::string& name, double after) {
+  const auto values = series_after(path, name, after);
+  const auto times = series_after(path, "time_s", after);
+  double sum = 0, before = after;
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    sum += values[k] * (times[k] - before);
+    before = times[k];
+  }
+  return sum / (before - after);
+}
+
 } // namespace
 
 TEST_CASE("scene wear loop: a STEP plate worn by a bed it slides under", "[coupling][scene]") {
@@ -174,8 +208,8 @@ TEST_CASE("scene wear loop: a STEP plate worn by a bed it slides under", "[coupl
   SceneCoupledRun run(p, log);
   REQUIRE(run.run() == 0);
   INFO(log.str());
-  REQUIRE(run.part() != nullptr);
-  const auto& part = *run.part();
+  REQUIRE(run.parts().size() == 1);
+  const auto& part = run.parts()[0].sample();
   const auto& surface = part.surface();
 
   // Labels: each CAD surface by number under its role, in the FEM and the DEM alike.
@@ -198,9 +232,9 @@ TEST_CASE("scene wear loop: a STEP plate worn by a bed it slides under", "[coupl
   CHECK(run.scene().system().wall(0).mesh().n_faces() == surface.n_faces());
 
   // Stages: the first settles the bed on the resting plate and wears nothing.
-  REQUIRE(run.stages().size() == 2);
-  const auto& settle = run.stages()[0];
-  const auto& staged = run.stages()[1];
+  REQUIRE(run.parts()[0].stages().size() == 2);
+  const auto& settle = run.parts()[0].stages()[0];
+  const auto& staged = run.parts()[0].stages()[1];
   CHECK(settle.applied_volume == 0);
   REQUIRE(staged.applied_volume > 0);
   // The removed volume is A alpha times the Archard load-distance the DEM recorded on the
@@ -217,7 +251,7 @@ TEST_CASE("scene wear loop: a STEP plate worn by a bed it slides under", "[coupl
   for (std::size_t f = 0; f < surface.n_faces(); ++f)
     if (surface.face_labels[f] != part_surface(PartRole::wearing, 6))
       REQUIRE(part.removed_volume()[f] == 0);
-  CHECK(run.removed_per_label().at(part_surface(PartRole::wearing, 6)) ==
+  CHECK(run.parts()[0].removed_per_label().at(part_surface(PartRole::wearing, 6)) ==
         Approx(staged.applied_volume).epsilon(1e-12));
   // The FEM took the bed's weight on the plate: the DEM's force, downwards, and the plate
   // bends under it.
@@ -227,9 +261,10 @@ TEST_CASE("scene wear loop: a STEP plate worn by a bed it slides under", "[coupl
   CHECK(staged.mean_force_z < 0);
   CHECK(staged.max_displacement > 0);
   CHECK(staged.max_von_mises_ball > 0);
-  CHECK(std::filesystem::exists("scene_wear_out/history.xdmf"));
-  CHECK(std::filesystem::exists("scene_wear_out/part_wear.csv"));
+  CHECK(std::filesystem::exists("scene_wear_out/parts/plate/history.xdmf"));
+  CHECK(std::filesystem::exists("scene_wear_out/parts/plate/part_wear.csv"));
   CHECK(std::filesystem::exists("scene_wear_out/walls_4/plate.vtu"));
+  CHECK(std::filesystem::exists("scene_wear_out/particles_4.vtu")); // Particle snapshots
   // The binned fields of the last window: every particle is inside the frame's grid.
   const Hdf5Reader fields("scene_wear_out/fields/record_0004.h5");
   CHECK(fields.dims("solid_fraction") == std::vector<std::size_t>{3, 2, 2});
@@ -239,6 +274,80 @@ TEST_CASE("scene wear loop: a STEP plate worn by a bed it slides under", "[coupl
     count += n;
   CHECK(count == Approx(150).epsilon(1e-12));
   CHECK(std::filesystem::exists("scene_wear_out/fields.xdmf"));
+}
+
+TEST_CASE("scene wear loop: two wearing parts, each with its own stages, stress and tables",
+          "[coupling][scene]") {
+  write_plate("wear_plate.step");
+  std::filesystem::remove_all("scene_two_out");
+  // Without particle snapshots (Scene/Particle snapshots = false): the tables and walls only.
+  std::string text = two_part_case(plate_case("scene_two_out"));
+  text.insert(text.find("  set Output interval"), "  set Particle snapshots = false\n");
+  const auto p = read_text("scene_two.prm", text);
+  std::ostringstream log;
+  SceneCoupledRun run(p, log);
+  REQUIRE(run.run() == 0);
+  INFO(log.str());
+  REQUIRE(run.parts().size() == 2);
+  using meshes::label::part_surface;
+  using meshes::label::PartRole;
+  const struct {
+    std::string name, wearing_label, force_column;
+    int wearing;
+    double volume; ///< [m^3] of the CAD solid
+  } expected[2] = {{"plate", "S6", "wall_plate_fz_N", 6, 120e-3 * 60e-3 * 10e-3},
+                   {"north", "S3", "wall_north_fz_N", 3, 50e-3 * 6e-3 * 50e-3}};
+  double settled = 0;
+  for (std::size_t i = 0; i < 2; ++i) {
+    const auto& e = expected[i];
+    const auto& part = run.parts()[i];
+    INFO("part " << e.name);
+    CHECK(part.name() == e.name);
+    CHECK(part.wall() == (i == 0 ? 0u : 4u));
+    // Its own stages: the settling stage wears nothing, the staged one what its own DEM
+    // records give, through its own FEM and geometry update.
+    REQUIRE(part.stages().size() == 2);
+    const auto& settle = part.stages()[0];
+    const auto& staged = part.stages()[1];
+    settled = settle.time;
+    CHECK(settle.applied_volume == 0);
+    REQUIRE(staged.applied_volume > 0);
+    const auto archard = archard_after("scene_two_out/scene_wear.csv", e.name, settle.time);
+    REQUIRE(archard.count(e.wearing_label) == 1);
+    CHECK(staged.dem_wear_volume == Approx(1e-7 * archard.at(e.wearing_label)).epsilon(1e-7));
+    CHECK(staged.applied_volume == Approx(100 * staged.dem_wear_volume).epsilon(1e-12));
+    CHECK(staged.geometry_volume_change == Approx(staged.applied_volume).epsilon(2e-3));
+    CHECK(fem::mesh_volume(part.sample().triangulation()) ==
+          Approx(e.volume - staged.geometry_volume_change).epsilon(1e-9));
+    // Its loads sum to the contact forces the DEM recorded on its wall: the stage's mean is
+    // the windows' means weighted by their lengths.
+    CHECK(staged.mean_force_z ==
+          Approx(window_weighted("scene_two_out/scene_series.csv", e.force_column, settle.time))
+              .epsilon(1e-9));
+    CHECK(staged.max_von_mises_ball > 0);
+    // Only its wearing surface wears, and the DEM wall carries its worn surface.
+    const auto& surface = part.surface();
+    for (std::size_t f = 0; f < surface.n_faces(); ++f)
+      if (surface.face_labels[f] != part_surface(PartRole::wearing, e.wearing))
+        REQUIRE(part.sample().removed_volume()[f] == 0);
+    CHECK(part.removed_per_label().at(part_surface(PartRole::wearing, e.wearing)) ==
+          Approx(staged.applied_volume).epsilon(1e-12));
+    CHECK(run.scene().walls()[part.wall()].surface.mesh.revision() == surface.revision());
+    // Its own table: one row per stage for its wearing surface only.
+    const std::string table = file_text("scene_two_out/parts/" + e.name + "/part_wear.csv");
+    CHECK(std::count(table.begin(), table.end(), '\n') == 3);
+    CHECK_THAT(table, Catch::Contains("," + e.wearing_label + ","));
+    CHECK_THAT(table, !Catch::Contains(i == 0 ? ",S3," : ",S6,"));
+    CHECK(std::filesystem::exists("scene_two_out/parts/" + e.name + "/history.xdmf"));
+  }
+  CHECK(std::filesystem::exists("scene_two_out/scene_series.csv"));
+  CHECK(!std::filesystem::exists("scene_two_out/particles_1.vtu"));
+  // The bed presses on the box's wearing face: its normal load is the wall's y force.
+  const auto& north = run.parts()[1].stages()[1];
+  CHECK(north.wear_face_normal_force ==
+        Approx(window_weighted("scene_two_out/scene_series.csv", "wall_north_fy_N", settled))
+            .epsilon(1e-9));
+  CHECK(north.wear_face_normal_force > 0);
 }
 
 TEST_CASE("scene wear loop: set-ups that cannot run are refused naming the parameter",
@@ -273,8 +382,8 @@ TEST_CASE("scene wear loop: stopped by a signal or killed inside a stage, resume
   write_plate("wear_plate.step");
   // Windows of 0.02 s, a checkpoint after each (the interval is shorter than a window's work).
   const auto case_of = [](const std::string& dir) {
-    std::string text =
-        plate_case(dir, "", "1 dem-only, 2 staged", "  set Checkpoint interval = 1e-6\n");
+    std::string text = two_part_case(
+        plate_case(dir, "", "1 dem-only, 2 staged", "  set Checkpoint interval = 1e-6\n"));
     const auto at = text.find("  set Output interval = 0.05\n");
     return text.replace(at, 29, "  set Output interval = 0.02\n");
   };
@@ -311,16 +420,24 @@ TEST_CASE("scene wear loop: stopped by a signal or killed inside a stage, resume
       WARN("the run ended before the signal came; its resume below has nothing left to do");
     REQUIRE(run_wearsim(b + ".prm", "--resume", b + ".resumed.log", "scene-run") == 0);
     INFO(file_text(b + ".resumed.log"));
-    for (const char* table : {"/stages.csv", "/scene_series.csv", "/scene_wear.csv"}) {
+    for (const char* table : {"/parts/plate/stages.csv", "/parts/north/stages.csv",
+                              "/scene_series.csv", "/scene_wear.csv"}) {
       INFO(table);
       CHECK(physical_columns(b + table) == physical_columns(a + table));
     }
-    CHECK(file_text(b + "/part_wear.csv") == file_text(a + "/part_wear.csv"));
+    for (const char* table : {"/parts/plate/part_wear.csv", "/parts/north/part_wear.csv"})
+      CHECK(file_text(b + table) == file_text(a + table));
     const auto ca = read_checkpoint(a + "/checkpoint.h5"),
                cb = read_checkpoint(b + "/checkpoint.h5");
     CHECK(cb.stages_done == 3);
-    CHECK(cb.sample.surface.vertices == ca.sample.surface.vertices);
-    CHECK(cb.sample.removed_volume == ca.sample.removed_volume);
+    REQUIRE(ca.scene->parts.size() == 2);
+    REQUIRE(cb.scene->parts.size() == 2);
+    for (std::size_t i = 0; i < 2; ++i) {
+      const auto &pa = ca.scene->parts[i], &pb = cb.scene->parts[i];
+      CHECK(pb.sample.surface.vertices == pa.sample.surface.vertices);
+      CHECK(pb.sample.removed_volume == pa.sample.removed_volume);
+      CHECK(pb.face_von_mises == pa.face_von_mises);
+    }
     CHECK(cb.dem.position == ca.dem.position);
     CHECK(cb.dem.pair_history == ca.dem.pair_history);
   }

@@ -2,7 +2,8 @@
 """The wear tester as a scene against the built-in tester (scene_vs_tester.sh).
 
 For each sample kind (plain, convex) and seed, the mean DEM wear-law volume per revolution
-over revolutions FROM.. of stages.csv (one stage per revolution on both paths), then per path
+over revolutions FROM.. of stages.csv (one stage per revolution on both paths; a scene's in
+parts/sample/, its wearing wall's folder), then per path
 the mean over the seeds +- the 95 % interval (Student t, n - 1 degrees of freedom). The scene
 agrees when its mean lies inside the built-in tester's interval (the ensemble spread).
 Writes <root>/report.md and prints it; exits 1 when a kind disagrees, 2 on missing runs.
@@ -32,6 +33,8 @@ def engine_version(run):
 
 def wear_per_revolution(run, first):
     path = os.path.join(run, "stages.csv")
+    if not os.path.isfile(path):  # a scene's: its wearing wall's
+        path = os.path.join(run, "parts", "sample", "stages.csv")
     if not os.path.isfile(path):
         print(f"compare_scene: '{path}' does not exist (did the run finish?)", file=sys.stderr)
         sys.exit(2)

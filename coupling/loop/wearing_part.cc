@@ -1,0 +1,199 @@
+// A scene's wearing part (wearing_part.h): its FEM sample and its side of a stage.
+//
+// Set-up: gmsh meshes the volume the part's labelled surfaces enclose into tetrahedra
+// (fem::remesh_sample, uniform size = the wall's Mesh size); the tester's sample (Source =
+// sample) is the tester's own mesh, meshes::generate_sample moved to its placement, remeshed
+// later at its own graded sizes, its labels and roles kept.
+// One stage, in the part's own frame (a moving part's body frame), under the loads the DEM
+// summed on it over the stage's windows:
+//   1. Wear: dV_f = A s(sigma_f) V_f on the wearing faces (wear_increment.h).
+//   2. FEM (staged): stress under F_f = I_f / T, the clamped surfaces held (stage_steps.h).
+//   3. Geometry (staged): recession, mesh motion or remeshing (fem::WornSample).
+//   4. Output: the surface and volume with their fields (HDF5 + XDMF, VTU), stages.csv,
+//      part_wear.csv (volume per surface, per stage and cumulative).
+// A part is held at its clamped surfaces only: the tester's holder support (u . n = 0 on the
+// sample's sides) is set in the sample's own frame, and a scene's FEM works in the scene's.
+// Assumption: the tester's worn-through check (a clamped bottom below the wear face) does not
+// apply to a part; a part worn through folds its surface and the stage stops with the fold
+// message.
+#include "coupling/loop/wearing_part.h"
+
+#include "coupling/loop/stage_steps.h"
+#include "coupling/loop/wear_increment.h"
+#include "coupling/output/progress_line.h"
+#include "fem/remesher.h"
+#include "meshes/atomic_file.h"
+#include "meshes/sample_frame.h"
+#include "meshes/sample_generator.h"
+#include "meshes/stopwatch.h"
+
+#include <fstream>
+#include <sstream>
+
+namespace wear::coupling {
+
+namespace {
+
+/// The part's remeshing and mesh sizes: the wall's Mesh size everywhere (equal top and
+/// bottom sizes make the sample's graded size field uniform, whatever its thickness). The
+/// tester's sample keeps its own sizes and grading (Geometry/Sample), measured along its up
+/// direction from its bottom's plane where Geometry/Placement puts it.
+fem::WornSampleParameters part_parameters(const CaseParameters& p,
+                                          const dem::SceneWallParameters& wall) {
+  const std::string dir = part_directory(p, wall.name) + "/mesh";
+  if (wall.source == "sample") {
+    fem::WornSampleParameters w = fem::worn_sample_parameters(p.fem, p.geometry.sample, dir);
+    const meshes::SampleFrame frame(p.geometry.sample, p.geometry.placement);
+    w.remesh.up = frame.vector_to_tester({0, 0, 1});
+    w.remesh.up_offset = meshes::dot(w.remesh.up, frame.point_to_tester({0, 0, 0}));
+    return w;
+  }
+  meshes::SampleGeometry sizes;
+  sizes.mesh_size = sizes.mesh_size_bottom = wall.mesh_size;
+  sizes.thickness = wall.mesh_size;
+  sizes.curvature_refinement = false;
+  return fem::worn_sample_parameters(p.fem, sizes, dir);
+}
+
+const char* part_wear_header =
+    "stage,scheme,time_s,label,stage_volume_m3,cumulative_removed_volume_m3\n";
+
+meshes::FaceField<double> von_mises_on(const meshes::SurfaceMesh& surface) {
+  return meshes::FaceField<double>("von Mises", "Pa", meshes::Extensivity::intensive, surface);
+}
+
+} // namespace
+
+std::string part_directory(const CaseParameters& p, const std::string& name) {
+  return p.output.directory + "/parts/" + name;
+}
+
+WearingPart::WearingPart(const CaseParameters& p, std::size_t index, dem::SceneWall& wall,
+                         std::ostream& log)
+    : wall_(index), name_(wall.parameters.name), directory_(part_directory(p, name_)) {
+  const auto worn = part_parameters(p, wall.parameters);
+  meshes::ensure_directory(directory_ + "/mesh");
+  const meshes::Stopwatch clock;
+  const std::string msh = directory_ + "/mesh/part.msh";
+  std::size_t n_tetrahedra = 0;
+  meshes::SurfaceMesh surface;
+  if (wall.parameters.source == "sample") { // the tester's own mesh, placed (as CoupledRun)
+    meshes::SampleGeometry sg = p.geometry.sample;
+    sg.volume_mesh = true;
+    const auto g = meshes::generate_sample(sg, msh, &p.geometry.placement);
+    surface = g.surface;
+    n_tetrahedra = g.n_tetrahedra;
+  } else {
+    fem::RemeshReport report;
+    surface = fem::remesh_sample(wall.surface.mesh, worn.remesh, msh, &report);
+    n_tetrahedra = report.n_tetrahedra;
+  }
+  sample_ = std::make_unique<fem::WornSample>(msh, surface, worn);
+  wall.surface.mesh = surface;
+  std::string labels;
+  for (const auto& [label, area] : meshes::area_per_label(surface))
+    labels += " " + meshes::label::name(label);
+  log << format("part '%s': %zu tetrahedra, %zu surface faces, %.6g mm^3, surfaces%s (%.1f s)\n",
+                name_.c_str(), n_tetrahedra, surface.n_faces(),
+                meshes::enclosed_volume(surface) * 1e9, labels.c_str(), clock.seconds());
+  previous_stress_ = von_mises_on(surface);
+  output_ = std::make_unique<RunOutput>(directory_);
+  const std::vector<double> zero(surface.n_faces(), 0);
+  output_->add_surface(0, 0.0, surface,
+                       {{"cumulative removed volume", 1, zero}, {"wear depth", 1, zero}});
+}
+
+WearingPart::WearingPart(const CaseParameters& p, std::size_t index, const PartCheckpoint& c)
+    : wall_(index), name_(p.scene.walls.at(index).name), directory_(part_directory(p, name_)),
+      stages_(c.stages) {
+  sample_ = std::make_unique<fem::WornSample>(c.sample, part_parameters(p, p.scene.walls[index]));
+  previous_stress_ = von_mises_on(sample_->surface());
+  previous_stress_.values() = c.face_von_mises;
+  for (std::size_t k = 0; k < c.labels.size(); ++k)
+    removed_per_label_[c.labels[k]] = c.removed_per_label[k];
+  output_ = std::make_unique<RunOutput>(directory_);
+  output_->reload(stages_);
+  // part_wear.csv as it stood after the checkpoint's stages.
+  std::ifstream in(directory_ + "/part_wear.csv");
+  std::string line;
+  std::getline(in, line);
+  while (std::getline(in, line))
+    if (std::stoi(line.substr(0, line.find(','))) <= int(stages_.size()))
+      wear_rows_ += line + "\n";
+}
+
+bool WearingPart::run_stage(StageRecord r, const dem::WallLoads& loads, const CaseParameters& p,
+                            std::ostream& log) {
+  const bool staged = r.scheme == Scheme::staged;
+  const meshes::Stopwatch wear_clock;
+  const WearIncrement increment =
+      wear_increment(sample_->surface(), loads.wear_volume, previous_stress_, p.coupling, staged);
+  record_increment(increment, stages_.empty() ? 0.0 : stages_.back().cumulative_applied, p.coupling,
+                   r);
+  r.wear_seconds = wear_clock.seconds();
+  meshes::FaceField<double> applied = increment.removed;
+  if (staged) {
+    fem::ElasticityParameters ep = p.fem.elasticity;
+    ep.averaging_radius = stress_averaging_radius(p);
+    ep.holder_support = false;
+    const StageStress stress = solve_stage_stress(*sample_, loads, ep, *output_, r);
+    GeometryUpdate update = apply_stage_wear(*sample_, increment, stress, r);
+    for (const auto& refusal : update.report.remesh_refusals)
+      log << "stage " << r.stage << ", part '" << name_
+          << "': a remesh needed more than one attempt; refused:" << refusal << "\n";
+    applied = std::move(update.applied);
+    previous_stress_ = std::move(update.von_mises);
+  }
+
+  const meshes::Stopwatch clock;
+  const auto& surface = sample_->surface();
+  std::map<int, double> stage_per_label;
+  for (std::size_t f = 0; f < surface.n_faces(); ++f)
+    stage_per_label[surface.face_labels[f]] += applied[f];
+  std::vector<meshes::VtuArray> fields{
+      {"cumulative removed volume", 1, sample_->removed_volume().values()},
+      {"wear depth", 1, sample_->wear_depth().values()},
+      {"stage removed volume", 1, applied.values()}};
+  if (staged)
+    fields.push_back({"von Mises", 1, previous_stress_.values()});
+  output_->add_surface(r.stage, r.time, surface, fields);
+  r.n_surface_faces = int(surface.n_faces());
+  r.n_tetrahedra = int(sample_->triangulation().n_active_cells());
+  r.output_seconds += clock.seconds();
+  stages_.push_back(r);
+  output_->write_tables({}, stages_, 0, {});
+  if (staged) // a dem-only stage's volume changes nothing
+    for (const auto& [label, v] : stage_per_label)
+      removed_per_label_[label] += v;
+  std::ostringstream rows;
+  rows.precision(10);
+  for (const auto& [label, v] : stage_per_label)
+    if (meshes::label::wears(label))
+      rows << r.stage << "," << scheme_name(r.scheme) << "," << r.time << ","
+           << meshes::label::name(label) << "," << v << "," << removed_per_label_[label] << "\n";
+  wear_rows_ += rows.str();
+  meshes::write_atomically(directory_ + "/part_wear.csv",
+                           [&](std::ostream& out) { out << part_wear_header << wear_rows_; });
+  log << format("stage %d %s, part '%s': wear-law volume %.4g mm^3, removed %.4g mm^3 "
+                "(cumulative %.4g), max von Mises (ball) %.3g MPa, %d remeshes, FEM %.1f s\n",
+                r.stage, scheme_name(r.scheme).c_str(), name_.c_str(), r.dem_wear_volume * 1e9,
+                r.applied_volume * 1e9, r.cumulative_applied * 1e9, r.max_von_mises_ball * 1e-6,
+                r.n_remeshes, r.fem_solve_seconds + r.motion_seconds + r.remesh_seconds)
+      << std::flush;
+  return staged;
+}
+
+PartCheckpoint WearingPart::state(const dem::WallLoads& open) const {
+  PartCheckpoint c;
+  c.sample = sample_->state();
+  c.face_von_mises = previous_stress_.values();
+  c.stages = stages_;
+  for (const auto& [label, v] : removed_per_label_) {
+    c.labels.push_back(label);
+    c.removed_per_label.push_back(v);
+  }
+  c.open = open_stage(open, 0, 0, {});
+  return c;
+}
+
+} // namespace wear::coupling

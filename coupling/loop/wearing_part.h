@@ -1,0 +1,70 @@
+#pragma once
+// One wearing part of a scene (coupling/loop/scene_coupled_run.h): a wall with Wears = true,
+// its CAD surfaces labelled by role (wearing, free, clamped), meshed into tetrahedra and worn,
+// moved and remeshed by fem::WornSample. A scene holds any number of them; each has its own
+// sample, stress, stage records and output folder (Output/Directory/parts/<wall name>:
+// stages.csv, part_wear.csv, history.xdmf with the surface and volume per stage, mesh/), and
+// writes and reads its own part of the run's checkpoint.
+#include "coupling/loop/stage_record.h"
+#include "coupling/output/run_output.h"
+#include "coupling/output/scene_checkpoint.h"
+#include "coupling/parameters/case_parameters.h"
+#include "dem/scene/scene_walls.h"
+#include "dem/wear/wall_loads.h"
+#include "fem/worn_sample.h"
+
+#include <map>
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace wear::coupling {
+
+class WearingPart {
+public:
+  /// Meshes scene wall `wall` (index `index` among the scene's walls) into tetrahedra and
+  /// gives the wall that mesh's boundary, so that DEM faces and FEM boundary faces are the
+  /// same triangles; writes the part's stage 0 surface. Logs what it made.
+  WearingPart(const CaseParameters& p, std::size_t index, dem::SceneWall& wall, std::ostream& log);
+  /// The part as checkpoint part `c` left it (its output folder as it stood then).
+  WearingPart(const CaseParameters& p, std::size_t index, const PartCheckpoint& c);
+
+  std::size_t wall() const { return wall_; } ///< index among the scene's walls
+  const std::string& name() const { return name_; }
+  const fem::WornSample& sample() const { return *sample_; }
+  const meshes::SurfaceMesh& surface() const { return sample_->surface(); }
+  const std::vector<StageRecord>& stages() const { return stages_; }
+  /// [m^3] removed volume asked of the geometry per label, summed over the staged stages
+  /// (part_wear.csv also lists a dem-only stage's amplified wear-law volume, which changes
+  /// nothing).
+  const std::map<int, double>& removed_per_label() const { return removed_per_label_; }
+  /// Where the part writes: Output/Directory/parts/<name>.
+  const std::string& directory() const { return directory_; }
+
+  /// Stage r (its number, scheme, amplification, time and DEM figures set) under the loads
+  /// the DEM summed on the part (part frame): the wear increment; for a staged stage the
+  /// stress under those loads and the geometry update. Records the stage and writes its
+  /// output. Returns true when the part's surface changed (the DEM wall takes it then).
+  bool run_stage(StageRecord r, const dem::WallLoads& loads, const CaseParameters& p,
+                 std::ostream& log);
+  /// The part's checkpoint part; `open`: the open stage's loads summed so far.
+  PartCheckpoint state(const dem::WallLoads& open) const;
+
+private:
+  std::size_t wall_;
+  std::string name_, directory_;
+  std::unique_ptr<fem::WornSample> sample_;
+  std::unique_ptr<RunOutput> output_;
+  std::vector<StageRecord> stages_;
+  /// [Pa] the last staged stage's von Mises stress on the part's faces (zeros before the
+  /// first): the stress-informed wear law's input to the next stage
+  meshes::FaceField<double> previous_stress_;
+  std::map<int, double> removed_per_label_;
+  std::string wear_rows_; ///< part_wear.csv's rows so far
+};
+
+/// Output/Directory/parts/<name>: a wearing part's folder.
+std::string part_directory(const CaseParameters& p, const std::string& name);
+
+} // namespace wear::coupling

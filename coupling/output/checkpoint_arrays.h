@@ -1,0 +1,74 @@
+#pragma once
+// The arrays a checkpoint is made of, each written and read back in its binary form: Vec3
+// lists as n x 3, unsigned and 64-bit integers widened, the worn FEM sample, the stage
+// records, a stage's summed loads. Each stateful part of a checkpoint (checkpoint.h,
+// scene_checkpoint.h) composes them under its own group.
+#include "coupling/loop/stage_record.h"
+#include "coupling/output/hdf5_file.h"
+#include "dem/tester/wear_tester.h"
+#include "dem/wear/wall_loads.h"
+#include "fem/worn_sample.h"
+#include "meshes/vec3.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace wear::coupling {
+
+/// A stage stopped inside its DEM part: what it had summed and where its revolution stands.
+/// The loads are dem::WallLoads's fields on the current part surface, in the part's frame.
+struct OpenStage {
+  int revolutions_done = 0;                   ///< completed revolutions of the stage
+  double dem_seconds = 0;                     ///< [s] wall time of its DEM so far (reporting only)
+  std::vector<meshes::Vec3> impulse;          ///< [N s] per face
+  std::vector<meshes::Vec3> traction_impulse; ///< [N s] per face, as the FEM receives it
+  std::vector<double> normal_impulse, archard, sliding_work; ///< [N s], [N m], [J] per face
+  std::vector<double> contact_steps, wear_volume;            ///< [-], [m^3] per face
+  double duration = 0;                                       ///< [s] of the summed windows
+  dem::OpenRevolution revolution;
+};
+
+/// An open stage holding `loads` (sample frame) after `revolutions_done` revolutions.
+OpenStage open_stage(const dem::WallLoads& loads, int revolutions_done, double dem_seconds,
+                     const dem::OpenRevolution& revolution);
+/// The open stage's loads on `surface` (the current part surface); throws when the face
+/// counts differ.
+dem::WallLoads loads_of(const OpenStage& o, const meshes::SurfaceMesh& surface);
+
+std::vector<double> flat(const std::vector<meshes::Vec3>& v);
+/// Throws naming `name` when v is not n x 3.
+std::vector<meshes::Vec3> vec3s(const std::vector<double>& v, const std::string& name);
+
+template <typename T>
+std::vector<std::int64_t> wide(const std::vector<T>& v) {
+  return {v.begin(), v.end()};
+}
+
+template <typename T>
+std::vector<T> narrow(const std::vector<std::int64_t>& v) {
+  return {v.begin(), v.end()};
+}
+
+void write_vec3(Hdf5File& h5, const std::string& name, const std::vector<meshes::Vec3>& v);
+void write_doubles(Hdf5File& h5, const std::string& name, const std::vector<double>& v);
+
+/// The worn sample in group g: mesh arrays, surface (vertices, triangles, labels, attribute
+/// revision), removed_volume, wear_depth, attribute n_remeshes.
+void write_sample_state(Hdf5File& h5, const std::string& g, const fem::WornSampleState& s);
+/// Throws when the arrays do not fit together.
+fem::WornSampleState read_sample_state(const Hdf5Reader& h5, const std::string& g);
+
+/// An open stage's per-face loads in group g (impulse, traction_impulse, normal_impulse,
+/// archard, sliding_work, contact_steps, wear_volume); its duration and progress are the
+/// caller's.
+void write_load_arrays(Hdf5File& h5, const std::string& g, const OpenStage& o);
+/// Fills o's per-face loads; throws when their lengths differ.
+void read_load_arrays(const Hdf5Reader& h5, const std::string& g, OpenStage& o);
+
+/// The stage records packed as numbers (pack()) in g/data, g/offsets, their distortions as
+/// the text attribute g:distortions (checkpoint.cc, beside the record's field list).
+void write_stage_records(Hdf5File& h5, const std::string& g, const std::vector<StageRecord>& r);
+std::vector<StageRecord> read_stage_records(const Hdf5Reader& h5, const std::string& g);
+
+} // namespace wear::coupling

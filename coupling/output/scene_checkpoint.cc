@@ -1,0 +1,118 @@
+// A scene run's part of checkpoint.h5 (scene_checkpoint.h). Layout under /scene:
+//   progress            time, stage end, records written, particles removed
+//   outlet_mass, outlet_counts, n_inlets, inlet_<k>/{pending, inserted, rng}
+//   n_flux_planes, flux_plane_<k>/{ids, last, counts}
+//   n_parts, part_<k>/{sample/..., face_von_mises, stages/..., labels, removed_per_label,
+//                      open_loads/... with attribute duration}
+#include "coupling/output/scene_checkpoint.h"
+
+#include <stdexcept>
+
+namespace wear::coupling {
+
+namespace {
+
+std::string part_group(std::size_t k) {
+  return "/scene/part_" + std::to_string(k);
+}
+
+void write_part(Hdf5File& h5, const std::string& g, const PartCheckpoint& p) {
+  write_sample_state(h5, g + "/sample", p.sample);
+  write_doubles(h5, g + "/face_von_mises", p.face_von_mises);
+  write_stage_records(h5, g + "/stages", p.stages);
+  h5.write(g + "/labels", p.labels, {p.labels.size()});
+  write_doubles(h5, g + "/removed_per_label", p.removed_per_label);
+  write_load_arrays(h5, g + "/open_loads", p.open);
+  h5.attribute(g + "/open_loads/impulse", "duration", p.open.duration);
+}
+
+PartCheckpoint read_part(const Hdf5Reader& h5, const std::string& g) {
+  PartCheckpoint p;
+  p.sample = read_sample_state(h5, g + "/sample");
+  p.face_von_mises = h5.doubles(g + "/face_von_mises");
+  p.stages = read_stage_records(h5, g + "/stages");
+  p.labels = h5.ints(g + "/labels");
+  p.removed_per_label = h5.doubles(g + "/removed_per_label");
+  read_load_arrays(h5, g + "/open_loads", p.open);
+  p.open.duration = h5.attribute(g + "/open_loads/impulse", "duration");
+  const std::size_t nf = p.sample.surface.n_faces();
+  if (p.face_von_mises.size() != nf || p.open.impulse.size() != nf)
+    throw std::runtime_error("the stress or loads of '" + g + "' are not on its surface's faces");
+  if (p.labels.size() != p.removed_per_label.size())
+    throw std::runtime_error("the per-label volumes of '" + g + "' differ in length");
+  return p;
+}
+
+} // namespace
+
+void write_scene(Hdf5File& h5, const SceneCheckpoint& s) {
+  write_doubles(h5, "/scene/progress",
+                {s.time, s.stage_end, double(s.n_records), double(s.n_removed)});
+  write_doubles(h5, "/scene/outlet_mass", s.outlet_mass);
+  h5.write("/scene/outlet_counts", wide(s.outlet_counts), {s.outlet_counts.size()});
+  h5.write("/scene/n_inlets", std::vector<int>{int(s.inlets.size())}, {1});
+  for (std::size_t k = 0; k < s.inlets.size(); ++k) {
+    const auto& in = s.inlets[k];
+    const std::string g = "/scene/inlet_" + std::to_string(k);
+    write_doubles(h5, g + "/pending", in.pending);
+    write_doubles(h5, g + "/inserted", {in.inserted_mass, double(in.n_inserted)});
+    h5.attribute(g, "rng", in.rng);
+  }
+  h5.write("/scene/n_flux_planes", std::vector<int>{int(s.flux_planes.size())}, {1});
+  for (std::size_t k = 0; k < s.flux_planes.size(); ++k) {
+    const auto& f = s.flux_planes[k];
+    const std::string g = "/scene/flux_plane_" + std::to_string(k);
+    h5.write(g + "/ids", f.ids, {f.ids.size()});
+    write_vec3(h5, g + "/last", f.last);
+    write_doubles(h5, g + "/counts", {f.net_mass, double(f.n_forward), double(f.n_backward)});
+  }
+  h5.write("/scene/n_parts", std::vector<int>{int(s.parts.size())}, {1});
+  h5.attribute("/", "scene_parts", 1.0);
+  for (std::size_t k = 0; k < s.parts.size(); ++k)
+    write_part(h5, part_group(k), s.parts[k]);
+}
+
+SceneCheckpoint read_scene(const Hdf5Reader& h5) {
+  SceneCheckpoint s;
+  const auto x = h5.doubles("/scene/progress");
+  if (x.size() != 4)
+    throw std::runtime_error("'/scene/progress' does not hold the scene's progress");
+  s.time = x[0], s.stage_end = x[1], s.n_records = int(x[2]), s.n_removed = std::uint64_t(x[3]);
+  s.outlet_mass = h5.doubles("/scene/outlet_mass");
+  s.outlet_counts = narrow<std::uint64_t>(h5.int64s("/scene/outlet_counts"));
+  if (s.outlet_mass.size() != s.outlet_counts.size())
+    throw std::runtime_error("the scene's per-outlet records differ in length");
+  const auto n_inlets = h5.ints("/scene/n_inlets");
+  for (int k = 0; k < n_inlets.at(0); ++k) {
+    const std::string g = "/scene/inlet_" + std::to_string(k);
+    dem::InletState in;
+    in.pending = h5.doubles(g + "/pending");
+    const auto inserted = h5.doubles(g + "/inserted");
+    if (inserted.size() != 2)
+      throw std::runtime_error("'" + g + "/inserted' does not hold the inserted mass and count");
+    in.inserted_mass = inserted[0], in.n_inserted = std::uint64_t(inserted[1]);
+    in.rng = h5.text_attribute(g, "rng");
+    s.inlets.push_back(in);
+  }
+  const auto n_planes = h5.ints("/scene/n_flux_planes");
+  for (int k = 0; k < n_planes.at(0); ++k) {
+    const std::string g = "/scene/flux_plane_" + std::to_string(k);
+    dem::FluxPlaneState f;
+    f.ids = h5.int64s(g + "/ids");
+    f.last = vec3s(h5.doubles(g + "/last"), g + "/last");
+    const auto c = h5.doubles(g + "/counts");
+    if (c.size() != 3 || f.ids.size() != f.last.size())
+      throw std::runtime_error("'" + g + "' does not hold a flux plane's state");
+    f.net_mass = c[0], f.n_forward = std::uint64_t(c[1]), f.n_backward = std::uint64_t(c[2]);
+    s.flux_planes.push_back(f);
+  }
+  if (!h5.has_attribute("/", "scene_parts"))
+    throw std::runtime_error("a scene checkpoint written before scenes had several wearing "
+                             "parts; run the case again with --overwrite");
+  const auto n_parts = h5.ints("/scene/n_parts");
+  for (int k = 0; k < n_parts.at(0); ++k)
+    s.parts.push_back(read_part(h5, part_group(std::size_t(k))));
+  return s;
+}
+
+} // namespace wear::coupling

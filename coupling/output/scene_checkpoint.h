@@ -1,0 +1,42 @@
+#pragma once
+// A scene run's own part of a checkpoint (`wearsim scene-run`,
+// coupling/loop/scene_coupled_run.h), between two of its windows: where the scene stands
+// beside the engine's state, and each wearing part's own state (coupling/loop/wearing_part.h).
+#include "coupling/output/checkpoint_arrays.h"
+#include "dem/scene/flux_plane.h"
+#include "dem/scene/inlet.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace wear::coupling {
+
+/// A wearing part between two windows: its worn sample, the last staged stage's stress, its
+/// stage records, its removed volume per label and the open stage's summed loads on it.
+struct PartCheckpoint {
+  fem::WornSampleState sample;
+  std::vector<double> face_von_mises; ///< [Pa] per face of the part's surface (last stage)
+  std::vector<StageRecord> stages;
+  std::vector<int> labels;               ///< the part's labels with removed volume so far
+  std::vector<double> removed_per_label; ///< [m^3] per label above (staged stages)
+  OpenStage open;                        ///< the open stage's loads (part frame)
+};
+
+struct SceneCheckpoint {
+  double time = 0;             ///< [s] scene time
+  double stage_end = 0;        ///< [s] where the open stage (or the run) ends
+  int n_records = 0;           ///< windows recorded so far
+  std::uint64_t n_removed = 0; ///< particles the outlets took
+  std::vector<dem::InletState> inlets;
+  std::vector<double> outlet_mass;          ///< [kg] per outlet
+  std::vector<std::uint64_t> outlet_counts; ///< per outlet
+  std::vector<dem::FluxPlaneState> flux_planes;
+  std::vector<PartCheckpoint> parts; ///< in the order of the scene's wearing walls
+};
+
+/// Writes s under /scene: /scene/progress, outlets, inlet_<k>, flux_plane_<k>, part_<k>.
+void write_scene(Hdf5File& h5, const SceneCheckpoint& s);
+/// Throws naming what is missing or inconsistent.
+SceneCheckpoint read_scene(const Hdf5Reader& h5);
+
+} // namespace wear::coupling
