@@ -26,14 +26,7 @@
 #include <cmath>
 #include <vector>
 
-using namespace wear::dem;
-using namespace wear::dem::testing;
-using wear::meshes::cross;
-using wear::meshes::dot;
-using wear::meshes::norm;
-using wear::meshes::normalized;
-using wear::meshes::SurfaceMesh;
-using wear::meshes::Vec3;
+// The probes' namespace brings the engine's, the fixtures' and the vector names along.
 using namespace wall_edge;
 
 namespace {

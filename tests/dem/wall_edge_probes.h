@@ -72,6 +72,19 @@ inline SurfaceMesh grid_plate(double x0, double y0, double a, int n) {
 /// Two rectangles meeting along the x axis (x in [-L, L]), each L wide, sloping down from it
 /// at `slope` on either side: a convex ridge for slope > 0, a valley for slope < 0. Faces at
 /// y < 0 have the outward normal (0, -sin slope, cos slope), at y > 0 (0, sin slope, cos slope).
+/// Two plates of one wall, 2 L square in all, a slit of width w along y between them, at z = 0.
+inline SurfaceMesh slit_plate(double w, double L) {
+  return mesh_of({{-L, -L, 0},
+                  {-w / 2, -L, 0},
+                  {-w / 2, L, 0},
+                  {-L, L, 0},
+                  {w / 2, -L, 0},
+                  {L, -L, 0},
+                  {L, L, 0},
+                  {w / 2, L, 0}},
+                 {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}, {4, 6, 7}});
+}
+
 inline SurfaceMesh fold(double slope, double L) {
   const double c = L * std::cos(slope), s = L * std::sin(slope);
   return mesh_of({{-L, 0, 0}, {L, 0, 0}, {L, -c, -s}, {-L, -c, -s}, {L, c, -s}, {-L, c, -s}},

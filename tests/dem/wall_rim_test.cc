@@ -29,14 +29,7 @@
 #include <cmath>
 #include <vector>
 
-using namespace wear::dem;
-using namespace wear::dem::testing;
-using wear::meshes::cross;
-using wear::meshes::dot;
-using wear::meshes::norm;
-using wear::meshes::normalized;
-using wear::meshes::SurfaceMesh;
-using wear::meshes::Vec3;
+// The probes' namespace brings the engine's, the fixtures' and the vector names along.
 using namespace wall_edge;
 
 TEST_CASE("wall boundary: a sphere against the middle of an orifice's rim edge",
@@ -124,15 +117,7 @@ TEST_CASE("wall boundary: a sphere across a narrow slit or on a small hole is pu
   const double L = 0.02;
   SECTION("a slit 1.5 mm wide: two contacts 17.4 degrees apart") {
     const double w = 1.5e-3;
-    const SurfaceMesh slit = mesh_of({{-L, -L, 0},
-                                      {-w / 2, -L, 0},
-                                      {-w / 2, L, 0},
-                                      {-L, L, 0},
-                                      {w / 2, -L, 0},
-                                      {L, -L, 0},
-                                      {L, L, 0},
-                                      {w / 2, L, 0}},
-                                     {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}, {4, 6, 7}});
+    const SurfaceMesh slit = slit_plate(w, L);
     const double tilt = std::asin(0.5 * w / dist0);
     const Probe p = press(slit, Vec3{0, 0.0007, dist0 * std::cos(tilt)}, r0);
     const Vec3 expected{0, 0, 2 * f0 * std::cos(tilt)};
