@@ -9,6 +9,13 @@
 // s' = clamp(s, a0, a1):  p = P + clamp(s, a0, a1) a + R q / rho  (e1 for q = 0, where every
 // point of the circle is equally close). Beyond an end the closest point is on the rim.
 //
+// Cone frustum, a0 <= s <= a1, radius R(s) going linearly from R0 at a0 to R1 at a1 (R0, R1 >=
+// 0): as for the cylinder, the distance^2 to a surface point (R', phi, s') is least at
+// phi = theta for every generator point (R' >= 0, rho >= 0), so p lies in c's meridional
+// half-plane, at the closest point of the generator segment (R0, a0) .. (R1, a1) to
+// (rho, s) in that plane:  t = clamp(((rho - R0) dR + (s - a0) ds) / (dR^2 + ds^2), 0, 1),
+// p = P + (a0 + t ds) a + (R0 + t dR) q / rho  (e1 for q = 0).
+//
 // Annulus in the plane s = h, r0 <= rho <= r1, theta0 <= theta <= theta1: the height offset
 // s - h is common to every point of the plane, so p is the closest point in the plane to q.
 //  - theta within the range (or a full circle): the radial clamp
@@ -64,6 +71,17 @@ RevolutionSurface RevolutionSurface::cylinder(double radius, double axial_min, d
   return s;
 }
 
+RevolutionSurface RevolutionSurface::cone(double r_min, double r_max, double axial_min,
+                                          double axial_max) {
+  RevolutionSurface s;
+  s.kind = RevolutionKind::cone;
+  s.radius = r_min;
+  s.radius_top = r_max;
+  s.axial_min = axial_min;
+  s.axial_max = axial_max;
+  return s;
+}
+
 RevolutionSurface RevolutionSurface::annulus(double height, double r0, double r1, double th0,
                                              double th1) {
   RevolutionSurface s;
@@ -88,7 +106,7 @@ RevolutionWall::RevolutionWall(const RevolutionSurface& surface, int material_id
   e1_ = normalized(ref - a * dot(ref, a));
   e2_ = cross(a, e1_);
   const double width = surface_.theta_max - surface_.theta_min;
-  full_circle_ = surface_.kind == RevolutionKind::cylinder || width >= 2 * pi * (1 - 1e-12);
+  full_circle_ = surface_.kind != RevolutionKind::annulus || width >= 2 * pi * (1 - 1e-12);
   wide_ = width > pi;
   edge0_ = e1_ * std::cos(surface_.theta_min) + e2_ * std::sin(surface_.theta_min);
   edge1_ = e1_ * std::cos(surface_.theta_max) + e2_ * std::sin(surface_.theta_max);
@@ -115,6 +133,14 @@ void RevolutionWall::check_surface() const {
             "the axial extent must be finite and non-empty [m]");
     return;
   }
+  if (s.kind == RevolutionKind::cone) {
+    require(s.radius >= 0 && s.radius_top >= 0 && std::isfinite(s.radius) &&
+                std::isfinite(s.radius_top) && s.radius + s.radius_top > 0,
+            "the radii must be finite, not negative and not both 0 [m]");
+    require(std::isfinite(s.axial_min) && std::isfinite(s.axial_max) && s.axial_max > s.axial_min,
+            "the axial extent must be finite and non-empty [m]");
+    return;
+  }
   require(std::isfinite(s.height), "the height must be finite [m]");
   require(s.inner_radius >= 0 && std::isfinite(s.outer_radius) && s.outer_radius > s.inner_radius,
           "the radii must satisfy 0 <= inner < outer [m]");
@@ -131,6 +157,19 @@ Vec3 RevolutionWall::closest_on_cylinder(const Vec3& c) const {
   const double rho = norm(q);
   const Vec3 u = rho > 0 ? q / rho : e1_;
   return s.axis_point + s.axis * std::clamp(along, s.axial_min, s.axial_max) + u * s.radius;
+}
+
+Vec3 RevolutionWall::closest_on_cone(const Vec3& c) const {
+  const auto& s = surface_;
+  const Vec3 d = c - s.axis_point;
+  const double along = dot(d, s.axis);
+  const Vec3 q = d - s.axis * along;
+  const double rho = norm(q);
+  const Vec3 u = rho > 0 ? q / rho : e1_;
+  const double dr = s.radius_top - s.radius, ds = s.axial_max - s.axial_min;
+  const double t = std::clamp(
+      ((rho - s.radius) * dr + (along - s.axial_min) * ds) / (dr * dr + ds * ds), 0.0, 1.0);
+  return s.axis_point + s.axis * (s.axial_min + t * ds) + u * (s.radius + t * dr);
 }
 
 bool RevolutionWall::within_angle(const Vec3& q) const {
@@ -158,9 +197,9 @@ Vec3 RevolutionWall::closest_on_annulus(const Vec3& c) const {
 void RevolutionWall::set_accounting(const meshes::SurfaceMesh& mesh) {
   auto wall = std::make_shared<MeshWall>(mesh, material_, motion_, false, name_ + " (accounting)");
   const auto& s = surface_;
-  const double scale = s.kind == RevolutionKind::cylinder
-                           ? std::max(s.radius, s.axial_max - s.axial_min)
-                           : s.outer_radius;
+  const double scale = s.kind == RevolutionKind::annulus
+                           ? s.outer_radius
+                           : std::max({s.radius, s.radius_top, s.axial_max - s.axial_min});
   for (std::size_t v = 0; v < mesh.n_vertices(); ++v) {
     const double off = distance(mesh.vertices[v]);
     if (!(off <= 1e-6 * scale))

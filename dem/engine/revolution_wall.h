@@ -1,6 +1,6 @@
 #pragma once
-// A wall that is a bounded surface of revolution (a cylinder, a flat annulus or annular
-// sector) with exact closest points: the tester's floor, cylinders and consolidator without
+// A wall that is a bounded surface of revolution (a cylinder, a cone frustum, a flat annulus or
+// annular sector) with exact closest points: the tester's floor, cylinders and consolidator without
 // triangles. Optional per-face wear accounting on a triangulation of the same surface.
 #include "dem/engine/mesh_wall.h"
 
@@ -10,7 +10,7 @@
 
 namespace wear::dem {
 
-enum class RevolutionKind : std::uint8_t { cylinder, annulus };
+enum class RevolutionKind : std::uint8_t { cylinder, annulus, cone };
 /// The two kinds of wall a System holds (System::wall_kind).
 enum class WallKind : std::uint8_t { mesh, revolution };
 
@@ -23,8 +23,9 @@ struct RevolutionSurface {
   RevolutionKind kind = RevolutionKind::annulus;
   Vec3 axis_point;                     ///< [m]
   Vec3 axis{0, 0, 1};                  ///< [-] direction (normalised by the wall)
-  double radius = 0;                   ///< [m] cylinder
-  double axial_min = 0, axial_max = 0; ///< [m] cylinder: extent in s
+  double radius = 0;                   ///< [m] cylinder; cone: at s = axial_min
+  double radius_top = 0;               ///< [m] cone: at s = axial_max
+  double axial_min = 0, axial_max = 0; ///< [m] cylinder, cone: extent in s
   double height = 0;                   ///< [m] annulus: s of its plane
   double inner_radius = 0;             ///< [m] annulus (0: a disc)
   double outer_radius = 0;             ///< [m] annulus
@@ -34,6 +35,9 @@ struct RevolutionSurface {
 
   /// About the z axis through the origin: r = radius, axial_min <= z <= axial_max.
   static RevolutionSurface cylinder(double radius, double axial_min, double axial_max);
+  /// About the z axis through the origin: axial_min <= z <= axial_max, the radius going
+  /// linearly from r_min at axial_min to r_max at axial_max (either may be 0: an apex).
+  static RevolutionSurface cone(double r_min, double r_max, double axial_min, double axial_max);
   /// About the z axis through the origin: z = height, r0 <= r <= r1, th0 <= atan2(y, x) <= th1
   /// (modulo 2 pi).
   static RevolutionSurface annulus(double height, double r0, double r1, double th0 = 0,
@@ -67,8 +71,14 @@ public:
 
   /// The closest point of the bounded surface to c (equations: revolution_wall.cc).
   Vec3 closest(const Vec3& c) const {
-    return surface_.kind == RevolutionKind::cylinder ? closest_on_cylinder(c)
-                                                     : closest_on_annulus(c);
+    switch (surface_.kind) {
+    case RevolutionKind::cylinder:
+      return closest_on_cylinder(c);
+    case RevolutionKind::cone:
+      return closest_on_cone(c);
+    default:
+      return closest_on_annulus(c);
+    }
   }
   double distance(const Vec3& c) const { return meshes::norm(c - closest(c)); } ///< [m]
 
@@ -95,6 +105,7 @@ private:
   std::shared_ptr<const MeshWall> accounting_; ///< immutable, shared by copies
   Vec3 closest_on_cylinder(const Vec3& c) const;
   Vec3 closest_on_annulus(const Vec3& c) const;
+  Vec3 closest_on_cone(const Vec3& c) const;
   bool within_angle(const Vec3& q) const;
   void check_surface() const;
   void set_accounting(const meshes::SurfaceMesh& mesh);

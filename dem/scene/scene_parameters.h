@@ -29,7 +29,8 @@ struct SceneWallParameters {
   double radius_top = 0;               ///< [m] cone top
   double radius_inner = 0;             ///< [m] disc: central hole (an annulus)
   bool caps = false;                   ///< cylinder, cone: with end discs
-  bool exact = true; ///< a disc or open cylinder that can be an exact surface of revolution is
+  bool exact =
+      true; ///< a disc, open cylinder or open cone that can be an exact surface of revolution is
   std::string material = "wall";           ///< wall | sample | holder (the DEM subsection's)
   bool wears = false;                      ///< its faces accumulate wear (a closed solid)
   std::string wearing_surfaces = "all";    ///< a wearing wall's surfaces that wear: numbers or all
@@ -287,14 +288,15 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
            "[m] Disc: a central hole of this radius (an annulus, e.g. a hopper's flat floor "
            "around its orifice); 0: none.");
     v.boolean("Caps", w.caps, "Cylinder, cone: with the end discs (a closed solid).");
-    v.boolean("Exact surface", w.exact,
-              "A disc (an annulus with Inner radius) or a cylinder without Caps that does not "
-              "wear and does not move as a rigid body (Motion fixed or a surface motion) is an "
-              "exact surface of revolution in the DEM: contacts with the surface itself, not "
-              "with its triangles, so a round orifice's rim is a circle and a drum's wall is "
-              "smooth; its triangles at Mesh size then only collect its loads (force, moment, "
-              "Archard load-distance per face). false: the triangles are the wall. Other walls "
-              "are triangles whatever this says.");
+    v.boolean(
+        "Exact surface", w.exact,
+        "A disc (an annulus with Inner radius), a cylinder or a cone without Caps that does not "
+        "wear and does not move as a rigid body (Motion fixed or a surface motion) is an "
+        "exact surface of revolution in the DEM: contacts with the surface itself, not "
+        "with its triangles, so a round orifice's rim is a circle and a drum's wall is "
+        "smooth; its triangles at Mesh size then only collect its loads (force, moment, "
+        "Archard load-distance per face). false: the triangles are the wall. Other walls "
+        "are triangles whatever this says.");
     v.selection("Material", w.material, "wall|sample|holder",
                 "The DEM material of the wall: one of the DEM subsection's Wall, Sample and "
                 "Holder materials.");

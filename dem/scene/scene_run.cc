@@ -5,7 +5,7 @@
 // time of the smallest particle, T_R = pi r sqrt(rho / G) / (0.1631 nu + 0.8766); skin =
 // half the smallest radius; list reach = the largest radius. Every wall accumulates its
 // per-face integrals (engine "wearing" walls), so each gets its force, moment and Archard
-// load-distance per window; `Wears` marks the FEM part only. A disc or open cylinder that
+// load-distance per window; `Wears` marks the FEM part only. A disc, open cylinder or cone that
 // keeps its place and does not wear is an exact surface of revolution (revolution_surface,
 // scene_walls.h) of one label, its window integrals summed as totals on one face.
 //
@@ -245,8 +245,8 @@ void SceneRun::add_materials_and_walls() {
     const std::string& name = w.parameters.material;
     const int id = name == "sample" ? sample : name == "holder" ? holder : wall;
     if (const auto surface = revolution_surface(w.parameters)) {
-      // Its loads as totals on one face (one label: a disc's or an open cylinder's): locating
-      // each contact among the triangles made a bin's settling 1.6 times slower.
+      // Its loads as totals on one face (one label: a disc's, an open cylinder's or cone's):
+      // locating each contact among the triangles made a bin's settling 1.6 times slower.
       const meshes::SurfaceMesh one_face = first_face(w.surface.mesh);
       system_.add_wall(RevolutionWall(*surface, id, surface_motion(w.parameters), true,
                                       w.parameters.name, &one_face));

@@ -15,11 +15,12 @@
 // both walls present, the sample's sides and bottom and the holder's pocket coincide and are
 // named covered, as in the tester (MeshWall: one contact where wear face and rim meet).
 //
-// A disc or an open cylinder that does not wear and keeps its place (revolution_surface) is
-// an exact surface of revolution in the engine (RevolutionWall), as the tester's floor and
-// cylinders are, its loads summed as totals (it has one label); its triangles stay the wall's
-// surface for the fill's checks and the output. They are chords of the exact surface, inside
-// it by at most their sagitta (h^2 / 8 R for edges h on a circle of radius R).
+// A disc, an open cylinder or an open cone that does not wear and keeps its place
+// (revolution_surface) is an exact surface of revolution in the engine (RevolutionWall), as
+// the tester's floor and cylinders are, its loads summed as totals (it has one label); its
+// triangles stay the wall's surface for the fill's checks and the output. They are chords of the
+// exact surface, inside it by at most their sagitta (h^2 / 8 R for edges h on a circle of radius
+// R).
 #include "dem/scene/scene_walls.h"
 
 #include "meshes/sample_frame.h"
@@ -212,6 +213,14 @@ std::optional<RevolutionSurface> revolution_surface(const SceneWallParameters& w
   if (w.source == "cylinder" && !w.caps) {
     s.kind = RevolutionKind::cylinder;
     s.radius = w.radius;
+    s.axial_min = 0;
+    s.axial_max = meshes::norm(axis);
+    return s;
+  }
+  if (w.source == "cone" && !w.caps) {
+    s.kind = RevolutionKind::cone;
+    s.radius = w.radius;
+    s.radius_top = w.radius_top;
     s.axial_min = 0;
     s.axial_max = meshes::norm(axis);
     return s;

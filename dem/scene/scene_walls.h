@@ -22,9 +22,10 @@ struct SceneWall {
 
 /// The exact surface of revolution of wall `w` in the scene's frame, or none when it is a
 /// triangle wall: a disc (an annulus with Inner radius; its plane through Origin normal to
-/// Axis) or a cylinder without Caps (radius Radius about Axis from Origin over |Axis|) with
-/// Exact surface, that does not wear (a wearing part's surface changes stage by stage) and
-/// moves at most by a surface motion (its geometry stays where it is).
+/// Axis), a cylinder without Caps (radius Radius about Axis from Origin over |Axis|) or a
+/// cone without Caps (Radius at Origin to Top radius at Origin + Axis) with Exact surface, that
+/// does not wear (a wearing part's surface changes stage by stage) and moves at most by a surface
+/// motion (its geometry stays where it is).
 std::optional<RevolutionSurface> revolution_surface(const SceneWallParameters& w);
 
 /// Every wall of the scene, in the order of Scene/Walls. Throws std::runtime_error or

@@ -44,20 +44,29 @@ Sampling sample(const RevolutionSurface& s, int n_around, int n_across) {
   Vec3 a, e1, e2;
   frame(s.axis, a, e1, e2);
   Sampling out;
-  const bool cyl = s.kind == RevolutionKind::cylinder;
-  const double th0 = cyl ? 0 : s.theta_min, th1 = cyl ? 2 * pi : s.theta_max;
-  const double u0 = cyl ? s.axial_min : s.inner_radius, u1 = cyl ? s.axial_max : s.outer_radius;
-  const double r_max = cyl ? s.radius : s.outer_radius;
+  const bool cyl = s.kind == RevolutionKind::cylinder, cone = s.kind == RevolutionKind::cone;
+  const bool round = cyl || cone; // along the axis, all the way round
+  const double th0 = round ? 0 : s.theta_min, th1 = round ? 2 * pi : s.theta_max;
+  const double u0 = round ? s.axial_min : s.inner_radius;
+  const double u1 = round ? s.axial_max : s.outer_radius;
+  const double r_max = cyl ? s.radius : cone ? std::max(s.radius, s.radius_top) : s.outer_radius;
+  // A cone's generator: the radius at u (linear from radius at axial_min to radius_top).
+  const auto r_cone = [&](double u) {
+    return s.radius + (s.radius_top - s.radius) * (u - s.axial_min) / (s.axial_max - s.axial_min);
+  };
   for (int i = 0; i <= n_around; ++i) {
     const double th = th0 + (th1 - th0) * i / n_around;
     const Vec3 radial = e1 * std::cos(th) + e2 * std::sin(th);
     for (int j = 0; j <= n_across; ++j) {
       const double u = u0 + (u1 - u0) * j / n_across;
-      out.points.push_back(cyl ? s.axis_point + a * u + radial * s.radius
-                               : s.axis_point + a * s.height + radial * u);
+      out.points.push_back(cyl    ? s.axis_point + a * u + radial * s.radius
+                           : cone ? s.axis_point + a * u + radial * r_cone(u)
+                                  : s.axis_point + a * s.height + radial * u);
     }
   }
-  const double d_around = r_max * (th1 - th0) / n_around, d_across = (u1 - u0) / n_across;
+  // A cone's generator is longer than its axial extent by 1 / cos of its half-angle.
+  const double slant = cone ? std::hypot(u1 - u0, s.radius_top - s.radius) : u1 - u0;
+  const double d_around = r_max * (th1 - th0) / n_around, d_across = slant / n_across;
   out.half_diagonal = 0.5 * std::hypot(d_around, d_across);
   return out;
 }
@@ -72,6 +81,11 @@ bool on_surface(const RevolutionSurface& s, const Vec3& p) {
   const double rho = norm(q), tol = 1e-12;
   if (s.kind == RevolutionKind::cylinder)
     return std::abs(rho - s.radius) < tol && along > s.axial_min - tol && along < s.axial_max + tol;
+  if (s.kind == RevolutionKind::cone) {
+    const double f = (along - s.axial_min) / (s.axial_max - s.axial_min);
+    return std::abs(rho - (s.radius + (s.radius_top - s.radius) * f)) < tol &&
+           along > s.axial_min - tol && along < s.axial_max + tol;
+  }
   if (std::abs(along - s.height) > tol || rho < s.inner_radius - tol || rho > s.outer_radius + tol)
     return false;
   if (rho < tol || s.theta_max - s.theta_min >= 2 * pi)
@@ -155,6 +169,29 @@ TEST_CASE("revolution walls: exact closest points against brute force", "[dem][w
   RevolutionSurface wide = RevolutionSurface::annulus(0.02, 0.1, 0.4, -1, 3.5);
   wide.axis = {0.2, -0.3, 1};
   check_against_brute_force(wide, "sector wider than pi, tilted axis");
+  RevolutionSurface hopper = RevolutionSurface::cone(0.025, 0.1, 0, 0.13); // widening upwards
+  hopper.axis_point = {0.05, 0, -0.1};
+  hopper.axis = {0.1, -0.2, 1};
+  check_against_brute_force(hopper, "hopper cone, tilted axis");
+  check_against_brute_force(RevolutionSurface::cone(0.3, 0, -0.05, 0.25), "pointed cone");
+  RevolutionSurface steep = RevolutionSurface::cone(0.2, 0.19, 0, 0.4); // almost a cylinder
+  steep.axis = {1, 0.1, 0};
+  check_against_brute_force(steep, "steep frustum about an axis near x");
+}
+
+TEST_CASE("revolution walls: a cone's closest point in its meridional plane", "[dem][walls]") {
+  // The frustum r = 0.1 at z = 0 to r = 0.2 at z = 0.1 (45 degrees): from (0.1, 0, 0.1), above
+  // the generator line r = 0.1 + z, the foot is at t = 0.5 on the generator, (0.15, 0, 0.05),
+  // 0.0707 m away; beyond the top rim (0.3, 0, 0.3) it is the rim point (0.2, 0, 0.1); on the
+  // axis below (0, 0, -1) the nearest generator end is the bottom rim, at every angle: e1.
+  const RevolutionWall w(RevolutionSurface::cone(0.1, 0.2, 0, 0.1), 0, {}, false, "hopper");
+  CHECK(norm(w.closest(Vec3{0.1, 0, 0.1}) - Vec3{0.15, 0, 0.05}) < 1e-15);
+  CHECK(w.distance(Vec3{0.1, 0, 0.1}) == Approx(std::sqrt(2) * 0.05).epsilon(1e-14));
+  CHECK(norm(w.closest(Vec3{0.3, 0, 0.3}) - Vec3{0.2, 0, 0.1}) < 1e-15);
+  CHECK(norm(w.closest(Vec3{0, 0, -1}) - Vec3{0.1, 0, 0}) < 1e-15);
+  // The same in another meridional plane: turned by 2 rad about z.
+  const double c = std::cos(2.0), s = std::sin(2.0);
+  CHECK(norm(w.closest(Vec3{0.1 * c, 0.1 * s, 0.1}) - Vec3{0.15 * c, 0.15 * s, 0.05}) < 1e-15);
 }
 
 TEST_CASE("revolution walls: a point beyond an angular edge projects onto the edge segment",
@@ -209,6 +246,12 @@ TEST_CASE("revolution walls: bad input is refused naming the wall", "[dem][walls
                     Contains("'floor'") && Contains("radii"));
   CHECK_THROWS_WITH(RevolutionWall(RevolutionSurface::cylinder(0, 0, 1), 0, {}, false, "inner"),
                     Contains("'inner'") && Contains("radius"));
+  CHECK_THROWS_WITH(RevolutionWall(RevolutionSurface::cone(0, 0, 0, 1), 0, {}, false, "cone"),
+                    Contains("'cone'") && Contains("not both 0"));
+  CHECK_THROWS_WITH(RevolutionWall(RevolutionSurface::cone(-0.1, 0.2, 0, 1), 0, {}, false, "cone"),
+                    Contains("'cone'") && Contains("not negative"));
+  CHECK_THROWS_WITH(RevolutionWall(RevolutionSurface::cone(0.1, 0.2, 1, 1), 0, {}, false, "cone"),
+                    Contains("'cone'") && Contains("axial extent"));
   CHECK_THROWS_WITH(
       RevolutionWall(RevolutionSurface::annulus(0, 0.1, 0.2, 1, 0.5), 0, {}, false, "plate"),
       Contains("'plate'") && Contains("angular range"));
