@@ -115,6 +115,8 @@ std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::setup() {
     parts_.emplace_back(p_, k, walls[k], log_);
   scene_ = std::make_unique<dem::SceneRun>(p_.scene, p_.dem, std::move(walls));
   scene_->setup([&](const std::string& text) { log_ << "scene: " << text << "\n" << std::flush; });
+  for (auto& part : parts_)
+    part.record_initial(scene_->time());
   log_ << "scene: " << scene_->walls().size() << " walls (" << parts_.size() << " wearing), "
        << scene_->inlets().size() << " inlets, " << scene_->outlets().size()
        << " outlets; batches and outlets every " << scene_->exchange_interval() << " s; "
@@ -129,7 +131,7 @@ std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::setup() {
 std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::resume() {
   const Checkpoint c = read_latest_checkpoint(checkpoint_path(), log_);
   require_same_case(c, parameters_text_, checkpoint_path());
-  if (!c.scene || !c.open_stage)
+  if (!c.scene)
     throw std::runtime_error("--resume: checkpoint '" + checkpoint_path() +
                              "' is not a scene run's (a `wearsim run` checkpoint?)");
   const auto& s = *c.scene;
@@ -225,7 +227,6 @@ void SceneCoupledRun::checkpoint(const OpenSceneStage& open) {
   c.stages_done = n_stages_done_;
   c.parameters = parameters_text_;
   c.dem = state.system;
-  c.open_stage = open_stage(dem::WallLoads::zero(meshes::SurfaceMesh{}), 0, 0, {});
   SceneCheckpoint s;
   s.time = state.time;
   s.stage_end = open.end;

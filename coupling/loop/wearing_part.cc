@@ -98,8 +98,11 @@ WearingPart::WearingPart(const CaseParameters& p, std::size_t index, dem::SceneW
                 meshes::enclosed_volume(surface) * 1e9, labels.c_str(), clock.seconds());
   previous_stress_ = von_mises_on(surface);
   output_ = std::make_unique<RunOutput>(directory_);
-  const std::vector<double> zero(surface.n_faces(), 0);
-  output_->add_surface(0, 0.0, surface,
+}
+
+void WearingPart::record_initial(double time) {
+  const std::vector<double> zero(surface().n_faces(), 0);
+  output_->add_surface(0, time, surface(),
                        {{"cumulative removed volume", 1, zero}, {"wear depth", 1, zero}});
 }
 

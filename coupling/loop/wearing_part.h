@@ -25,8 +25,10 @@ class WearingPart {
 public:
   /// Meshes scene wall `wall` (index `index` among the scene's walls) into tetrahedra and
   /// gives the wall that mesh's boundary, so that DEM faces and FEM boundary faces are the
-  /// same triangles; writes the part's stage 0 surface. Logs what it made.
+  /// same triangles. Logs what it made.
   WearingPart(const CaseParameters& p, std::size_t index, dem::SceneWall& wall, std::ostream& log);
+  /// Writes the unworn surface as stage 0 at scene time `time` [s] (once the scene is set up).
+  void record_initial(double time);
   /// The part as checkpoint part `c` left it (its output folder as it stood then).
   WearingPart(const CaseParameters& p, std::size_t index, const PartCheckpoint& c);
 

@@ -15,7 +15,8 @@
 //   /sample/...     the worn sample: mesh arrays, surface (vertices, triangles, labels,
 //                   attribute revision), removed_volume, wear_depth
 //   /face_von_mises, /dem/cumulative_removed   per face of the current sample surface
-//   in-stage checkpoints only (attribute has_open_stage = 1 on /):
+//   in-stage checkpoints (attribute has_open_stage = 1 on /) and a scene run's (has_scene = 1,
+//   always between two steps; no /open_stage):
 //   /dem/continuation/...  the DEM state's continuation part (reference positions with the
 //                   attribute wall_reference_time, wall candidates, cost estimate, the threads'
 //                   wear window; attribute n_threads)
@@ -428,7 +429,7 @@ void write_checkpoint(const std::string& path, const Checkpoint& c,
   Hdf5File h5(path);
   if (dem_parts.empty()) {
     write_dem(h5, "/dem", c.dem);
-    if (c.open_stage)
+    if (c.open_stage || c.scene) // a scene's checkpoint always lies between two steps
       write_continuation(h5, "/dem", c.dem);
   } else {
     // Every part with its continuation: a part taken back on as many ranks is added where its
@@ -499,13 +500,14 @@ Checkpoint read_checkpoint(const std::string& path, const DemPart& part) {
     c.parameters = h5.text_attribute("/", "parameters");
     const bool open =
         h5.has_attribute("/", "has_open_stage") && h5.attribute("/", "has_open_stage") != 0;
+    const bool scene = h5.has_attribute("/", "has_scene") && h5.attribute("/", "has_scene") != 0;
     c.dem_ranks = h5.has_attribute("/dem", "n_ranks") ? int(h5.attribute("/dem", "n_ranks")) : 1;
     if (c.dem_ranks < 1)
       throw std::runtime_error("/dem: n_ranks below 1");
     const auto part_of = [&](int r) {
       const std::string g = c.dem_ranks == 1 ? "/dem" : rank_group(r);
       dem::SystemState d = read_dem(h5, g);
-      if (c.dem_ranks > 1 || open)
+      if (c.dem_ranks > 1 || open || scene)
         read_continuation(h5, g, d);
       return d;
     };
@@ -525,7 +527,7 @@ Checkpoint read_checkpoint(const std::string& path, const DemPart& part) {
       c.sample = read_sample_state(h5, "/sample");
     if (open)
       c.open_stage = read_open_stage(h5);
-    if (h5.has_attribute("/", "has_scene") && h5.attribute("/", "has_scene") != 0)
+    if (scene)
       c.scene = read_scene(h5);
     if ((!c.scene && int(c.stages.size()) != c.stages_done) ||
         int(c.revolutions.size()) != c.revolutions_done)

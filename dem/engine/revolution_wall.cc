@@ -127,16 +127,13 @@ void RevolutionWall::check_surface() const {
   const auto& s = surface_;
   require(finite(s.axis_point) && finite(s.axis) && norm(s.axis) > 0,
           "the axis needs a finite point and a nonzero direction");
-  if (s.kind == RevolutionKind::cylinder) {
-    require(s.radius > 0 && std::isfinite(s.radius), "the radius must be positive [m]");
-    require(std::isfinite(s.axial_min) && std::isfinite(s.axial_max) && s.axial_max > s.axial_min,
-            "the axial extent must be finite and non-empty [m]");
-    return;
-  }
-  if (s.kind == RevolutionKind::cone) {
-    require(s.radius >= 0 && s.radius_top >= 0 && std::isfinite(s.radius) &&
-                std::isfinite(s.radius_top) && s.radius + s.radius_top > 0,
-            "the radii must be finite, not negative and not both 0 [m]");
+  if (s.kind != RevolutionKind::annulus) {
+    if (s.kind == RevolutionKind::cylinder)
+      require(s.radius > 0 && std::isfinite(s.radius), "the radius must be positive [m]");
+    else
+      require(s.radius >= 0 && s.radius_top >= 0 && std::isfinite(s.radius) &&
+                  std::isfinite(s.radius_top) && s.radius + s.radius_top > 0,
+              "the radii must be finite, not negative and not both 0 [m]");
     require(std::isfinite(s.axial_min) && std::isfinite(s.axial_max) && s.axial_max > s.axial_min,
             "the axial extent must be finite and non-empty [m]");
     return;

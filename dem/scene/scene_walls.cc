@@ -210,17 +210,11 @@ std::optional<RevolutionSurface> revolution_surface(const SceneWallParameters& w
     s.outer_radius = w.radius;
     return s;
   }
-  if (w.source == "cylinder" && !w.caps) {
-    s.kind = RevolutionKind::cylinder;
+  if ((w.source == "cylinder" || w.source == "cone") && !w.caps) {
+    const bool cone = w.source == "cone";
+    s.kind = cone ? RevolutionKind::cone : RevolutionKind::cylinder;
     s.radius = w.radius;
-    s.axial_min = 0;
-    s.axial_max = meshes::norm(axis);
-    return s;
-  }
-  if (w.source == "cone" && !w.caps) {
-    s.kind = RevolutionKind::cone;
-    s.radius = w.radius;
-    s.radius_top = w.radius_top;
+    s.radius_top = cone ? w.radius_top : w.radius;
     s.axial_min = 0;
     s.axial_max = meshes::norm(axis);
     return s;
