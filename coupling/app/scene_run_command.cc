@@ -1,6 +1,7 @@
 // `wearsim scene-run [--resume | --overwrite] <case.prm>`: a scene's run
 // (coupling/loop/scene_coupled_run.h): its DEM to Scene/End time with a record every Output
-// interval, or with a wearing part and Scene/Stage duration the wear loop's stages.
+// interval, or with a wearing part and Scene/Stage duration the wear loop's stages. Under
+// `mpirun -np N` every rank runs it, the scene decomposed over the ranks.
 #include "coupling/app/scene_run_command.h"
 
 #include "coupling/app/run_command.h"
@@ -11,8 +12,10 @@
 
 namespace wear::coupling {
 
-int run_scene_run_command(const std::vector<std::string>& args, std::ostream& log) {
+int run_scene_run_command(const std::vector<std::string>& args, std::ostream& log,
+                          dem::RankLink* ranks) {
   RunOptions options;
+  options.ranks = ranks;
   const std::string case_file = parse_run_arguments(args, "scene-run", options);
   const CaseParameters p = read_case(case_file);
   if (p.scene.walls.empty())

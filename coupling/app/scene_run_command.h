@@ -1,5 +1,6 @@
 #pragma once
 #include "coupling/parameters/case_parameters.h"
+#include "dem/engine/rank_link.h"
 
 #include <iosfwd>
 #include <string>
@@ -13,6 +14,7 @@ namespace wear::coupling {
 /// of the scene's wearing part; checkpoints and --resume (coupling/loop/scene_coupled_run.h).
 /// Returns the exit status.
 /// `args`: the options (--resume, --overwrite) and the case file.
-int run_scene_run_command(const std::vector<std::string>& args, std::ostream& log);
+int run_scene_run_command(const std::vector<std::string>& args, std::ostream& log,
+                          dem::RankLink* ranks = nullptr);
 
 } // namespace wear::coupling

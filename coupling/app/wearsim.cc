@@ -66,8 +66,9 @@ void usage(std::ostream& out) {
          "                           solves, mesh motion, remeshing\n"
          "  --print-parameters       list every case-file parameter with default and meaning\n"
          "  --version                the engine version (git describe at build time)\n\n"
-         "under mpirun -np N: 'run', 'dem' and 'bench dem' decompose the bed over the N ranks\n"
-         "(angular slabs; DEM/Threads or --threads per rank); rank 0 writes and prints\n"
+         "under mpirun -np N: 'run', 'scene-run', 'dem' and 'bench dem' decompose the bed over\n"
+         "the N ranks (the tester in angular slabs, a scene as Scene/Rank slabs along says;\n"
+         "DEM/Threads or --threads per rank); rank 0 writes and prints\n"
          "  --help                   this text\n";
 }
 
@@ -86,6 +87,14 @@ int main(int argc, char** argv) {
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &n_ranks);
   try {
+    if (n_ranks > 1 && cmd == "scene-run") {
+      // A scene's slabs are a ring along a period or an angle, a line otherwise.
+      const std::vector<std::string> args(argv + 2, argv + argc);
+      RunOptions options;
+      const CaseParameters p = read_case(parse_run_arguments(args, "scene-run", options));
+      wear::dem::MpiRankLink ranks(MPI_COMM_WORLD, wear::dem::rank_ring(p.scene));
+      return run_scene_run_command(args, std::cout, &ranks);
+    }
     if (n_ranks > 1) {
       // The tester and the benchmark's sectors and annulus are rings of angular slabs.
       wear::dem::MpiRankLink ranks(MPI_COMM_WORLD, true);
@@ -103,7 +112,8 @@ int main(int argc, char** argv) {
         return run_run_command({argv + 2, argv + argc}, std::cout, &ranks);
       throw std::invalid_argument(
           "under mpirun (" + std::to_string(n_ranks) +
-          " ranks) wearsim decomposes 'run <case.prm>', 'dem <case.prm>' and 'bench dem'; run "
+          " ranks) wearsim decomposes 'run <case.prm>', 'scene-run <case.prm>', 'dem <case.prm>' "
+          "and 'bench dem'; run "
           "the other commands as one process");
     }
     if (cmd == "--help" || cmd == "-h") {

@@ -68,7 +68,7 @@ int CoupledRun::run() {
     StageRecord r = begin_stage(k, open);
     const std::optional<dem::WallLoads> loads = run_dem(r, std::exchange(open, {}), signals);
     if (!loads)
-      return stopped_by(agreed_signal(signals), r, true);
+      return stopped_by(ranks_.agreed_signal(signals), r, true);
     const WearIncrement increment = compute_wear(*loads, r);
     meshes::FaceField<double> applied = increment.removed;
     if (r.scheme == Scheme::dem_only && !sample_)
@@ -86,7 +86,7 @@ int CoupledRun::run() {
       break;
     }
     checkpoint();
-    const int signal = agreed_signal(signals);
+    const int signal = ranks_.agreed_signal(signals);
     if (signal != 0 && k + 1 < plan_.size()) // came during the FEM part
       return stopped_by(signal, r, false);
     if (options_.stop_after > 0 && totals_.n_stages_run >= options_.stop_after &&
@@ -215,7 +215,8 @@ StageStress CoupledRun::solve_stress(const dem::WallLoads& loads, StageRecord& r
 GeometryUpdate CoupledRun::update_geometry(const WearIncrement& increment,
                                            const StageStress& stress, StageRecord& r) {
   GeometryUpdate update = apply_stage_wear(*sample_, increment, stress, r);
-  check_same_on_ranks(sample_->surface(), "after the FEM part of stage " + std::to_string(r.stage));
+  ranks_.require_same(sample_->surface(),
+                      "the sample surfaces after the FEM part of stage " + std::to_string(r.stage));
   print_geometry_notes(r, update.report);
   const auto pushed = tester_->set_sample_surface(sample_->surface(), p_.coupling.push_tolerance);
   r.n_pushed = pushed.n_pushed;

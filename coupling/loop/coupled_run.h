@@ -5,6 +5,7 @@
 // -> update = update_geometry(increment, stress) -> record -> checkpoint. Inside run_dem the
 // run can stop between two steps (a signal) and checkpoint itself (a signal, or every
 // Output/Checkpoint interval), and a resume continues there bit for bit.
+#include "coupling/loop/run_ranks.h"
 #include "coupling/loop/stage_record.h"
 #include "coupling/loop/stage_steps.h"
 #include "coupling/loop/stop_signals.h"
@@ -66,7 +67,6 @@ class CoupledRun {
 public:
   /// Checks the case and the output folder; nothing runs yet.
   CoupledRun(const CaseParameters& p, std::ostream& log, const RunOptions& options = {});
-  ~CoupledRun(); ///< removes this rank's scratch folder (over ranks, after the first)
   CoupledRun(const CoupledRun&) = delete;
   CoupledRun& operator=(const CoupledRun&) = delete;
 
@@ -111,14 +111,10 @@ private:
   int stopped_by(int signal, const StageRecord& r, bool inside) const;
 
   // over ranks
-  bool writer() const { return !options_.ranks || options_.ranks->rank() == 0; }
+  bool writer() const { return ranks_.writer(); }
   /// Where this rank's FEM writes its meshes: Output/Directory/mesh on rank 0, a scratch
   /// folder on the others (each rank runs the same FEM stage on its own copy of the sample).
   std::string mesh_directory() const;
-  /// The signal any rank received (the largest number), 0 if none: every rank stops together.
-  int agreed_signal(const StopSignals& signals) const;
-  /// Throws when `surface` is not the same, bit for bit, on every rank (`when` says where).
-  void check_same_on_ranks(const meshes::SurfaceMesh& surface, const std::string& when) const;
   /// Writes c (over ranks: every rank's DEM part gathered to rank 0, which writes).
   void write(const Checkpoint& c) const;
 
@@ -137,6 +133,7 @@ private:
   std::ostream silent_{nullptr}; ///< the log of the ranks after the first
   std::ostream& log_;
   RunOptions options_;
+  RunRanks ranks_;
   std::string parameters_text_;
   std::vector<Scheme> plan_; ///< the scheme of each stage
   bool has_staged_ = false, has_reference_ = false;
@@ -150,7 +147,6 @@ private:
   /// before the first): the stress-informed wear law's input to the next stage.
   meshes::FaceField<double> previous_stress_;
   RunTotals totals_;
-  std::string scratch_; ///< this rank's mesh folder over ranks (not rank 0), removed at the end
 };
 
 } // namespace wear::coupling

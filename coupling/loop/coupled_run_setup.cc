@@ -44,7 +44,7 @@ bool holds_run(const std::string& dir) {
 
 CoupledRun::CoupledRun(const CaseParameters& p, std::ostream& log, const RunOptions& options)
     : p_(p), log_(options.ranks && options.ranks->rank() != 0 ? silent_ : log), options_(options),
-      frame_(p.geometry.sample, p.geometry.placement) {
+      ranks_(options.ranks), frame_(p.geometry.sample, p.geometry.placement) {
   options_.progress = options_.progress && writer();
   validate(p_.coupling, p_.fem);
   if (!(p_.output.checkpoint_interval >= 0))
@@ -68,52 +68,12 @@ CoupledRun::CoupledRun(const CaseParameters& p, std::ostream& log, const RunOpti
   parameters_text_ = resolved_parameters(p_);
 }
 
-CoupledRun::~CoupledRun() {
-  if (!scratch_.empty()) {
-    std::error_code ec; // a folder left behind is no reason to fail
-    std::filesystem::remove_all(scratch_, ec);
-  }
-}
-
 fem::WornSampleParameters CoupledRun::worn_parameters() const {
   return fem::worn_sample_parameters(p_.fem, p_.geometry.sample, mesh_directory());
 }
 
 std::string CoupledRun::mesh_directory() const {
-  return writer() ? p_.output.directory + "/mesh" : scratch_;
-}
-
-int CoupledRun::agreed_signal(const StopSignals& signals) const {
-  double v = signals.requested();
-  if (options_.ranks)
-    options_.ranks->max_over_ranks(&v, 1);
-  return int(v);
-}
-
-void CoupledRun::check_same_on_ranks(const meshes::SurfaceMesh& surface,
-                                     const std::string& when) const {
-  if (!options_.ranks)
-    return;
-  // FNV-1a over the bits of the vertices, triangles and labels, as two exact 32-bit halves.
-  std::uint64_t h = 1469598103934665603ull;
-  const auto add = [&h](const void* data, std::size_t n) {
-    const auto* b = static_cast<const unsigned char*>(data);
-    for (std::size_t k = 0; k < n; ++k)
-      h = (h ^ b[k]) * 1099511628211ull;
-  };
-  add(surface.vertices.data(), surface.vertices.size() * sizeof(meshes::Vec3));
-  add(surface.triangles.data(), surface.triangles.size() * sizeof(surface.triangles[0]));
-  add(surface.face_labels.data(), surface.face_labels.size() * sizeof(int));
-  const double hi = double(h >> 32), lo = double(h & 0xffffffffull);
-  double v[4] = {hi, lo, -hi, -lo};
-  options_.ranks->max_over_ranks(v, 4);
-  if (v[0] != -v[2] || v[1] != -v[3])
-    throw std::runtime_error(
-        "coupled run over " + std::to_string(options_.ranks->n_ranks()) +
-        " ranks: the ranks' sample surfaces differ " + when +
-        " (each rank runs the same FEM stage and must get the same surface bit for bit; a "
-        "library that is not deterministic, such as gmsh or deal.II with threads, would do "
-        "this: run the coupled case as one process)");
+  return writer() ? p_.output.directory + "/mesh" : ranks_.scratch();
 }
 
 void CoupledRun::write(const Checkpoint& c) const {
@@ -134,19 +94,9 @@ std::optional<OpenStage> CoupledRun::setup() {
   std::string replaced;
   if (writer())
     replaced = prepare_output_folder();
-  if (options_.ranks) { // rank 0 has the folder ready before any rank goes on
-    double ready = 1;
-    options_.ranks->max_over_ranks(&ready, 1);
-    if (!writer()) {
-      scratch_ = (std::filesystem::temp_directory_path() /
-                  ("wearsim-" + std::to_string(::getpid()) + "-rank" +
-                   std::to_string(options_.ranks->rank())))
-                     .string();
-      meshes::ensure_directory(scratch_);
-    }
-  }
+  ranks_.wait_for_folder(); // rank 0 has the folder ready before any rank goes on
   initial_surface_ = generate_initial_surface();
-  check_same_on_ranks(initial_surface_, "as generated");
+  ranks_.require_same(initial_surface_, "the sample surfaces as generated");
   tester_ = std::make_unique<dem::WearTester>(p_.geometry, p_.dem, p_.wear_law, p_.deformation,
                                               initial_surface_);
   tester_->set_rank_link(options_.ranks);

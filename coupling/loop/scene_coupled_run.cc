@@ -18,9 +18,16 @@
 // counts, each worn part and its open stage's summed loads; a resumed run repeats the
 // uninterrupted one bit for bit with the same thread count. A scene that has not yet set up its
 // engine (no particle so far) has nothing to lose and is not checkpointed.
+// Over ranks: every rank builds the walls and meshes the parts; the DEM is decomposed (rank
+// layout logged), its windows and loads are the whole scene's on every rank, each part's
+// stage runs on every rank and the worn surfaces are checked the same on all; a stop or a
+// checkpoint is agreed over the ranks; a checkpoint gathers the ranks' DEM parts to rank 0
+// with the slabs' cuts, and a resume on another rank count takes the merged bed. After a
+// window whose bed has flowed away from its cuts (Scene/Rank rebalance), the scene is cut anew.
 #include "coupling/loop/scene_coupled_run.h"
 
 #include "coupling/output/progress_line.h"
+#include "dem/engine/rank_states.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -46,7 +53,9 @@ std::vector<std::size_t> wearing_walls(const dem::SceneParameters& scene) {
 
 SceneCoupledRun::SceneCoupledRun(const CaseParameters& p, std::ostream& log,
                                  const RunOptions& options)
-    : p_(p), log_(log), options_(options), parameters_text_(resolved_parameters(p)) {
+    : p_(p), log_(options.ranks && options.ranks->rank() != 0 ? silent_ : log), options_(options),
+      ranks_(options.ranks), part_case_(p), parameters_text_(resolved_parameters(p)) {
+  options_.progress = options_.progress && ranks_.writer();
   dem::validate(p_.scene);
   if (p_.scene.stage_duration <= 0) { // one DEM stage to End time
     plan_ = {Scheme::dem_only};
@@ -81,15 +90,15 @@ int SceneCoupledRun::run() {
     StageRecord r = begin_stage(k);
     const auto loads = run_dem(r, std::exchange(open, {}), signals);
     if (!loads) {
-      log_ << "stopped by " << StopSignals::name(signals.requested()) << " inside stage " << r.stage
-           << " at t = " << scene_->time() << " s";
+      log_ << "stopped by " << StopSignals::name(ranks_.agreed_signal(signals)) << " inside stage "
+           << r.stage << " at t = " << scene_->time() << " s";
       if (scene_->system().n_rebuilds() > 0 && p_.coupling.checkpoints)
         log_ << " after a checkpoint; continue with wearsim scene-run --resume " << p_.case_file
              << "\n";
       else // nothing was checkpointed: no particle yet, or checkpoints off
         log_ << " without a checkpoint (no particle yet, or Coupling/Checkpoints off); run it "
                 "again with --overwrite\n";
-      return 128 + signals.requested();
+      return 128 + ranks_.agreed_signal(signals);
     }
     run_parts(r, *loads);
     n_stages_done_ = r.stage;
@@ -107,14 +116,22 @@ int SceneCoupledRun::run() {
 }
 
 std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::setup() {
-  const std::string replaced = prepare_run_folder(p_, options_, log_);
+  const std::string replaced = ranks_.writer() ? prepare_run_folder(p_, options_, log_) : "";
+  ranks_.wait_for_folder(); // rank 0 has the folder ready before any rank goes on
+  if (!ranks_.writer())
+    part_case_.output.directory = ranks_.scratch();
   if (options_.resume)
     return resume();
   std::vector<dem::SceneWall> walls = dem::build_scene_walls(p_.scene, p_.geometry);
-  for (const std::size_t k : part_walls_)
-    parts_.emplace_back(p_, k, walls[k], log_);
+  for (const std::size_t k : part_walls_) {
+    parts_.emplace_back(part_case_, k, walls[k], log_, ranks_.writer());
+    ranks_.require_same(parts_.back().surface(), "part '" + parts_.back().name() + "' meshed");
+  }
   scene_ = std::make_unique<dem::SceneRun>(p_.scene, p_.dem, std::move(walls));
+  scene_->set_rank_link(options_.ranks);
   scene_->setup([&](const std::string& text) { log_ << "scene: " << text << "\n" << std::flush; });
+  if (options_.ranks && options_.ranks->n_ranks() > 1)
+    log_ << "scene: " << scene_->rank_layout() << "; rank 0 writes" << std::endl;
   for (auto& part : parts_)
     part.record_initial(scene_->time());
   log_ << "scene: " << scene_->walls().size() << " walls (" << parts_.size() << " wearing), "
@@ -122,14 +139,17 @@ std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::setup() {
        << " outlets; batches and outlets every " << scene_->exchange_interval() << " s; "
        << plan_.size() << " stage(s) of "
        << (parts_.empty() ? p_.scene.end_time : p_.scene.stage_duration) << " s\n";
-  series_ =
-      std::make_unique<SceneSeries>(p_.output.directory, *scene_, p_.scene.particle_snapshots);
+  if (ranks_.writer())
+    series_ =
+        std::make_unique<SceneSeries>(p_.output.directory, *scene_, p_.scene.particle_snapshots);
   replaced_ = replaced;
   return std::nullopt;
 }
 
 std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::resume() {
-  const Checkpoint c = read_latest_checkpoint(checkpoint_path(), log_);
+  const dem::RankLink* ranks = options_.ranks;
+  const DemPart part{ranks ? ranks->rank() : 0, ranks ? ranks->n_ranks() : 1};
+  const Checkpoint c = read_latest_checkpoint(checkpoint_path(), log_, part);
   require_same_case(c, parameters_text_, checkpoint_path());
   if (!c.scene)
     throw std::runtime_error("--resume: checkpoint '" + checkpoint_path() +
@@ -143,19 +163,41 @@ std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::resume() {
   std::vector<dem::SceneWall> walls = dem::build_scene_walls(p_.scene, p_.geometry);
   OpenSceneStage open{{}, s.stage_end};
   for (std::size_t i = 0; i < part_walls_.size(); ++i) {
-    parts_.emplace_back(p_, part_walls_[i], s.parts[i]);
+    parts_.emplace_back(part_case_, part_walls_[i], s.parts[i], ranks_.writer());
     walls[part_walls_[i]].surface.mesh = parts_.back().surface();
     open.loads.push_back(loads_of(s.parts[i].open, parts_.back().surface()));
   }
   scene_ = std::make_unique<dem::SceneRun>(p_.scene, p_.dem, std::move(walls));
-  dem::SceneRunState state{s.time,   true,          c.dem,           s.n_removed,
-                           s.inlets, s.outlet_mass, s.outlet_counts, s.flux_planes};
+  dem::SceneRunState state{s.time,          true,          c.dem,
+                           s.n_removed,     s.inlets,      s.outlet_mass,
+                           s.outlet_counts, s.flux_planes, s.rank_bounds};
+  scene_->set_rank_link(options_.ranks);
   scene_->resume(state);
-  series_ = std::make_unique<SceneSeries>(p_.output.directory, *scene_, p_.scene.particle_snapshots,
-                                          s.n_records);
+  n_records_ = s.n_records;
+  if (ranks_.writer())
+    series_ = std::make_unique<SceneSeries>(p_.output.directory, *scene_,
+                                            p_.scene.particle_snapshots, s.n_records);
+  if (c.dem_ranks != part.n_ranks)
+    log_ << "the checkpoint was written on " << c.dem_ranks << " rank(s), this run has "
+         << part.n_ranks << ": the scene is decomposed again (it continues, not bit for bit as "
+         << "on " << c.dem_ranks << ")" << std::endl;
+  if (ranks && ranks->n_ranks() > 1)
+    log_ << "scene: " << scene_->rank_layout() << "; rank 0 writes" << std::endl;
   log_ << "resumed after stage " << n_stages_done_ << " of " << plan_.size() << " at t = " << s.time
        << " s (" << s.n_records << " records)" << std::endl;
   return open;
+}
+
+void SceneCoupledRun::record(const dem::SceneWindow& w) {
+  ++n_records_;
+  const bool snapshot = p_.scene.particle_snapshots && w.n_particles > 0;
+  if (!ranks_.link()) {
+    series_->add(w, *scene_, scene_->system().particles);
+    return;
+  }
+  const dem::Particles all = snapshot ? scene_->particles_on_first_rank() : dem::Particles{};
+  if (series_)
+    series_->add(w, *scene_, all);
 }
 
 std::vector<dem::WallLoads> SceneCoupledRun::zero_loads() const {
@@ -190,14 +232,26 @@ SceneCoupledRun::run_dem(StageRecord& r, std::optional<OpenSceneStage> open,
     if (w.integrated > 0)
       for (std::size_t i = 0; i < parts_.size(); ++i)
         stage.loads[i] += scene_->wall_loads(parts_[i].wall(), *law_, w.integrated);
-    series_->add(w, *scene_);
+    record(w);
     if (!parts_.empty())
       log_ << "stage " << r.stage << "/" << plan_.size() << " " << scheme_name(r.scheme) << ": ";
     log_ << window_summary(w) << "\n" << std::flush;
+    if (ranks_.link() && p_.scene.rank_rebalance > 0) {
+      const double imbalance = scene_->rank_imbalance();
+      if (imbalance > p_.scene.rank_rebalance) {
+        scene_ = scene_->rebalanced();
+        log_ << format("scene: rebalanced at t = %.4f s (the fullest rank held %.2f times the "
+                       "mean): ",
+                       scene_->time(), imbalance)
+             << scene_->rank_layout() << std::endl;
+      }
+    }
     const bool more = scene_->time() < stage.end - 1e-9 * every;
-    const bool stop = signals.requested() != 0 && more;
-    if ((stop || (interval > 0 && since_checkpoint.seconds() >= interval && more)) &&
-        scene_->system().n_rebuilds() > 0) {
+    // Every rank decides alike: a signal to any rank stops all, rank 0's clock times.
+    const bool stop = ranks_.agreed_signal(signals) != 0 && more;
+    const bool due =
+        ranks_.any(ranks_.writer() && interval > 0 && since_checkpoint.seconds() >= interval);
+    if ((stop || (due && more)) && scene_->system().n_rebuilds() > 0) {
       checkpoint(stage);
       since_checkpoint.restart();
     }
@@ -211,8 +265,12 @@ SceneCoupledRun::run_dem(StageRecord& r, std::optional<OpenSceneStage> open,
 
 void SceneCoupledRun::run_parts(const StageRecord& r, const std::vector<dem::WallLoads>& loads) {
   for (std::size_t i = 0; i < parts_.size(); ++i)
-    if (parts_[i].run_stage(r, loads[i], p_, log_))
+    if (parts_[i].run_stage(r, loads[i], part_case_, log_)) {
+      ranks_.require_same(parts_[i].surface(), "part '" + parts_[i].name() +
+                                                   "' after the FEM part of stage " +
+                                                   std::to_string(r.stage));
       scene_->replace_wall_surface(parts_[i].wall(), parts_[i].surface());
+    }
   if (!parts_.empty())
     log_ << format("stage %d %s done at t = %.4g s, DEM %.0f s\n", r.stage,
                    scheme_name(r.scheme).c_str(), r.time, r.dem_seconds)
@@ -230,7 +288,8 @@ void SceneCoupledRun::checkpoint(const OpenSceneStage& open) {
   SceneCheckpoint s;
   s.time = state.time;
   s.stage_end = open.end;
-  s.n_records = series_->n_records();
+  s.n_records = n_records_;
+  s.rank_bounds = state.rank_bounds;
   s.n_removed = state.n_removed;
   s.inlets = state.inlets;
   s.outlet_mass = state.outlet_mass;
@@ -239,7 +298,13 @@ void SceneCoupledRun::checkpoint(const OpenSceneStage& open) {
   for (std::size_t i = 0; i < parts_.size(); ++i)
     s.parts.push_back(parts_[i].state(open.loads[i]));
   c.scene = s;
-  write_checkpoint(checkpoint_path(), c);
+  if (dem::RankLink* link = ranks_.link()) {
+    const std::vector<dem::SystemState> dem_parts = dem::gather_rank_states(c.dem, *link);
+    if (ranks_.writer())
+      write_checkpoint(checkpoint_path(), c, dem_parts);
+  } else {
+    write_checkpoint(checkpoint_path(), c);
+  }
   if (!replaced_.empty()) { // the run --overwrite replaced goes once this one can be resumed
     std::filesystem::remove_all(replaced_);
     log_ << "the replaced run in '" << replaced_ << "' is deleted (this run has its first "

@@ -7,7 +7,11 @@
 // with the particles kept -> checkpoint. Between two windows the run checkpoints itself (after
 // every stage, every Output/Checkpoint interval, and on SIGINT/SIGTERM/SIGUSR1, then it
 // stops), and `--resume` continues bit for bit (same thread count).
+// Over MPI ranks (RunOptions::ranks) every rank runs this same loop: the scene's DEM
+// decomposed into slabs (dem::SceneRun::set_rank_link), each wearing part worn on every rank's
+// own copy (checked the same bit for bit), output and messages on rank 0.
 #include "coupling/loop/coupled_run.h"
+#include "coupling/loop/run_ranks.h"
 #include "coupling/loop/stop_signals.h"
 #include "coupling/loop/wearing_part.h"
 #include "coupling/output/checkpoint.h"
@@ -59,10 +63,17 @@ private:
   void checkpoint(const OpenSceneStage& open);
   /// The loads a stage starts from: zero on each part's faces.
   std::vector<dem::WallLoads> zero_loads() const;
+  /// The window's record on rank 0 (over ranks the particles of a snapshot gathered there).
+  void record(const dem::SceneWindow& w);
 
   CaseParameters p_;
+  std::ostream silent_{nullptr}; ///< the log of the ranks after the first
   std::ostream& log_;
   RunOptions options_;
+  RunRanks ranks_;
+  /// The case as the wearing parts see it: over ranks, on the ranks after the first, with
+  /// Output/Directory their scratch folder (they mesh and wear there and write nothing else)
+  CaseParameters part_case_;
   std::string parameters_text_;
   std::vector<Scheme> plan_;
   std::vector<std::size_t> part_walls_; ///< the wearing walls' indices in the scene, with stages
@@ -71,6 +82,7 @@ private:
   std::unique_ptr<dem::SceneRun> scene_;
   std::unique_ptr<SceneSeries> series_;
   int n_stages_done_ = 0;
+  int n_records_ = 0;    ///< windows recorded (rank 0 writes them)
   std::string replaced_; ///< a run --overwrite moved aside, deleted at the first checkpoint
 };
 

@@ -69,8 +69,9 @@ std::string part_directory(const CaseParameters& p, const std::string& name) {
 }
 
 WearingPart::WearingPart(const CaseParameters& p, std::size_t index, dem::SceneWall& wall,
-                         std::ostream& log)
-    : wall_(index), name_(wall.parameters.name), directory_(part_directory(p, name_)) {
+                         std::ostream& log, bool writes)
+    : wall_(index), name_(wall.parameters.name), directory_(part_directory(p, name_)),
+      writes_(writes) {
   const auto worn = part_parameters(p, wall.parameters);
   meshes::ensure_directory(directory_ + "/mesh");
   const meshes::Stopwatch clock;
@@ -97,7 +98,7 @@ WearingPart::WearingPart(const CaseParameters& p, std::size_t index, dem::SceneW
                 name_.c_str(), n_tetrahedra, surface.n_faces(),
                 meshes::enclosed_volume(surface) * 1e9, labels.c_str(), clock.seconds());
   previous_stress_ = von_mises_on(surface);
-  output_ = std::make_unique<RunOutput>(directory_);
+  output_ = std::make_unique<RunOutput>(directory_, writes_);
 }
 
 void WearingPart::record_initial(double time) {
@@ -106,15 +107,17 @@ void WearingPart::record_initial(double time) {
                        {{"cumulative removed volume", 1, zero}, {"wear depth", 1, zero}});
 }
 
-WearingPart::WearingPart(const CaseParameters& p, std::size_t index, const PartCheckpoint& c)
+WearingPart::WearingPart(const CaseParameters& p, std::size_t index, const PartCheckpoint& c,
+                         bool writes)
     : wall_(index), name_(p.scene.walls.at(index).name), directory_(part_directory(p, name_)),
-      stages_(c.stages) {
+      writes_(writes), stages_(c.stages) {
+  meshes::ensure_directory(directory_ + "/mesh"); // a rank's scratch copy starts empty
   sample_ = std::make_unique<fem::WornSample>(c.sample, part_parameters(p, p.scene.walls[index]));
   previous_stress_ = von_mises_on(sample_->surface());
   previous_stress_.values() = c.face_von_mises;
   for (std::size_t k = 0; k < c.labels.size(); ++k)
     removed_per_label_[c.labels[k]] = c.removed_per_label[k];
-  output_ = std::make_unique<RunOutput>(directory_);
+  output_ = std::make_unique<RunOutput>(directory_, writes_);
   output_->reload(stages_);
   // part_wear.csv as it stood after the checkpoint's stages.
   std::ifstream in(directory_ + "/part_wear.csv");
@@ -175,8 +178,9 @@ bool WearingPart::run_stage(StageRecord r, const dem::WallLoads& loads, const Ca
       rows << r.stage << "," << scheme_name(r.scheme) << "," << r.time << ","
            << meshes::label::name(label) << "," << v << "," << removed_per_label_[label] << "\n";
   wear_rows_ += rows.str();
-  meshes::write_atomically(directory_ + "/part_wear.csv",
-                           [&](std::ostream& out) { out << part_wear_header << wear_rows_; });
+  if (writes_)
+    meshes::write_atomically(directory_ + "/part_wear.csv",
+                             [&](std::ostream& out) { out << part_wear_header << wear_rows_; });
   log << format("stage %d %s, part '%s': wear-law volume %.4g mm^3, removed %.4g mm^3 "
                 "(cumulative %.4g), max von Mises (ball) %.3g MPa, %d remeshes, FEM %.1f s\n",
                 r.stage, scheme_name(r.scheme).c_str(), name_.c_str(), r.dem_wear_volume * 1e9,

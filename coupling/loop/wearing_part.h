@@ -26,11 +26,15 @@ public:
   /// Meshes scene wall `wall` (index `index` among the scene's walls) into tetrahedra and
   /// gives the wall that mesh's boundary, so that DEM faces and FEM boundary faces are the
   /// same triangles. Logs what it made.
-  WearingPart(const CaseParameters& p, std::size_t index, dem::SceneWall& wall, std::ostream& log);
+  /// `writes`: the part writes its tables and series (over ranks rank 0 only; every rank
+  /// meshes and wears its own copy, in the folders `p` names).
+  WearingPart(const CaseParameters& p, std::size_t index, dem::SceneWall& wall, std::ostream& log,
+              bool writes = true);
   /// Writes the unworn surface as stage 0 at scene time `time` [s] (once the scene is set up).
   void record_initial(double time);
   /// The part as checkpoint part `c` left it (its output folder as it stood then).
-  WearingPart(const CaseParameters& p, std::size_t index, const PartCheckpoint& c);
+  WearingPart(const CaseParameters& p, std::size_t index, const PartCheckpoint& c,
+              bool writes = true);
 
   std::size_t wall() const { return wall_; } ///< index among the scene's walls
   const std::string& name() const { return name_; }
@@ -58,6 +62,7 @@ private:
   std::string name_, directory_;
   std::unique_ptr<fem::WornSample> sample_;
   std::unique_ptr<RunOutput> output_;
+  bool writes_ = true;
   std::vector<StageRecord> stages_;
   /// [Pa] the last staged stage's von Mises stress on the part's faces (zeros before the
   /// first): the stress-informed wear law's input to the next stage

@@ -2,6 +2,7 @@
 //   progress            time, stage end, records written, particles removed
 //   outlet_mass, outlet_counts, n_inlets, inlet_<k>/{pending, inserted, rng}
 //   n_flux_planes, flux_plane_<k>/{ids, last, counts}
+//   rank_bounds         the slabs' cuts of a run over ranks (empty from one process)
 //   n_parts, part_<k>/{sample/..., face_von_mises, stages/..., labels, removed_per_label,
 //                      open_loads/... with attribute duration}
 #include "coupling/output/scene_checkpoint.h"
@@ -50,6 +51,7 @@ void write_scene(Hdf5File& h5, const SceneCheckpoint& s) {
                 {s.time, s.stage_end, double(s.n_records), double(s.n_removed)});
   write_doubles(h5, "/scene/outlet_mass", s.outlet_mass);
   h5.write("/scene/outlet_counts", wide(s.outlet_counts), {s.outlet_counts.size()});
+  write_doubles(h5, "/scene/rank_bounds", s.rank_bounds);
   h5.write("/scene/n_inlets", std::vector<int>{int(s.inlets.size())}, {1});
   for (std::size_t k = 0; k < s.inlets.size(); ++k) {
     const auto& in = s.inlets[k];
@@ -94,6 +96,7 @@ SceneCheckpoint read_scene(const Hdf5Reader& h5) {
     in.rng = h5.text_attribute(g, "rng");
     s.inlets.push_back(in);
   }
+  s.rank_bounds = h5.doubles("/scene/rank_bounds");
   const auto n_planes = h5.ints("/scene/n_flux_planes");
   for (int k = 0; k < n_planes.at(0); ++k) {
     const std::string g = "/scene/flux_plane_" + std::to_string(k);

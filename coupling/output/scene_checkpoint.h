@@ -32,6 +32,9 @@ struct SceneCheckpoint {
   std::vector<std::uint64_t> outlet_counts; ///< per outlet
   std::vector<dem::FluxPlaneState> flux_planes;
   std::vector<PartCheckpoint> parts; ///< in the order of the scene's wearing walls
+  /// Over ranks: the slabs' cuts [m or rad] (n_ranks + 1) the DEM parts were written on;
+  /// empty from one process
+  std::vector<double> rank_bounds;
 };
 
 /// Writes s under /scene: /scene/progress, outlets, inlet_<k>, flux_plane_<k>, part_<k>.

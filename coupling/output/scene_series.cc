@@ -139,7 +139,8 @@ SceneSeries::SceneSeries(std::string directory, const dem::SceneRun& run, bool s
   }
 }
 
-void SceneSeries::add(const dem::SceneWindow& w, const dem::SceneRun& run) {
+void SceneSeries::add(const dem::SceneWindow& w, const dem::SceneRun& run,
+                      const dem::Particles& particles) {
   const int k = ++n_records_;
   series_ += series_row(w);
   meshes::write_atomically(directory_ + "/scene_series.csv",
@@ -148,8 +149,7 @@ void SceneSeries::add(const dem::SceneWindow& w, const dem::SceneRun& run) {
   meshes::write_atomically(directory_ + "/scene_wear.csv",
                            [&](std::ostream& out) { out << wear_; });
   if (snapshots_ && w.n_particles > 0)
-    dem::write_particles_vtu(run.system().particles,
-                             directory_ + "/particles_" + std::to_string(k) + ".vtu");
+    dem::write_particles_vtu(particles, directory_ + "/particles_" + std::to_string(k) + ".vtu");
   if (run.fields())
     write_fields(k, w, run.fields()->grid());
   const std::string dir = directory_ + "/walls_" + std::to_string(k);

@@ -27,8 +27,10 @@ public:
   /// `n_records` records (later rows, written after the checkpoint, are dropped) and the
   /// fields files up to that record. Throws naming a table that holds fewer.
   SceneSeries(std::string directory, const dem::SceneRun& run, bool snapshots, int n_records);
-  /// The next record, of window w, with the run as it stands at the window's end.
-  void add(const dem::SceneWindow& w, const dem::SceneRun& run);
+  /// The next record, of window w, with the run as it stands at the window's end and its
+  /// `particles` then (the scene's own, or over ranks every rank's gathered).
+  void add(const dem::SceneWindow& w, const dem::SceneRun& run, const dem::Particles& particles);
+  bool snapshots() const { return snapshots_; }
   int n_records() const { return n_records_; }
 
 private:

@@ -10,9 +10,9 @@
 // settling test and the bed's figures are taken over all ranks.
 #include "dem/engine/filling.h"
 
-#include "meshes/constants.h"
 #include "dem/engine/insertion_grid.h"
 #include "dem/engine/system.h"
+#include "meshes/constants.h"
 
 #include <algorithm>
 #include <cmath>
@@ -172,7 +172,7 @@ FillReport fill_to_height(System& system, const std::function<FillRegion(double)
                           const SizeDistribution& psd, double density, int material,
                           std::uint64_t seed, double loose_factor, double speed_tolerance,
                           double max_time, const std::function<void(double)>& on_check,
-                          double packing) {
+                          double packing, const std::function<void()>& before_setup) {
   psd.validate();
   if (!(target_height > 0))
     throw std::invalid_argument("DEM/Fill height must be positive");
@@ -187,6 +187,8 @@ FillReport fill_to_height(System& system, const std::function<FillRegion(double)
     throw std::runtime_error("DEM fill: only " + std::to_string(got) + " of " + std::to_string(n) +
                              " particles fit into the insertion region; "
                              "raise the loose factor or lower the fill height");
+  if (before_setup)
+    before_setup();
   system.setup();
   RankLink* link = system.rank_link(); // over ranks: the figures of the whole bed
   const double check_every = 0.02;

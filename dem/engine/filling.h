@@ -65,13 +65,15 @@ struct FillReport {
 /// below ten times it, or `max_time`
 /// passes (`on_check(time)` after each check, for progress). `make_region(z_top)` gives the
 /// insertion region up to z_top; `horizontal_area` is the floor area [m^2]. Throws if the region
-/// cannot take the particles.
+/// cannot take the particles. `before_setup` is called once the particles are inserted, before
+/// the engine sets up (a decomposition over ranks fitted to the bed).
 FillReport fill_to_height(System& system, const std::function<FillRegion(double)>& make_region,
                           double horizontal_area, double z_floor, double target_height,
                           const SizeDistribution& psd, double density, int material,
                           std::uint64_t seed, double loose_factor = 2.0,
                           double speed_tolerance = 0.01, double max_time = 2.0,
-                          const std::function<void(double)>& on_check = {}, double packing = 0.6);
+                          const std::function<void(double)>& on_check = {}, double packing = 0.6,
+                          const std::function<void()>& before_setup = {});
 
 /// Solid fraction of the particles whose centres lie in z_lo..z_hi over a horizontal area.
 double packing_fraction(const Particles& p, double horizontal_area, double z_lo, double z_hi);

@@ -63,10 +63,12 @@ System::remove_particles(const std::function<bool(const Vec3&, double)>& remove)
   if (!set_up_)
     throw std::logic_error("System::remove_particles() before setup()");
   std::vector<RemovedParticle> removed;
-  bool any = false;
-  for (std::size_t i = 0; i < particles.n_real && !any; ++i)
-    any = remove(particles.position[i], particles.radius[i]);
-  if (!any)
+  double any = 0;
+  for (std::size_t i = 0; i < particles.n_real && any == 0; ++i)
+    any = remove(particles.position[i], particles.radius[i]) ? 1 : 0;
+  if (rank_link_) // a rebuild is every rank's together
+    rank_link_->max_over_ranks(&any, 1);
+  if (any == 0)
     return removed;
   const ParticleChanges changes{nullptr, &remove, &removed};
   rebuild(false, &changes);

@@ -4,11 +4,13 @@
 //   solid fraction  phi_c = (1/S) sum_s sum_i V_i / V_c,   V_i = 4/3 pi r_i^3
 //   velocity        v_c   = sum_s sum_i m_i v_i / sum_s sum_i m_i   (mass-weighted)
 // Centre binning conserves the particle volume: sum_c phi_c V_c is the mean volume of the
-// particles inside the grid.
+// particles inside the grid. Over ranks each rank bins its own particles; the sums, not the
+// means, are added over the ranks.
 #include "dem/scene/binned_fields.h"
 
 #include "meshes/constants.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -59,8 +61,25 @@ void BinnedFields::sample(const Particles& p) {
   ++n_samples_;
 }
 
-BinnedWindow BinnedFields::window() const {
+BinnedWindow BinnedFields::window(RankLink* link) const {
   const std::size_t n = grid_.n_cells();
+  if (link) { // the sums of every rank's particles, then the means of the one-rank path
+    std::vector<double> sums;
+    sums.reserve(6 * n);
+    for (const auto* a : {&volume_, &mass_, &count_})
+      sums.insert(sums.end(), a->begin(), a->end());
+    for (const Vec3& m : momentum_)
+      sums.insert(sums.end(), {m.x, m.y, m.z});
+    link->sum_in_rank_order(sums.data(), sums.size());
+    BinnedFields all(grid_);
+    all.n_samples_ = n_samples_;
+    std::copy(sums.begin(), sums.begin() + long(n), all.volume_.begin());
+    std::copy(sums.begin() + long(n), sums.begin() + long(2 * n), all.mass_.begin());
+    std::copy(sums.begin() + long(2 * n), sums.begin() + long(3 * n), all.count_.begin());
+    for (std::size_t c = 0; c < n; ++c)
+      all.momentum_[c] = {sums[3 * n + 3 * c], sums[3 * n + 3 * c + 1], sums[3 * n + 3 * c + 2]};
+    return all.window();
+  }
   BinnedWindow w;
   w.solid_fraction.assign(n, 0);
   w.velocity.assign(n, Vec3{});

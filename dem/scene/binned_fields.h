@@ -1,8 +1,9 @@
 #pragma once
-// Continuum fields of a scene's particles on a grid of boxes (issue 33, item 4): the solid
+// Continuum fields of a scene's particles on a grid of boxes: the solid
 // fraction and the mass-weighted mean velocity per cell, averaged over the samples of a
 // window (one sample per exchange interval of the run).
 #include "dem/engine/particles.h"
+#include "dem/engine/rank_link.h"
 
 #include <array>
 #include <cstdint>
@@ -38,8 +39,10 @@ public:
   const FieldGrid& grid() const { return grid_; }
   /// Adds the real particles' present state as one sample.
   void sample(const Particles& p);
-  /// The means over the samples since the last reset (zeros without a sample).
-  BinnedWindow window() const;
+  /// The means over the samples since the last reset (zeros without a sample). Over ranks
+  /// (`link`, every rank calls it together) each rank samples its own particles and the sums
+  /// are added over the ranks in rank order: every rank gets the whole scene's window.
+  BinnedWindow window(RankLink* link = nullptr) const;
   void reset();
 
 private:

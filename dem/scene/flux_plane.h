@@ -4,6 +4,7 @@
 // scene from the image of its position nearest the last sample's, so a particle wrapped
 // through a periodic plane does not count as crossing.
 #include "dem/engine/particles.h"
+#include "dem/engine/rank_link.h"
 
 #include <cstdint>
 #include <functional>
@@ -34,11 +35,18 @@ public:
   /// Books the real particles of p that changed side since their last sample: + their mass
   /// forwards, - backwards. A particle's first sample only records its position. With
   /// `nearest_image`, a particle's side now is that of its image nearest its last position.
-  void sample(const Particles& p, const NearestImage& nearest_image = {});
+  /// Over ranks (`link`; every rank calls it together) p is this rank's part: a particle that
+  /// passed to another rank since its last sample takes its last position there, and the
+  /// counts are summed over the ranks (the same on every rank).
+  void sample(const Particles& p, const NearestImage& nearest_image = {}, RankLink* link = nullptr);
   double net_mass() const { return net_mass_; } ///< [kg] forwards minus backwards so far
   std::uint64_t n_forward() const { return n_forward_; }
   std::uint64_t n_backward() const { return n_backward_; }
-  FluxPlaneState state() const;
+  /// Over ranks (`link`; every rank calls it together) the whole scene's: every rank's last
+  /// positions, so that a run resumes on any rank count.
+  FluxPlaneState state(RankLink* link = nullptr) const;
+  /// Over ranks every rank takes the whole state; the entries of particles another rank holds
+  /// leave at the first sample.
   void restore(const FluxPlaneState& s);
 
 private:
@@ -47,6 +55,9 @@ private:
   std::unordered_map<std::int64_t, Vec3> last_; ///< [m] by stable id: at the last sample
   double net_mass_ = 0;
   std::uint64_t n_forward_ = 0, n_backward_ = 0;
+  /// Over ranks: hands the last positions of the particles this rank no longer holds to the
+  /// rank that holds them now (an entry no rank claims, a particle an outlet took, is dropped).
+  void pass_entries(const Particles& p, RankLink& link);
 };
 
 } // namespace wear::dem

@@ -15,8 +15,8 @@
 // system within the box (plus a diameter) and of the batch's own (InsertionGrid).
 #include "dem/scene/inlet.h"
 
-#include "meshes/constants.h"
 #include "dem/engine/insertion_grid.h"
+#include "meshes/constants.h"
 
 #include <algorithm>
 #include <cmath>
@@ -108,15 +108,8 @@ std::vector<NewParticle> Inlet::batch(double t, const Particles& existing) {
   Particles near;
   const Vec3 u = spec_.edge_u, v = spec_.edge_v, back = normal_ * -depth_;
   const double uu = meshes::dot(u, u), vv = meshes::dot(v, v);
-  const auto in_box = [&](const Vec3& x, double margin) {
-    const Vec3 d = x - spec_.corner;
-    const double a = meshes::dot(d, u) / std::sqrt(uu), b = meshes::dot(d, v) / std::sqrt(vv),
-                 c = -meshes::dot(d, normal_);
-    return a >= -margin && a <= std::sqrt(uu) + margin && b >= -margin &&
-           b <= std::sqrt(vv) + margin && c >= -margin && c <= depth_ + margin;
-  };
   for (std::size_t i = 0; i < existing.n_real; ++i)
-    if (in_box(existing.position[i], d_max))
+    if (may_touch(existing.position[i]))
       near.add(existing.position[i], {}, existing.radius[i], 1, 0);
   InsertionGrid grid(near, d_max);
   std::uniform_real_distribution<double> unit(0, 1);
@@ -153,6 +146,16 @@ std::vector<NewParticle> Inlet::batch(double t, const Particles& existing) {
     ++done_.n_inserted;
   }
   return out;
+}
+
+bool Inlet::may_touch(const Vec3& x) const {
+  const double margin = spec_.psd.max_diameter();
+  const Vec3 d = x - spec_.corner;
+  const double lu = meshes::norm(spec_.edge_u), lv = meshes::norm(spec_.edge_v);
+  const double a = meshes::dot(d, spec_.edge_u) / lu, b = meshes::dot(d, spec_.edge_v) / lv,
+               c = -meshes::dot(d, normal_);
+  return a >= -margin && a <= lu + margin && b >= -margin && b <= lv + margin && c >= -margin &&
+         c <= depth_ + margin;
 }
 
 InletState Inlet::state() const {

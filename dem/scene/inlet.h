@@ -57,7 +57,12 @@ public:
   /// [-] Solid fraction of the insertion box at the requested rate.
   double box_solid_fraction() const;
   /// The particles to insert at time t, placed clear of the real particles of `existing`.
+  /// Over ranks `existing` must hold every rank's particles that may_touch() the box (the
+  /// same on every rank), so that every rank draws the same batch.
   std::vector<NewParticle> batch(double t, const Particles& existing);
+  /// True when a particle centred at x [m] may touch a particle of the box: it lies in the box
+  /// grown by a largest diameter.
+  bool may_touch(const Vec3& x) const;
   /// [kg] Mass the inlet owes at time t: what the rate asks minus what it placed.
   double owed_mass(double t) const;
   InletState state() const;

@@ -22,7 +22,9 @@ struct Outlet {
 };
 
 /// Removes from `system` the particles in any of the outlets and books each to the first
-/// outlet that holds it. Returns the count removed.
+/// outlet that holds it. Returns the count removed. Over ranks (the system's rank link; every
+/// rank calls it together) each rank removes its own and the outlets' counts and masses are
+/// the sums over the ranks, the same on every rank.
 std::size_t apply_outlets(System& system, std::vector<Outlet>& outlets);
 
 } // namespace wear::dem

@@ -121,6 +121,18 @@ WallMotion surface_motion(const SceneWallParameters& w) {
   return m;
 }
 
+std::string rank_slab_axis(const SceneParameters& s) {
+  if (s.rank_slabs_along != "auto")
+    return s.rank_slabs_along;
+  return s.periodic_angle_deg > 0         ? "angle"
+         : s.periodic_direction != "none" ? s.periodic_direction
+                                          : "x";
+}
+
+bool rank_ring(const SceneParameters& s) {
+  return rank_slab_axis(s) == "angle" || s.periodic_direction != "none";
+}
+
 int periodic_axis(const SceneParameters& s) {
   return s.periodic_direction == "x" ? 0 : s.periodic_direction == "y" ? 1 : 2;
 }
@@ -212,6 +224,19 @@ void validate(const SceneParameters& s) {
                                     ") cannot be part of a periodic scene (Scene/Periodic "
                                     "direction); give it a surface motion or none");
   }
+  if (!(s.rank_rebalance == 0 || s.rank_rebalance > 1))
+    throw std::invalid_argument("Scene/Rank rebalance must be 0 (never) or above 1, got " +
+                                std::to_string(s.rank_rebalance));
+  if (s.periodic_angle_deg > 0 && rank_slab_axis(s) != "angle")
+    throw std::invalid_argument("Scene/Rank slabs along = " + s.rank_slabs_along +
+                                ": a periodic sector (Scene/Periodic sector) is cut over ranks "
+                                "along its angle; set Rank slabs along = angle or auto");
+  if (s.periodic_direction != "none" && rank_slab_axis(s) != s.periodic_direction)
+    throw std::invalid_argument("Scene/Rank slabs along = " + s.rank_slabs_along +
+                                ": a scene periodic along " + s.periodic_direction +
+                                " (Scene/Periodic direction) is cut over ranks along its period; "
+                                "set Rank slabs along = " +
+                                s.periodic_direction + " or auto");
   for (const auto& w : s.walls)
     if (s.periodic_angle_deg > 0 && moves_rigidly(w))
       throw std::invalid_argument(scene_wall_path(w) +

@@ -123,6 +123,14 @@ struct SceneParameters {
   std::string periodic_direction = "none"; ///< none | x | y | z
   double periodic_from = 0;                ///< [m]
   double periodic_to = 0;                  ///< [m]
+  /// Over MPI ranks: one slab per rank along this coordinate (angle: about the z axis; auto:
+  /// the period's, or x)
+  std::string rank_slabs_along = "auto"; ///< auto | x | y | z | angle
+  /// balanced: equal particle counts when the engine sets up; uniform: equal widths
+  std::string rank_slabs = "balanced";
+  /// [-] Over MPI ranks: cut anew when the largest rank's particles exceed the mean by this
+  /// factor (0: never)
+  double rank_rebalance = 1.25;
 };
 
 /// The names a case file gives to its scene's walls, inlets and outlets: they decide which
@@ -179,6 +187,25 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
               "and the inlets must lie inside the slab.");
   v.real("Periodic from", s.periodic_from, "[m] The slab's lower plane.");
   v.real("Periodic to", s.periodic_to, "[m] The slab's upper plane.");
+  v.selection("Rank slabs along", s.rank_slabs_along, "auto|x|y|z|angle",
+              "Under `mpirun -np N wearsim scene-run`, the scene is cut into N slabs, one per "
+              "rank, along this coordinate (angle: about the z axis through the origin, round "
+              "the full circle or across Periodic sector). A periodic scene is cut along its "
+              "period: Periodic direction's axis, or angle for a sector; auto takes that, or x "
+              "for a scene without a period. Each slab must be at least two largest particle "
+              "diameters wide. One process: no effect.");
+  v.selection("Rank slabs", s.rank_slabs, "balanced|uniform",
+              "Where the slabs' cuts lie: balanced, so that each rank holds as many particles "
+              "when the engine sets up (the fill, or the first inlet batch); uniform, equal "
+              "widths of the domain (Domain minimum to maximum along the axis; the sector or "
+              "the full circle for angle). The cuts then stay for the run and its resumes on as "
+              "many ranks.");
+  v.real("Rank rebalance", s.rank_rebalance,
+         "[-] Over MPI ranks: when, at the end of a record's window, the rank holding the most "
+         "particles holds more than this factor times the mean, the bed is cut anew into "
+         "balanced slabs (as a resume on another rank count: the run goes on from a rebuild; "
+         "the same inputs rebalance at the same moments, so a run stays reproducible). 0: "
+         "never; otherwise above 1.");
   v.real("Stage duration", s.stage_duration,
          "[s] Simulated DEM time of each stage of the wear loop when a wall wears (the FEM "
          "part): the stages and their schemes are Coupling/Schedule's (staged, dem-only), "
@@ -356,6 +383,12 @@ std::vector<int> surface_numbers(const std::string& text, const std::string& wha
 WallMotion surface_motion(const SceneWallParameters& w);
 /// The axis of Scene/Periodic direction: 0, 1, 2 for x, y, z (meaningless for none).
 int periodic_axis(const SceneParameters& s);
+/// The coordinate a scene is cut along over ranks: Rank slabs along, auto resolved (the
+/// period's axis, angle for a periodic sector, else x).
+std::string rank_slab_axis(const SceneParameters& s);
+/// True when the scene's slabs over ranks form a ring (the last rank's neighbour is the
+/// first): angular slabs, or slabs along a periodic scene's period; else a line.
+bool rank_ring(const SceneParameters& s);
 /// True for the motions that move the wall's geometry (rotation, translation, oscillation).
 bool moves_rigidly(const SceneWallParameters& w);
 

@@ -24,6 +24,8 @@
 
 #include "dem/scene/scene_fill.h"
 
+#include "dem/engine/rank_states.h"
+
 #include "meshes/constants.h"
 #include "meshes/solid_region.h"
 #include "meshes/triangle_geometry.h"
@@ -283,8 +285,9 @@ void SceneRun::setup(const std::function<void(const std::string&)>& progress) {
     omp_set_num_threads(dem_.n_threads); // the engine takes OpenMP's count at its set-up
   fill(progress);
   if (system_.particles.n_real > 0 && !engine_ready()) {
+    fit_rank_slabs();
     system_.setup();
-    say("set up with " + std::to_string(system_.particles.n_real) + " particles");
+    say("set up with " + std::to_string(system_.n_particles_over_ranks()) + " particles");
   }
   time_ = engine_ready() ? system_.time() : 0.0;
 }
@@ -303,7 +306,9 @@ SceneRunState SceneRun::state() const {
     s.outlet_counts.push_back(o.n_removed);
   }
   for (const auto& f : flux_planes_)
-    s.flux_planes.push_back(f.state());
+    s.flux_planes.push_back(f.state(rank_link()));
+  if (rank_link())
+    s.rank_bounds = slabs_.cuts().bound;
   return s;
 }
 
@@ -319,17 +324,40 @@ void SceneRun::resume(const SceneRunState& s) {
   if (dem_.n_threads > 0)
     omp_set_num_threads(dem_.n_threads);
   if (s.engine_ready) {
+    // Over ranks a state written by this rank of as many ranks continues bit for bit on the
+    // slabs it was written on, its particles added where its last rebuild had them (so that
+    // the set-up moves none); a whole bed (merged from another rank count, or one process's)
+    // is added on every rank, cut anew, and each rank keeps its slab's part.
+    const RankLink* link = rank_link();
+    const int rank = link ? link->rank() : 0, n_ranks = link ? link->n_ranks() : 1;
+    const bool exact = continues_exactly(s.system, rank, n_ranks);
+    const bool own_part = link && exact;
+    const auto& x = own_part && s.system.reference_position.size() == s.system.position.size()
+                        ? s.system.reference_position
+                        : s.system.position;
     auto& p = system_.particles;
     for (std::size_t i = 0; i < s.system.position.size(); ++i) {
-      p.add(s.system.position[i], s.system.velocity[i], s.system.radius[i], dem_.particle.density,
+      p.add(x[i], s.system.velocity[i], s.system.radius[i], dem_.particle.density,
             s.system.material[i]);
       p.mass.back() = s.system.mass[i];
       p.inertia.back() = s.system.inertia[i];
       p.id.back() = s.system.id[i];
     }
     system_.settings.start_time = s.system.time;
+    if (own_part) {
+      if (s.rank_bounds.size() != std::size_t(n_ranks) + 1)
+        throw std::invalid_argument("scene run: the state of rank " + std::to_string(rank) +
+                                    " of " + std::to_string(n_ranks) + " carries " +
+                                    std::to_string(s.rank_bounds.size()) + " slab bounds");
+      use_rank_slabs(s.rank_bounds);
+    } else {
+      fit_rank_slabs(cut_balanced_);
+    }
     system_.setup();
-    system_.resume_state(s.system);
+    if (exact)
+      system_.resume_state(s.system);
+    else
+      system_.import_state(s.system);
   }
   time_ = s.time;
   n_removed_ = s.n_removed;
@@ -372,7 +400,7 @@ void SceneRun::fill(const std::function<void(const std::string&)>& progress) {
         if (progress)
           progress("settling the fill: t = " + std::to_string(t) + " s");
       },
-      dem_.assumed_packing);
+      dem_.assumed_packing, [this] { fit_rank_slabs(); });
   for (std::size_t k = 0; k < walls_.size(); ++k)
     system_.set_wall_motion(int(k), surface_motion(walls_[k].parameters));
   if (progress)
@@ -383,8 +411,21 @@ void SceneRun::fill(const std::function<void(const std::string&)>& progress) {
 
 void SceneRun::exchange() {
   bool set_up = engine_ready();
+  RankLink* link = rank_link();
+  Particles near;
   for (auto& inlet : inlets_) {
-    auto batch = inlet.batch(time_, system_.particles);
+    if (link && set_up) { // every rank's particles near the box, so that all draw one batch
+      std::vector<double> mine, all;
+      const auto& p = system_.particles;
+      for (std::size_t i = 0; i < p.n_real; ++i)
+        if (inlet.may_touch(p.position[i]))
+          mine.insert(mine.end(), {p.position[i].x, p.position[i].y, p.position[i].z, p.radius[i]});
+      link->gather_in_rank_order(mine, all);
+      near = Particles{};
+      for (std::size_t k = 0; k + 3 < all.size(); k += 4)
+        near.add({all[k], all[k + 1], all[k + 2]}, {}, all[k + 3], 1, 0);
+    }
+    auto batch = inlet.batch(time_, link && set_up ? near : system_.particles);
     if (batch.empty())
       continue;
     if (set_up) {
@@ -398,13 +439,14 @@ void SceneRun::exchange() {
   }
   if (!set_up && system_.particles.n_real > 0) {
     system_.settings.start_time = time_;
+    fit_rank_slabs();
     system_.setup();
     set_up = true;
   }
   if (!set_up)
     return;
   for (auto& plane : flux_planes_) // before the outlets: a particle that crossed is counted
-    plane.sample(system_.particles, nearest_image(scene_));
+    plane.sample(system_.particles, nearest_image(scene_), link);
   if (fields_)
     fields_->sample(system_.particles);
   n_removed_ += apply_outlets(system_, outlets_);
@@ -443,7 +485,8 @@ SceneWindow SceneRun::advance(double t_end) {
   }
   w.t_end = time_;
   const auto& p = system_.particles;
-  w.n_particles = set_up ? p.n_real : 0;
+  RankLink* link = rank_link();
+  w.n_particles = set_up ? system_.n_particles_over_ranks() : 0;
   for (const auto& in : inlets_) {
     const auto s = in.state();
     w.n_inserted += s.n_inserted;
@@ -457,13 +500,13 @@ SceneWindow SceneRun::advance(double t_end) {
   const double duration = time_ - accounted_from;
   w.integrated = duration;
   if (fields_) {
-    w.fields = fields_->window();
+    w.fields = fields_->window(link);
     fields_->reset();
   }
   w.walls.resize(walls_.size());
   if (set_up && duration > 0)
     for (std::size_t k = 0; k < walls_.size(); ++k) {
-      const WearIntegrals wi = system_.wear_integrals(int(k));
+      const WearIntegrals wi = system_.wear_integrals_over_ranks(int(k));
       auto& loads = w.walls[k];
       loads.force = wi.total_impulse / duration;
       loads.torque = wi.total_impulse_moment / duration;
@@ -472,19 +515,23 @@ SceneWindow SceneRun::advance(double t_end) {
       for (std::size_t f = 0; f < labels.size(); ++f)
         loads.archard_label[labels[f]] += wi.archard[f];
     }
-  if (set_up && p.n_real > 0) {
+  if (set_up && w.n_particles > 0) {
     for (std::size_t i = 0; i < p.n_real; ++i) {
       const double v = meshes::norm(p.velocity[i]);
       w.mean_speed += v;
       w.max_speed = std::max(w.max_speed, v);
     }
-    w.mean_speed /= double(p.n_real);
+    if (link) {
+      link->sum_in_rank_order(&w.mean_speed, 1);
+      link->max_over_ranks(&w.max_speed, 1);
+    }
+    w.mean_speed /= double(w.n_particles);
   }
   return w;
 }
 
 WallLoads SceneRun::wall_loads(std::size_t k, const WearLaw& law, double duration) const {
-  const WearIntegrals integrals = system_.wear_integrals(int(k));
+  const WearIntegrals integrals = system_.wear_integrals_over_ranks(int(k));
   return dem::wall_loads(integrals, law.removed_volume(integrals), walls_.at(k).surface.mesh,
                          duration, load_spreading(dem_.wall_loads, dem_.psd));
 }

@@ -1,6 +1,7 @@
 #pragma once
 // A scene's DEM run: the user's walls with their motions, particles filled at the start, fed
 // by inlets and drained by outlets, advanced window by window with a record per window.
+#include "dem/engine/slab_decomposition.h"
 #include "dem/engine/system.h"
 #include "dem/scene/binned_fields.h"
 #include "dem/scene/dem_parameters.h"
@@ -54,6 +55,9 @@ struct SceneRunState {
   std::vector<double> outlet_mass;          ///< [kg] per outlet so far
   std::vector<std::uint64_t> outlet_counts; ///< per outlet so far
   std::vector<FluxPlaneState> flux_planes;
+  /// Over ranks: the slabs' cuts [m or rad] (n_ranks + 1), which a resume on as many ranks
+  /// keeps; empty on one process
+  std::vector<double> rank_bounds;
 };
 
 struct SceneFillShape; // the Fill region as built once (scene_fill.h)
@@ -65,14 +69,35 @@ public:
   /// exists.
   SceneRun(const SceneParameters& scene, const DemParameters& dem, std::vector<SceneWall> walls);
 
+  /// Decomposes the scene over the ranks of `link` (before setup() or resume(); null or one
+  /// rank: one process): one slab per rank along Scene/Rank slabs along, cut as Scene/Rank
+  /// slabs says. Every rank then calls the same functions in the same order; every figure
+  /// (windows, loads, states) is the whole scene's on every rank. The link must be a ring
+  /// for angular slabs and periodic scenes, a line otherwise.
+  void set_rank_link(RankLink* link);
+  /// "over N MPI ranks: slabs along x at -0.3, -0.01, 0.01, 0.3 m" (set_rank_link), for logs.
+  std::string rank_layout() const;
+  /// [-] The most particles a rank holds over the mean over the ranks (1 on one process or
+  /// before the engine is set up). Every rank calls it together.
+  double rank_imbalance() const;
+  /// The same scene at the same moment with its bed cut anew into balanced slabs (between two
+  /// windows; every rank calls it together): the ranks' parts merged into the whole bed, which
+  /// a new run takes as a resume on another rank count does (it goes on from a rebuild, not
+  /// bit for bit as without the new cuts, but the same on every repetition).
+  std::unique_ptr<SceneRun> rebalanced() const;
   /// Materials, walls with their motions, the fill (settled when filled to a bed height)
   /// and the engine's set-up; `progress` hears what happens.
   void setup(const std::function<void(const std::string&)>& progress = {});
   /// Instead of setup(): continues from a state() taken between two windows of a run of the
   /// same scene (same walls, in particular a worn part's surface of that moment).
   void resume(const SceneRunState& state);
-  /// The state between two windows (after advance()).
+  /// The state between two windows (after advance()). Over ranks (every rank calls it
+  /// together) `system` is this rank's part; the rest is the whole scene's.
   SceneRunState state() const;
+  /// Over ranks the real particles of every rank on rank 0, in rank order (position,
+  /// velocity, spin, radius, id; other ranks get none); one process: a copy of its own.
+  /// Every rank calls it together. For snapshots.
+  Particles particles_on_first_rank() const;
   /// Runs on to time t_end [s]: every exchange interval the inlets place their batches and
   /// the outlets take their particles, then the engine steps. Returns the window's record.
   SceneWindow advance(double t_end);
@@ -105,6 +130,8 @@ private:
   std::vector<Outlet> outlets_;
   std::vector<FluxPlane> flux_planes_;
   std::optional<BinnedFields> fields_;
+  SlabDecomposition slabs_;  ///< over ranks (set_rank_link)
+  RankLink* link_ = nullptr; ///< over ranks (set_rank_link); null on one process
   std::shared_ptr<const SceneFillShape> fill_shape_; ///< none without a Fill region
   System system_;
   int particle_material_ = 0;
@@ -112,6 +139,16 @@ private:
   double exchange_ = 0; ///< [s]
   std::uint64_t n_removed_ = 0;
 
+  /// Over ranks: the cuts Scene/Rank slabs asks (balanced: each rank as many of the particles
+  /// every rank holds before the engine's set-up), or balanced whatever it asks.
+  void fit_rank_slabs(bool always_balanced = false);
+  bool cut_balanced_ = false; ///< a rebalanced run: its whole bed is cut balanced
+  /// The slabs along the scene's axis at `bound` (n_ranks + 1 values) to the engine.
+  void use_rank_slabs(std::vector<double> bound);
+  /// [m or rad] The range the slabs divide: the domain along the axis, the sector, or the
+  /// full circle.
+  std::pair<double, double> rank_range() const;
+  RankLink* rank_link() const { return link_; }
   /// True once the engine is set up (a set-up builds the lists once at least).
   bool engine_ready() const { return system_.n_rebuilds() > 0; }
   void add_materials_and_walls();

@@ -52,6 +52,43 @@ int run_wearsim(const std::string& case_file, const std::string& option, const s
   return wait_for(start_wearsim(case_file, option, log, command));
 }
 
+#ifdef MPIEXEC_BINARY
+/// `[mpiexec -np n] wearsim <command> [option] <case>` in folder `dir`, its output to dir/<log>,
+/// one thread per rank; n = 0: the program alone, as one process.
+pid_t start_in(const std::string& dir, int n_ranks, const std::string& option,
+               const std::string& case_file, const std::string& log, const char* command = "run") {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    if (chdir(dir.c_str()) != 0)
+      _exit(126);
+    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    dup2(fd, 1);
+    dup2(fd, 2);
+    setenv("OMP_NUM_THREADS", "1", 1);
+    setenv("OMPI_MCA_mpi_yield_when_idle", "1", 1); // ranks sharing cores yield while waiting
+    std::vector<const char*> argv;
+    const std::string np = std::to_string(n_ranks);
+    if (n_ranks > 0)
+      argv = {MPIEXEC_BINARY, "--allow-run-as-root", "--oversubscribe", "-np", np.c_str()};
+    argv.push_back(WEARSIM_BINARY);
+    argv.push_back(command);
+    if (!option.empty())
+      argv.push_back(option.c_str());
+    argv.push_back(case_file.c_str());
+    argv.push_back(nullptr);
+    execv(argv[0], const_cast<char* const*>(argv.data()));
+    _exit(127);
+  }
+  return pid;
+}
+
+int run_in(const std::string& dir, int n_ranks, const std::string& option,
+           const std::string& case_file, const std::string& log, const char* command = "run") {
+  return wait_for(start_in(dir, n_ranks, option, case_file, log, command));
+}
+
+#endif
+
 // A CSV as rows of cells, leaving out the wall-clock columns (seconds of work, speeds).
 std::vector<std::vector<std::string>> physical_columns(const std::string& path) {
   std::istringstream in(file_text(path));

@@ -65,4 +65,39 @@ inline SceneParameters pinhole_bin_cylinder_fill(const std::string& walls) {
   return s;
 }
 
+/// A belt (a plane moving as a 'surface translation' at 0.5 m/s along x) between two fixed
+/// side plates, the scene periodic in x over 0.2 m (the walls reach 50 mm past both planes),
+/// 300 particles on it, a flux plane at x = 0 counting forwards along x.
+inline SceneParameters endless_belt() {
+  SceneParameters scene = scene_with_names({"belt, left, right", "", ""});
+  scene.periodic_direction = "x";
+  scene.periodic_from = -0.1;
+  scene.periodic_to = 0.1;
+  scene.domain_min = {-0.2, -0.1, -0.05};
+  scene.domain_max = {0.2, 0.1, 0.2};
+  auto& belt = scene.walls[0];
+  belt.source = "plane";
+  belt.origin = {-0.15, -0.05, 0};
+  belt.edge_u = {0.3, 0, 0};
+  belt.edge_v = {0, 0.1, 0};
+  belt.mesh_size = 0.02;
+  belt.motion = "surface translation";
+  belt.velocity = {0.5, 0, 0};
+  for (int k : {1, 2}) {
+    auto& side = scene.walls[std::size_t(k)];
+    side.source = "plane";
+    side.origin = {-0.15, k == 1 ? -0.05 : 0.05, 0};
+    side.edge_u = {0.3, 0, 0};
+    side.edge_v = {0, 0, 0.15};
+    side.mesh_size = 0.02;
+  }
+  scene.flux_plane_names = "middle";
+  scene.flux_planes.push_back({"middle", {0, 0, 0}, {1, 0, 0}});
+  scene.fill.region = "box";
+  scene.fill.minimum = {-0.095, -0.045, 0.002};
+  scene.fill.maximum = {0.095, 0.045, 0.06};
+  scene.fill.count = 300;
+  return scene;
+}
+
 } // namespace wear::dem::testing

@@ -17,6 +17,7 @@
 
 using namespace wear::dem;
 
+using testing::endless_belt;
 using testing::gravel;
 
 namespace {
@@ -450,34 +451,7 @@ TEST_CASE("scene run: a bed on an endless belt, periodic along it, goes round an
   // the belt, for 1 s: 0.14 m of the 0.2 m period; measured: 1.7 beds, the bed riding at a mean
   // 0.47 m/s). The plane counts a particle wrapped through the periodic planes as not crossing
   // (without that, the wraps cancel the crossings and the net mass is about 0).
-  SceneParameters scene = scene_with_names({"belt, left, right", "", ""});
-  scene.periodic_direction = "x";
-  scene.periodic_from = -0.1;
-  scene.periodic_to = 0.1;
-  scene.domain_min = {-0.2, -0.1, -0.05};
-  scene.domain_max = {0.2, 0.1, 0.2};
-  auto& belt = scene.walls[0];
-  belt.source = "plane";
-  belt.origin = {-0.15, -0.05, 0};
-  belt.edge_u = {0.3, 0, 0};
-  belt.edge_v = {0, 0.1, 0};
-  belt.mesh_size = 0.02;
-  belt.motion = "surface translation";
-  belt.velocity = {0.5, 0, 0};
-  for (int k : {1, 2}) {
-    auto& side = scene.walls[std::size_t(k)];
-    side.source = "plane";
-    side.origin = {-0.15, k == 1 ? -0.05 : 0.05, 0};
-    side.edge_u = {0.3, 0, 0};
-    side.edge_v = {0, 0, 0.15};
-    side.mesh_size = 0.02;
-  }
-  scene.flux_plane_names = "middle";
-  scene.flux_planes.push_back({"middle", {0, 0, 0}, {1, 0, 0}});
-  scene.fill.region = "box";
-  scene.fill.minimum = {-0.095, -0.045, 0.002};
-  scene.fill.maximum = {0.095, 0.045, 0.06};
-  scene.fill.count = 300;
+  SceneParameters scene = endless_belt();
   SceneRun run(scene, gravel(), build_scene_walls(scene));
   run.setup();
   const SceneWindow w = run.advance(1.0);
@@ -499,6 +473,11 @@ TEST_CASE("scene run: a bed on an endless belt, periodic along it, goes round an
                     Catch::Contains("Scene/Fill: the box") &&
                         Catch::Contains("reaches outside the periodic slab"));
   scene.fill.maximum[0] = 0.095;
+  // Over ranks it is cut along its period; another axis is refused, naming the parameter.
+  scene.rank_slabs_along = "y";
+  CHECK_THROWS_WITH(validate(scene), Catch::Contains("Scene/Rank slabs along = y") &&
+                                         Catch::Contains("along its period"));
+  scene.rank_slabs_along = "auto";
   scene.periodic_angle_deg = 30;
   CHECK_THROWS_WITH(validate(scene), Catch::Contains("exclude each other"));
 }
