@@ -10,6 +10,7 @@
 #include "coupling/app/scene_command.h"
 
 #include "dem/scene/scene_walls.h"
+#include "dem/scene/wall_catalogue.h"
 #include "meshes/atomic_file.h"
 #include "meshes/stl_io.h"
 #include "meshes/vtu_writer.h"
@@ -34,13 +35,14 @@ void run_scene_command(const CaseParameters& p, std::ostream& log) {
     const auto& m = w.surface.mesh;
     const auto box = meshes::bounding_box(m);
     const auto& q = w.parameters;
+    const bool from_file = dem::wall_source_of(q).source == dem::WallSource::file;
     std::snprintf(line, sizeof line,
                   "wall %s: %s%s%s, %zu triangles, area %.6g m^2, x %.4g..%.4g y %.4g..%.4g "
                   "z %.4g..%.4g m, material %s, %s, motion %s\n",
-                  q.name.c_str(), q.source.c_str(), q.source == "file" ? " " : "",
-                  q.source == "file" ? q.file.c_str() : "", m.n_faces(), meshes::total_area(m),
-                  box.min.x, box.max.x, box.min.y, box.max.y, box.min.z, box.max.z,
-                  q.material.c_str(), q.wears ? "wears" : "does not wear", q.motion.c_str());
+                  q.name.c_str(), q.source.c_str(), from_file ? " " : "",
+                  from_file ? q.file.c_str() : "", m.n_faces(), meshes::total_area(m), box.min.x,
+                  box.max.x, box.min.y, box.max.y, box.min.z, box.max.z, q.material.c_str(),
+                  q.wears ? "wears" : "does not wear", q.motion.c_str());
     log << line;
     if (w.surface.n_solids > 0) {
       std::snprintf(line, sizeof line,
@@ -64,7 +66,7 @@ void run_scene_command(const CaseParameters& p, std::ostream& log) {
         c = c * (1 / a);
       // A wearing part's surfaces by their CAD number, with the label their role gives; the
       // tester's sample and holder by their labels' names.
-      const bool tester = q.source == "sample" || q.source == "holder";
+      const bool tester = dem::wall_source_of(q).tester_part;
       const bool part = meshes::label::is_part_surface(label) || tester;
       std::snprintf(line, sizeof line,
                     "  surface %3d%s%s: area %.6g m^2 (CAD %.6g), centroid (%.4g, %.4g, %.4g) m\n",

@@ -28,6 +28,7 @@
 
 #include "coupling/output/progress_line.h"
 #include "dem/engine/rank_states.h"
+#include "dem/scene/wall_catalogue.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -65,7 +66,7 @@ SceneCoupledRun::SceneCoupledRun(const CaseParameters& p, std::ostream& log,
   part_walls_ = wearing_walls(p_.scene);
   for (const std::size_t k : part_walls_) {
     const auto& wall = p_.scene.walls[k];
-    if (wall.source != "sample" && // the tester's sample is clamped at its bottom
+    if (dem::wall_source_of(wall).source != dem::WallSource::sample && // clamped at its bottom
         dem::surface_numbers(wall.clamped_surfaces, dem::scene_wall_path(wall)).empty())
       throw std::invalid_argument(dem::scene_wall_path(wall) +
                                   "/Clamped surfaces: the wearing part needs at least one "

@@ -21,6 +21,7 @@
 #include "coupling/loop/stage_steps.h"
 #include "coupling/loop/wear_increment.h"
 #include "coupling/output/progress_line.h"
+#include "dem/scene/wall_catalogue.h"
 #include "fem/remesher.h"
 #include "meshes/atomic_file.h"
 #include "meshes/sample_frame.h"
@@ -41,7 +42,7 @@ namespace {
 fem::WornSampleParameters part_parameters(const CaseParameters& p,
                                           const dem::SceneWallParameters& wall) {
   const std::string dir = part_directory(p, wall.name) + "/mesh";
-  if (wall.source == "sample") {
+  if (dem::wall_source_of(wall).source == dem::WallSource::sample) {
     fem::WornSampleParameters w = fem::worn_sample_parameters(p.fem, p.geometry.sample, dir);
     const meshes::SampleFrame frame(p.geometry.sample, p.geometry.placement);
     w.remesh.up = frame.vector_to_tester({0, 0, 1});
@@ -78,7 +79,7 @@ WearingPart::WearingPart(const CaseParameters& p, std::size_t index, dem::SceneW
   const std::string msh = directory_ + "/mesh/part.msh";
   std::size_t n_tetrahedra = 0;
   meshes::SurfaceMesh surface;
-  if (wall.parameters.source == "sample") { // the tester's own mesh, placed (as CoupledRun)
+  if (dem::wall_source_of(wall.parameters).source == dem::WallSource::sample) { // placed mesh
     meshes::SampleGeometry sg = p.geometry.sample;
     sg.volume_mesh = true;
     const auto g = meshes::generate_sample(sg, msh, &p.geometry.placement);

@@ -6,6 +6,7 @@
 
 #include "coupling/output/hdf5_file.h"
 #include "dem/engine/snapshot.h"
+#include "dem/scene/wall_catalogue.h"
 #include "meshes/atomic_file.h"
 #include "meshes/vtu_writer.h"
 
@@ -88,7 +89,7 @@ SceneSeries::SceneSeries(std::string directory, const dem::SceneRun& run, bool s
   for (std::size_t k = 0; k < run.walls().size(); ++k) {
     const auto& p = run.walls()[k].parameters;
     // A wearing part changes at stage ends only: the wear loop's surface series has it.
-    changing_.push_back(p.motion != "fixed");
+    changing_.push_back(dem::wall_motion_of(p).kind != dem::WallMotionKind::fixed);
     if (!changing_.back())
       write_wall(run, int(k), directory_ + "/walls");
   }

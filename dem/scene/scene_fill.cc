@@ -8,6 +8,7 @@
 // volume below the bed's top (the share of its height below it, when it reaches above).
 #include "dem/scene/scene_fill.h"
 
+#include "dem/scene/wall_catalogue.h"
 #include "meshes/cad_import.h"
 #include "meshes/constants.h"
 #include "meshes/triangle_geometry.h"
@@ -184,7 +185,7 @@ void require_clear_of_walls(const std::vector<SceneWall>& walls, SceneFillShape&
       const Vec3 at = (a + b + c) / 3.0;
       std::ostringstream s;
       s << "Scene/Fill: " << shape.describe();
-      if (w.parameters.source == "file")
+      if (wall_source_of(w.parameters).source == WallSource::file)
         s << " intersects wall '" << w.parameters.name << "' ('" << w.parameters.file << "', unit "
           << w.parameters.unit << ")";
       else

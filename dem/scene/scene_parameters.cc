@@ -2,6 +2,8 @@
 // fill's count against what its region can hold at the densest packing of spheres.
 #include "dem/scene/scene_parameters.h"
 
+#include "dem/scene/wall_catalogue.h"
+
 #include "meshes/constants.h"
 #include "meshes/surface_mesh.h"
 
@@ -96,27 +98,38 @@ RigidMotion rigid_motion(const SceneWallParameters& w) {
   m.start_time = w.start_time;
   if (w.end_time > 0)
     m.end_time = w.end_time;
-  if (w.motion == "rotation") {
+  switch (wall_motion_of(w).kind) {
+  case WallMotionKind::rotation:
     m.axis_point = scene_vector(w.axis_point);
     m.axis = scene_vector(w.rotation_axis);
     m.angular_velocity = w.angular_velocity;
-  } else if (w.motion == "translation") {
+    break;
+  case WallMotionKind::translation:
     m.velocity = scene_vector(w.velocity);
-  } else if (w.motion == "oscillation") {
+    break;
+  case WallMotionKind::oscillation:
     m.amplitude = scene_vector(w.amplitude);
     m.frequency = w.frequency;
+    break;
+  default: // at rest, or only its surface moves
+    break;
   }
   return m;
 }
 
 WallMotion surface_motion(const SceneWallParameters& w) {
   WallMotion m;
-  if (w.motion == "surface rotation") {
+  switch (wall_motion_of(w).kind) {
+  case WallMotionKind::surface_rotation:
     m.axis_point = scene_vector(w.axis_point);
     m.axis = meshes::normalized(scene_vector(w.rotation_axis));
     m.angular_velocity = w.angular_velocity;
-  } else if (w.motion == "surface translation") {
+    break;
+  case WallMotionKind::surface_translation:
     m.surface_velocity = scene_vector(w.velocity);
+    break;
+  default: // at rest, or it moves as a whole (rigid_motion)
+    break;
   }
   return m;
 }
@@ -138,7 +151,7 @@ int periodic_axis(const SceneParameters& s) {
 }
 
 bool moves_rigidly(const SceneWallParameters& w) {
-  return w.motion == "rotation" || w.motion == "translation" || w.motion == "oscillation";
+  return wall_motion_of(w).rigid;
 }
 
 void validate(const SceneParameters& s) {
@@ -164,29 +177,31 @@ void validate(const SceneParameters& s) {
                                   {&w.velocity, "Velocity"},
                                   {&w.amplitude, "Amplitude"}})
       three(*v, p + "/" + name);
-    if (w.source == "file" && w.file.empty())
+    const WallSourceEntry& source = wall_source_of(w);
+    const WallMotionEntry& motion = wall_motion_of(w);
+    if (source.source == WallSource::file && w.file.empty())
       throw std::invalid_argument(p + "/File: a file is needed with Source = file");
     if (!(w.mesh_size > 0))
       throw std::invalid_argument(p + "/Mesh size must be positive [m], got " +
                                   std::to_string(w.mesh_size));
-    if ((w.motion == "rotation" || w.motion == "surface rotation") &&
-        meshes::norm(scene_vector(w.rotation_axis)) == 0)
+    if (motion.rotates && meshes::norm(scene_vector(w.rotation_axis)) == 0)
       throw std::invalid_argument(p + "/Rotation axis must not be zero");
-    if (w.motion == "oscillation" && !(w.frequency > 0))
+    if (motion.kind == WallMotionKind::oscillation && !(w.frequency > 0))
       throw std::invalid_argument(p + "/Frequency must be positive [Hz] for an oscillation");
     validate(rigid_motion(w), p);
     if (w.wearing_surfaces != "all")
       surface_numbers(w.wearing_surfaces, p + "/Wearing surfaces");
     surface_numbers(w.clamped_surfaces, p + "/Clamped surfaces");
-    if (w.source == "sample" && (w.wearing_surfaces != "all" || !w.clamped_surfaces.empty()))
+    if (source.source == WallSource::sample &&
+        (w.wearing_surfaces != "all" || !w.clamped_surfaces.empty()))
       throw std::invalid_argument(p + ": the tester's sample (Source = sample) brings its own "
                                       "roles (base and elements wear, sides free, bottom "
                                       "clamped); leave Wearing surfaces and Clamped surfaces "
                                       "at their defaults");
-    if ((w.source == "sample" || w.source == "holder") && w.motion != "fixed")
+    if (source.tester_part && motion.kind != WallMotionKind::fixed)
       throw std::invalid_argument(p + "/Motion: the tester's " + w.source +
                                   " stands still (Motion = fixed)");
-    if (w.source == "holder" && w.wears)
+    if (source.source == WallSource::holder && w.wears)
       throw std::invalid_argument(p + "/Wears: the holder is steel and does not wear");
   }
   const auto count_source = [&](const std::string& source) {

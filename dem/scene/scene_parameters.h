@@ -1,12 +1,14 @@
 #pragma once
-// The user's own equipment as walls (issue 33): the Scene subsection of a case file. Each
-// wall named in `Scene/Walls` has a subsection `Wall <name>`: where its surface comes from (a
-// CAD or mesh file with its length unit, or a primitive), its material, whether it wears and
-// how it moves. scene_walls.h builds and checks the surfaces (`wearsim scene`); the scene's
-// particles, sources and sinks and its DEM run are the next parts of the issue.
+// The user's own equipment as a scene: the Scene subsection of a case file. Each wall named
+// in `Scene/Walls` has a subsection `Wall <name>`: where its surface comes from (a CAD or mesh
+// file with its length unit, or a primitive), its material, whether it wears and how it
+// moves; beside them the fill, inlets, outlets, flux planes, binned fields, periodic
+// boundaries, the stages of the wear loop and the cuts over MPI ranks. scene_walls.h builds
+// and checks the surfaces (`wearsim scene`), scene_run.h runs the scene's DEM.
 #include "dem/engine/filling.h"
 #include "dem/engine/mesh_wall.h"
 #include "dem/engine/rigid_motion.h"
+#include "dem/scene/wall_catalogue.h"
 #include "meshes/parameter_visitor.h"
 #include "meshes/vec3.h"
 
@@ -288,14 +290,8 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
   }
   for (auto& w : s.walls) {
     v.enter("Wall " + w.name);
-    v.selection("Source", w.source, "file|plane|disc|cylinder|cone|box|sample|holder",
-                "Where the surface comes from: a file, or a primitive meshed at Mesh size; or "
-                "the wear tester's parametric sample (Geometry/Sample: plain or convex pattern, "
-                "meshed at its own sizes) or its holder (a frame of Geometry/Tester/Holder rim "
-                "width around and under that sample, meshed at Mesh size), both placed where "
-                "Geometry/Placement puts the sample in the tester. The sample keeps its labels "
-                "(base and C<j><k> wear, its sides are free, its bottom is clamped); with a "
-                "holder wall its sides and bottom rest in the holder's pocket.");
+    v.selection("Source", w.source, wall_source_names(),
+                "Where the surface comes from: " + wall_source_descriptions() + ".");
     v.text("File", w.file,
            "STEP (.step, .stp), IGES (.iges, .igs), BREP (.brep) or STL (.stl), relative to "
            "the working directory (Source = file). CAD surfaces become labels 1, 2, ... in the "
@@ -339,15 +335,11 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
     v.text("Clamped surfaces", w.clamped_surfaces,
            "A wearing wall's surfaces held fixed in the FEM (zero displacement: bolted to "
            "the structure), by number, comma-separated; a wear loop needs at least one.");
-    v.selection("Motion", w.motion,
-                "fixed|rotation|translation|oscillation|surface rotation|surface translation",
-                "fixed; rotation about Axis point and Rotation axis at Angular velocity; "
-                "translation at Velocity; oscillation A sin(2 pi f (t - t0)) of Amplitude and "
-                "Frequency: the whole wall moves as a rigid body from Start time t0 on. "
-                "'surface rotation' and 'surface translation': the geometry stays where it is "
-                "and only its surface moves, from the start of the run on (a turntable or drum "
-                "turning about its own axis of symmetry, a conveyor belt at Velocity; a fill to a "
-                "Bed height settles on surfaces at rest); these may be periodic.");
+    v.selection("Motion", w.motion, wall_motion_names(),
+                wall_motion_descriptions() +
+                    ". A whole wall moves as a rigid body from Start time t0 on; a surface "
+                    "moves from the start of the run on (a fill to a Bed height settles on "
+                    "surfaces at rest), and only surface motions may be periodic.");
     v.real_list("Axis point", w.axis_point, "[m] A point of the rotation axis.");
     v.real_list("Rotation axis", w.rotation_axis, "[-] Direction of the rotation axis.");
     v.real("Angular velocity", w.angular_velocity, "[rad/s] Right-handed about Rotation axis.");

@@ -63,7 +63,7 @@ meshes::CadSurface tester_part(const SceneWallParameters& w,
   }
   const meshes::SampleFrame frame(sample, geometry.placement);
   meshes::CadSurface c;
-  if (w.source == "sample") {
+  if (wall_source_of(w).source == WallSource::sample) {
     const auto g = meshes::generate_sample(sample);
     c.mesh = frame.place_in_tester(g.surface);
     c.n_solids = 1;
@@ -87,12 +87,31 @@ meshes::CadSurface tester_part(const SceneWallParameters& w,
   return c;
 }
 
+/// The mesh primitive of a primitive source.
+meshes::PrimitiveKind primitive_kind(WallSource source) {
+  switch (source) {
+  case WallSource::plane:
+    return meshes::PrimitiveKind::plane;
+  case WallSource::disc:
+    return meshes::PrimitiveKind::disc;
+  case WallSource::cylinder:
+    return meshes::PrimitiveKind::cylinder;
+  case WallSource::cone:
+    return meshes::PrimitiveKind::cone;
+  case WallSource::box:
+    return meshes::PrimitiveKind::box;
+  default:
+    throw std::logic_error("primitive_kind: not a primitive source");
+  }
+}
+
 meshes::CadSurface surface_of(const SceneWallParameters& w, const meshes::BoundingBox& domain,
                               const meshes::GeometryParameters& geometry) {
   const std::string what = scene_wall_path(w);
-  if (w.source == "sample" || w.source == "holder")
+  const WallSourceEntry& source = wall_source_of(w);
+  if (source.tester_part)
     return tester_part(w, geometry, domain);
-  if (w.source == "file") {
+  if (source.source == WallSource::file) {
     meshes::CadImportOptions o{meshes::parse_length_unit(w.unit, what + "/Unit"), w.mesh_size,
                                domain};
     try {
@@ -103,11 +122,7 @@ meshes::CadSurface surface_of(const SceneWallParameters& w, const meshes::Boundi
     }
   }
   meshes::Primitive p;
-  p.kind = w.source == "plane"      ? meshes::PrimitiveKind::plane
-           : w.source == "disc"     ? meshes::PrimitiveKind::disc
-           : w.source == "cylinder" ? meshes::PrimitiveKind::cylinder
-           : w.source == "cone"     ? meshes::PrimitiveKind::cone
-                                    : meshes::PrimitiveKind::box;
+  p.kind = primitive_kind(source.source);
   p.origin = scene_vector(w.origin);
   p.edge_u = scene_vector(w.edge_u);
   p.edge_v = scene_vector(w.edge_v);
@@ -170,17 +185,21 @@ std::vector<SceneWall> build_scene_walls(const SceneParameters& scene,
                                          const meshes::GeometryParameters& geometry) {
   validate(scene);
   const meshes::Vec3 lo = scene_vector(scene.domain_min), hi = scene_vector(scene.domain_max);
-  const bool held = std::any_of(scene.walls.begin(), scene.walls.end(),
-                                [](const SceneWallParameters& w) { return w.source == "holder"; });
+  const bool held =
+      std::any_of(scene.walls.begin(), scene.walls.end(), [](const SceneWallParameters& w) {
+        return wall_source_of(w).source == WallSource::holder;
+      });
   std::vector<SceneWall> walls;
   for (const auto& w : scene.walls) {
     SceneWall wall{w, surface_of(w, {lo, hi}, geometry), {}};
-    if (held && w.source == "sample")
+    const WallSource source = wall_source_of(w).source;
+    if (held && source == WallSource::sample)
       wall.covered_labels = {meshes::label::side, meshes::label::bottom};
-    if (w.source == "holder")
+    if (source == WallSource::holder)
       wall.covered_labels = {meshes::label::pocket};
     const std::string what =
-        scene_wall_path(w) + (w.source == "file" ? " ('" + w.file + "', unit " + w.unit + ")" : "");
+        scene_wall_path(w) +
+        (source == WallSource::file ? " ('" + w.file + "', unit " + w.unit + ")" : "");
     if (w.wears) {
       const auto report = meshes::check_closed(wall.surface.mesh);
       if (!report.closed())
@@ -188,7 +207,7 @@ std::vector<SceneWall> build_scene_walls(const SceneParameters& scene,
             what + ": a wearing wall must be a closed solid; its surface has " +
             std::to_string(report.n_boundary_edges) + " boundary and " +
             std::to_string(report.n_nonmanifold_edges) + " non-manifold edges");
-      if (w.source != "sample") // the sample's labels carry their roles already
+      if (source != WallSource::sample) // the sample's labels carry their roles already
         label_part_surfaces(wall, scene_wall_path(w));
     }
     walls.push_back(std::move(wall));
@@ -203,15 +222,16 @@ std::optional<RevolutionSurface> revolution_surface(const SceneWallParameters& w
   const Vec3 axis = scene_vector(w.axis);
   s.axis_point = scene_vector(w.origin);
   s.axis = meshes::normalized(axis);
-  if (w.source == "disc") {
+  const WallSource source = wall_source_of(w).source;
+  if (source == WallSource::disc) {
     s.kind = RevolutionKind::annulus;
     s.height = 0;
     s.inner_radius = w.radius_inner;
     s.outer_radius = w.radius;
     return s;
   }
-  if ((w.source == "cylinder" || w.source == "cone") && !w.caps) {
-    const bool cone = w.source == "cone";
+  if (wall_source_of(w).revolution && !w.caps) { // a cylinder or a cone
+    const bool cone = source == WallSource::cone;
     s.kind = cone ? RevolutionKind::cone : RevolutionKind::cylinder;
     s.radius = w.radius;
     s.radius_top = cone ? w.radius_top : w.radius;
