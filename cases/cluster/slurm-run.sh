@@ -6,6 +6,7 @@
 #
 #     sbatch cases/cluster/slurm-run.sh                          # the plain sample
 #     CASE=cases/scaling-factor/convex-s1.prm sbatch cases/cluster/slurm-run.sh
+#     COMMAND=scene-run CASE=cases/chute/chute.prm sbatch cases/cluster/slurm-run.sh   # a scene
 #
 # Slurm sends SIGUSR1 to mpirun 5 minutes before the time limit (--signal=B:USR1@300); mpirun
 # passes it to the ranks, which stop at the same step, write their parts of the checkpoint and
@@ -21,6 +22,7 @@
 #SBATCH --output=wearsim-run-%j.log
 set -euo pipefail
 CASE=${CASE:-cases/scaling-factor/plain-s1.prm}
+COMMAND=${COMMAND:-run} # run: the tester's case; scene-run: a scene's
 export OMP_NUM_THREADS=${SLURM_CPUS_PER_TASK:-1}
 export OMP_PROC_BIND=close OMP_PLACES=cores
 # A folder holding this case's checkpoint continues; otherwise the run starts.
@@ -30,4 +32,4 @@ mode=
 # exec: mpirun receives Slurm's signal itself and passes it to the ranks.
 exec mpirun -np "${SLURM_NTASKS}" \
   --map-by "ppr:$((SLURM_NTASKS / SLURM_NNODES)):node:pe=${OMP_NUM_THREADS}" \
-  build/wearsim run $mode "$CASE"
+  build/wearsim "$COMMAND" $mode "$CASE"

@@ -14,49 +14,16 @@ and the seeds' spread (95 % interval of the mean). Wall time per run from the lo
 is not kept: the runs of 4 ranks share 2 cores.
 With --update-readme the table replaces the block between the README's markers.
 """
-import csv
-import math
 import os
 import re
 import sys
 
-T_FROM, T_TO = 0.7, 1.2 + 1e-3  # [s] the rows land within a time step of the interval
-T95 = {1: 12.706, 2: 4.303, 3: 3.182, 4: 2.776, 5: 2.571, 6: 2.447, 7: 2.365, 8: 2.306,
-       9: 2.262, 10: 2.228}
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, os.path.join(ROOT, "cases", "hopper"))
+from discharge import engine, mean_interval, rate  # noqa: E402
+
+T_FROM, T_TO = 0.7, 1.2  # [s]
 BEGIN, END = "<!-- ranks table: begin -->", "<!-- ranks table: end -->"
-
-
-def rate(series):
-    """[kg/s] slope of the outlet's mass over T_FROM <= t <= T_TO; None if the run is short."""
-    t, m = [], []
-    with open(series) as f:
-        for row in csv.DictReader(f):
-            time = float(row["time_s"])
-            if T_FROM - 1e-3 <= time <= T_TO:
-                t.append(time)
-                m.append(float(row["outlet_below_mass_kg"]))
-    if not t or t[-1] < 1.2 - 1e-3:
-        return None
-    tm, mm = sum(t) / len(t), sum(m) / len(m)
-    return sum((a - tm) * (b - mm) for a, b in zip(t, m)) / sum((a - tm) ** 2 for a in t)
-
-
-def engine(folder):
-    with open(os.path.join(folder, "parameters.prm")) as f:
-        for line in f:
-            if line.startswith("# Engine version:"):
-                return line.split(":", 1)[1].strip()
-    return "unknown"
-
-
-def mean_interval(x):
-    n = len(x)
-    m = sum(x) / n
-    if n < 2:
-        return m, float("nan")
-    s = math.sqrt(sum((v - m) ** 2 for v in x) / (n - 1))
-    return m, T95.get(n - 1, 1.96) * s / math.sqrt(n)
 
 
 def main():
@@ -68,7 +35,7 @@ def main():
         series = os.path.join(out, name, "scene_series.csv")
         if not m or not os.path.exists(series):
             continue
-        w = rate(series)
+        w = rate(series, T_FROM, T_TO)
         if w is not None:
             runs[(int(m.group(1)), int(m.group(2)))] = w
             engines.add(engine(os.path.join(out, name)))

@@ -9,6 +9,13 @@
 // runs (t with n_runs - 1 dof). One run per side: batch means over that run's revolutions
 // (coupling/analysis/interval.cc states the batch-size rule). Figures a run has once
 // (totals, per stage) get an interval across runs, and none from a single run.
+//
+// `--part <name>`: the runs are scenes (`wearsim scene-run`) and the figures those of their
+// wearing part <name> (parts/<name>/history.h5): the wear per stage (the wear-law volume of
+// the stage's DEM windows, unamplified) from the first staged stage on, or from --from, in
+// place of the wear per revolution after steady state; a scene has no steady-state judgement
+// of its own, so its first staged stage (after the dem-only stages that fill the equipment)
+// stands for it.
 #include "coupling/app/compare_command.h"
 
 #include "coupling/analysis/interval.h"
@@ -32,6 +39,8 @@ const double no_interval = std::numeric_limits<double>::quiet_NaN();
 
 struct Run {
   std::string dir;
+  std::string kind; ///< "plain", "convex" or "part 'liner'": what a side may not mix
+  std::string unit; ///< "revolution" (the tester's runs) or "stage" (a scene's part)
   bool convex = false;
   std::uint64_t seed = 0;
   int steady_revolution = 0;                ///< first steady revolution (0: never steady)
@@ -65,12 +74,70 @@ int steady_revolution(const std::string& path) {
   throw std::runtime_error("'" + path + "' has no column steady_revolution");
 }
 
-Run load(const std::string& dir, const std::string& side, int from) {
+// The stages of a scene's wearing part `part` (parts/<part>/history.h5).
+Run load_part(const std::string& dir, const std::string& side, int from, const std::string& part,
+              const CaseParameters& p) {
   Run r;
   r.dir = dir;
+  r.kind = "part '" + part + "'";
+  r.unit = "stage";
+  r.seed = p.dem.seed;
+  const std::string folder = dir + "/parts/" + part;
+  if (!std::filesystem::exists(folder + "/history.h5")) {
+    std::string parts;
+    for (const auto& w : p.scene.walls)
+      if (w.wears)
+        parts += (parts.empty() ? "" : ", ") + w.name;
+    throw std::runtime_error("side " + side + ": run '" + dir + "' has no wearing part '" + part +
+                             "' with stages (--part; its case's wearing walls: " +
+                             (parts.empty() ? "none" : parts) + ")");
+  }
+  const Hdf5Reader h5(folder + "/history.h5");
+  const auto stage = h5.doubles("/stages/stage");
+  const auto scheme = h5.doubles("/stages/scheme");
+  const auto wear = h5.doubles("/stages/dem_wear_volume_m3");
+  r.amplification = h5.doubles("/stages/amplification");
+  r.von_mises = h5.doubles("/stages/max_von_mises_ball_Pa");
+  r.safety = h5.doubles("/stages/safety_factor");
+  r.applied = h5.doubles("/stages/cumulative_applied_m3");
+  if (stage.empty())
+    throw std::runtime_error("side " + side + ": part '" + part + "' of run '" + dir +
+                             "' has no finished stage yet");
+  r.n_revolutions = int(stage.size());
+  for (std::size_t k = 0; k < stage.size() && r.first == 0; ++k)
+    if (int(scheme[k]) == int(Scheme::staged))
+      r.first = int(stage[k]);
+  if (from > 0)
+    r.first = from;
+  if (r.first == 0)
+    throw std::runtime_error("side " + side + ": part '" + part + "' of run '" + dir +
+                             "' has no staged stage; name the first stage to average with --from");
+  for (std::size_t k = 0; k < stage.size(); ++k) {
+    r.total_wear += wear[k];
+    if (stage[k] >= r.first)
+      r.wear.push_back(wear[k]);
+  }
+  if (r.wear.empty())
+    throw std::runtime_error("side " + side + ": part '" + part + "' of run '" + dir +
+                             "' has no stage from " + std::to_string(r.first) + " on (it has " +
+                             std::to_string(r.n_revolutions) + " stages)");
+  return r;
+}
+
+Run load(const std::string& dir, const std::string& side, int from, const std::string& part) {
   std::ostringstream warnings;
   const CaseParameters p = read_case(dir + "/parameters.prm", warnings);
+  if (!part.empty())
+    return load_part(dir, side, from, part, p);
+  if (!p.scene.walls.empty())
+    throw std::runtime_error("side " + side + ": run '" + dir +
+                             "' is a scene's (`wearsim scene-run`); name its wearing part with "
+                             "--part <wall name>");
+  Run r;
+  r.dir = dir;
+  r.unit = "revolution";
   r.convex = p.geometry.sample.convex;
+  r.kind = r.convex ? "convex" : "plain";
   r.seed = p.dem.seed;
   const Hdf5Reader h5(dir + "/history.h5");
   const auto revolution = h5.doubles("/revolutions/revolution");
@@ -110,20 +177,20 @@ Run load(const std::string& dir, const std::string& side, int from) {
   return r;
 }
 
-Side load_side(const std::vector<std::string>& dirs, const std::string& label, int from) {
+Side load_side(const std::vector<std::string>& dirs, const std::string& label, int from,
+               const std::string& part) {
   if (dirs.empty())
     throw std::invalid_argument("side " + label + " names no run folder");
   Side s;
   s.label = label;
   for (const auto& d : dirs)
-    s.runs.push_back(load(d, label, from));
+    s.runs.push_back(load(d, label, from, part));
   const Run& first = s.runs.front();
   for (std::size_t k = 1; k < s.runs.size(); ++k) {
     const Run& r = s.runs[k];
-    const auto kind = [](const Run& x) { return x.convex ? "convex" : "plain"; };
-    if (r.convex != first.convex)
+    if (r.kind != first.kind)
       throw std::invalid_argument("side " + label + " mixes sample kinds: '" + first.dir + "' is " +
-                                  kind(first) + ", '" + r.dir + "' is " + kind(r) +
+                                  first.kind + ", '" + r.dir + "' is " + r.kind +
                                   " (Geometry/Sample/Type)");
     if (r.columns.size() != first.columns.size())
       throw std::invalid_argument("side " + label + ": '" + first.dir + "' has " +
@@ -137,9 +204,9 @@ Side load_side(const std::vector<std::string>& dirs, const std::string& label, i
   }
   if (s.runs.size() == 1 && first.wear.size() < 2)
     throw std::invalid_argument("side " + label + ": one run with " +
-                                std::to_string(first.wear.size()) +
-                                " revolution after steady state gives no interval; run more "
-                                "revolutions, or give more runs (seeds) for this side");
+                                std::to_string(first.wear.size()) + " " + first.unit +
+                                " averaged gives no interval; run more " + first.unit +
+                                "s, or give more runs (seeds) for this side");
   return s;
 }
 
@@ -192,23 +259,31 @@ std::string format_reduction(const Estimate& a, const Estimate& b) {
 
 void describe(const Side& s, const Estimate& wear, std::ostream& out) {
   const Run& first = s.runs.front();
-  out << s.label << " (" << (first.convex ? "convex" : "plain") << "): ";
+  const char* unit = first.unit.c_str();
+  out << s.label << " (" << first.kind << "): ";
   char buf[256];
   if (s.runs.size() == 1) {
     char tau[64];
-    std::snprintf(tau, sizeof tau, "autocorrelation time %.2g revolutions", wear.tau);
+    std::snprintf(tau, sizeof tau, "autocorrelation time %.2g %ss", wear.tau, unit);
     const std::string correlation = wear.tau >= 1 ? tau : "no positive autocorrelation";
     std::snprintf(buf, sizeof buf,
-                  "interval from one run's %d revolutions, batch means (wear per revolution: "
+                  "interval from one run's %d %ss, batch means (wear per %s: "
                   "%d batches of %d, %s)\n",
-                  wear.n_values, wear.n_batches, wear.batch_size, correlation.c_str());
+                  wear.n_values, unit, unit, wear.n_batches, wear.batch_size, correlation.c_str());
     out << buf;
   } else {
-    out << "interval across " << s.runs.size()
-        << " runs (each run's mean over its revolutions after steady state; t with "
+    out << "interval across " << s.runs.size() << " runs (each run's mean over its " << unit << "s "
+        << (first.unit == "stage" ? "averaged" : "after steady state") << "; t with "
         << s.runs.size() - 1 << " dof)\n";
   }
   for (const auto& r : s.runs) {
+    if (r.unit == "stage") {
+      std::snprintf(buf, sizeof buf, "  %s: stages %d-%d of %d (%s)\n", r.dir.c_str(), r.first,
+                    r.n_revolutions, r.n_revolutions,
+                    r.first > 0 ? "from the first staged stage, or --from" : "");
+      out << buf;
+      continue;
+    }
     std::string steady = r.steady_revolution > 0
                              ? "steady from revolution " + std::to_string(r.steady_revolution)
                              : "never steady";
@@ -223,11 +298,13 @@ void describe(const Side& s, const Estimate& wear, std::ostream& out) {
 struct CompareArguments {
   std::vector<std::string> a, b;
   int from = 0;
+  std::string part; ///< a scene's wearing part (--part); empty: the tester's runs
 };
 
 CompareArguments compare_arguments(const std::vector<std::string>& args) {
-  const std::string usage = "usage: wearsim compare [--from <revolution>] <runA1> [<runA2> ...] "
-                            "-- <runB1> [<runB2> ...], or wearsim compare <runA> <runB>";
+  const std::string usage = "usage: wearsim compare [--from <revolution or stage>] [--part "
+                            "<wall name>] <runA1> [<runA2> ...] -- <runB1> [<runB2> ...], or "
+                            "wearsim compare [options] <runA> <runB>";
   CompareArguments c;
   std::vector<std::string> folders;
   bool separator = false;
@@ -241,7 +318,11 @@ CompareArguments compare_arguments(const std::vector<std::string>& args) {
         c.from = 0;
       }
       if (c.from <= 0)
-        throw std::invalid_argument("--from '" + args[k] + "' is not a revolution >= 1");
+        throw std::invalid_argument("--from '" + args[k] + "' is not a revolution or stage >= 1");
+    } else if (args[k] == "--part") {
+      if (k + 1 >= args.size() || args[k + 1].rfind("--", 0) == 0)
+        throw std::invalid_argument("--part needs the name of a scene's wearing wall; " + usage);
+      c.part = args[++k];
     } else if (args[k] == "--") {
       if (separator)
         throw std::invalid_argument("'--' given twice; " + usage);
@@ -285,7 +366,8 @@ int run_compare_command(const std::vector<std::string>& args, std::ostream& out)
       if (!std::filesystem::is_directory(dir))
         throw std::runtime_error("side " + std::string(side == &c.a ? "A" : "B") +
                                  ": run folder '" + dir + "' does not exist");
-  const Side a = load_side(c.a, "A", c.from), b = load_side(c.b, "B", c.from);
+  const Side a = load_side(c.a, "A", c.from, c.part), b = load_side(c.b, "B", c.from, c.part);
+  const std::string unit = a.runs.front().unit;
   const auto wear = [](const Run& r) { return r.wear; };
   const Estimate wear_a = per_revolution(a, wear), wear_b = per_revolution(b, wear);
   describe(a, wear_a, out);
@@ -302,7 +384,8 @@ int run_compare_command(const std::vector<std::string>& args, std::ostream& out)
   };
   std::snprintf(line, sizeof line, "%-38s %-22s %-22s %s\n", "", "A", "B", "reduction");
   out << line;
-  out << "per revolution after steady state\n";
+  out << (unit == "stage" ? "per stage of part '" + c.part + "' (the wear law's DEM volume)\n"
+                          : std::string("per revolution after steady state\n"));
   row("wear [mm^3]", wear_a, wear_b, 1e9, true);
   for (std::size_t k = 0; k < std::min(a.runs[0].columns.size(), b.runs[0].columns.size()); ++k) {
     const auto column = [k](const Run& r) { return r.columns[k]; };
@@ -310,7 +393,7 @@ int run_compare_command(const std::vector<std::string>& args, std::ostream& out)
         per_revolution(b, column), 1e9, true);
   }
   out << "whole runs\n";
-  row("DEM wear, all revolutions [mm^3]", per_run(a, [](const Run& r) { return r.total_wear; }),
+  row("DEM wear, all " + unit + "s [mm^3]", per_run(a, [](const Run& r) { return r.total_wear; }),
       per_run(b, [](const Run& r) { return r.total_wear; }), 1e9, true);
   const auto all_have = [](const Side& s, std::size_t k) {
     return std::all_of(s.runs.begin(), s.runs.end(),
@@ -332,8 +415,8 @@ int run_compare_command(const std::vector<std::string>& args, std::ostream& out)
     for (const auto& r : s->runs)
       different_counts |= r.n_revolutions != a.runs[0].n_revolutions;
   if (different_counts)
-    out << "note: the runs have different revolution counts; whole-run totals are not like for "
-           "like\n";
+    out << "note: the runs have different " << unit
+        << " counts; whole-run totals are not like for like\n";
   for (std::size_t k = 0; k < std::max(n_stages_a, n_stages_b); ++k) {
     if (!all_have(a, k) || !all_have(b, k)) {
       out << "stage " << k + 1 << ": not in every run\n";
@@ -359,6 +442,8 @@ int run_compare_command(const std::vector<std::string>& args, std::ostream& out)
     row(stage + "safety factor", per_run(a, at(&Run::safety)), per_run(b, at(&Run::safety)), 1,
         false);
   }
+  if (unit == "stage")
+    return 0; // plot_run.py draws the tester's runs
   out << "plot: /usr/bin/python3 coupling/output/plot_run.py --compare "
       << (c.from > 0 ? "--from " + std::to_string(c.from) + " " : "") << joined(c.a) << " -- "
       << joined(c.b) << "\n";

@@ -4,6 +4,8 @@
 // rules are whole subsections.
 #include "coupling/parameters/case_scope.h"
 
+#include "dem/scene/wall_catalogue.h"
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -15,9 +17,10 @@ bool starts_with(const std::string& s, const std::string& prefix) {
   return s.compare(0, prefix.size(), prefix) == 0;
 }
 
-bool has_wall_source(const CaseParameters& p, const std::string& source) {
-  return std::any_of(p.scene.walls.begin(), p.scene.walls.end(),
-                     [&](const dem::SceneWallParameters& w) { return w.source == source; });
+bool has_wall_source(const CaseParameters& p, dem::WallSource source) {
+  return std::any_of(
+      p.scene.walls.begin(), p.scene.walls.end(),
+      [&](const dem::SceneWallParameters& w) { return dem::wall_source_of(w).source == source; });
 }
 
 std::vector<std::string> tester_dem_paths() {
@@ -50,7 +53,8 @@ std::string unused_because(const CaseParameters& p, const std::string& entry) {
            "and " +
            is_scene;
   if (starts_with(entry, "Geometry/")) {
-    const bool sample = has_wall_source(p, "sample"), holder = has_wall_source(p, "holder");
+    const bool sample = has_wall_source(p, dem::WallSource::sample),
+               holder = has_wall_source(p, dem::WallSource::holder);
     if ((sample || holder) &&
         (starts_with(entry, "Geometry/Sample/") || starts_with(entry, "Geometry/Placement/")))
       return "";

@@ -149,7 +149,10 @@ std::string SceneRun::rank_layout() const {
   if (!link)
     return s.str();
   const bool angle = rank_slab_axis(scene_) == "angle";
-  s << ": " << scene_.rank_slabs << " slabs along " << rank_slab_axis(scene_) << " at";
+  s << ": " << scene_.rank_slabs << " slabs along " << rank_slab_axis(scene_);
+  if (!engine_ready() && scene_.rank_slabs == "balanced")
+    return s.str() + ", cut when the first particles arrive";
+  s << " at";
   for (const double b : slabs_.cuts().bound)
     s << " " << (angle ? b * 180 / pi : b);
   s << (angle ? " deg" : " m");

@@ -6,10 +6,14 @@
 // - two runs per side (two seeds): the interval is across runs, and two sides drawn around
 //   the same mean are called not significant at 95 %;
 // - bad input (missing folder, no steady state, mixed sample kinds, a repeated seed, too few
-//   revolutions, wrong syntax) stops with a message naming the side, folder and parameter.
+//   revolutions, wrong syntax) stops with a message naming the side, folder and parameter;
+// - scene runs (`--part`): a wearing part's wear per stage from its first staged stage, two
+//   seeds a side, the interval across runs of each run's mean; a scene run without --part, a
+//   part the run does not have, and --part without a name are refused.
 #include "coupling/analysis/interval.h"
 #include "coupling/app/compare_command.h"
 #include "coupling/output/run_output.h"
+#include "plate_scene.h"
 #include "small_tester.h"
 
 #include <catch2/catch.hpp>
@@ -187,9 +191,67 @@ TEST_CASE("wearsim compare: bad input names the side, the folder and what is wro
   CHECK_THAT(error_of({"compare_ok", "compare_same_seed", "--", "compare_ok2"}),
              Catch::Contains("same DEM/Seed (31)"));
   CHECK_THAT(error_of({"compare_ok", "compare_late_steady"}),
-             Catch::Contains("one run with 1 revolution after steady state gives no interval"));
+             Catch::Contains("one run with 1 revolution averaged gives no interval"));
   CHECK_THAT(error_of({"compare_ok", "compare_ok2", "compare_convex_side"}),
              Catch::Contains("'--' between the sides"));
   CHECK_THAT(error_of({"compare_ok", "--"}), Catch::Contains("side B names no run folder"));
   CHECK_THAT(error_of({"--from", "x", "compare_ok", "compare_ok2"}), Catch::Contains("--from 'x'"));
+}
+
+namespace {
+/// A scene run of the plate case (plate_scene.h) with seed `seed`: its part 'plate' has a
+/// dem-only stage and 12 staged ones whose wear is `mean` (1 + 0.1 x AR(1)).
+std::vector<double> write_scene_run(const std::string& dir, std::uint64_t seed, double mean) {
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir + "/parts/plate");
+  CaseParameters p = read_text(dir + ".prm", plate_case(dir));
+  p.dem.seed = seed;
+  write_resolved_parameters(p, dir + "/parameters.prm");
+  const auto wear = wear_series({false, seed, mean, 13, 1});
+  std::vector<StageRecord> stages(13);
+  for (std::size_t k = 0; k < stages.size(); ++k) {
+    stages[k].stage = int(k) + 1;
+    stages[k].scheme = k == 0 ? Scheme::dem_only : Scheme::staged;
+    stages[k].dem_wear_volume = k == 0 ? 5 * mean : wear[k];
+    stages[k].max_von_mises_ball = k == 0 ? 0 : 1e6;
+    stages[k].cumulative_applied = double(k) * 1e-9;
+  }
+  RunOutput(dir + "/parts/plate").write_tables({}, stages, 0, {});
+  return {wear.begin() + 1, wear.end()}; // the staged stages
+}
+} // namespace
+
+TEST_CASE("wearsim compare --part: a scene's wearing part, per stage from its first staged one",
+          "[coupling][compare]") {
+  const auto mean = [](const std::vector<double>& v) {
+    double s = 0;
+    for (double x : v)
+      s += x;
+    return s / double(v.size());
+  };
+  const std::vector<double> a1 = write_scene_run("compare_scene_a1", 41, 1e-9),
+                            a2 = write_scene_run("compare_scene_a2", 42, 1e-9),
+                            b1 = write_scene_run("compare_scene_b1", 43, 0.5e-9),
+                            b2 = write_scene_run("compare_scene_b2", 44, 0.5e-9);
+  const std::string table = compare({"--part", "plate", "compare_scene_a1", "compare_scene_a2",
+                                     "--", "compare_scene_b1", "compare_scene_b2"});
+  INFO(table);
+  CHECK(table.find("A (part 'plate'): interval across 2 runs") != std::string::npos);
+  CHECK(table.find("compare_scene_a1: stages 2-13 of 13") != std::string::npos);
+  CHECK(table.find("per stage of part 'plate'") != std::string::npos);
+  // The dem-only stage (5 times the wear) is left out: the figures are the staged stages'.
+  const Estimate a = independent_mean({mean(a1), mean(a2)}),
+                 b = independent_mean({mean(b1), mean(b2)});
+  CHECK(table.find(mm3(a)) != std::string::npos);
+  CHECK(table.find(mm3(b)) != std::string::npos);
+  const Estimate r = reduction(a, b);
+  CHECK(std::abs(r.mean - 0.5) < 0.1);
+  CHECK(table.find("plot:") == std::string::npos);
+  // Refusals naming what is wrong.
+  CHECK_THAT(error_of({"compare_scene_a1", "compare_scene_b1"}),
+             Catch::Contains("is a scene's") && Catch::Contains("--part"));
+  CHECK_THAT(error_of({"--part", "skirt", "compare_scene_a1", "compare_scene_b1"}),
+             Catch::Contains("no wearing part 'skirt'") && Catch::Contains("wearing walls: plate"));
+  CHECK_THAT(error_of({"compare_scene_a1", "compare_scene_b1", "--part"}),
+             Catch::Contains("--part needs the name"));
 }
