@@ -115,8 +115,6 @@ private:
   /// Where this rank's FEM writes its meshes: Output/Directory/mesh on rank 0, a scratch
   /// folder on the others (each rank runs the same FEM stage on its own copy of the sample).
   std::string mesh_directory() const;
-  /// Writes c (over ranks: every rank's DEM part gathered to rank 0, which writes).
-  void write(const Checkpoint& c) const;
 
   // what the run tells the user
   void print_header() const;

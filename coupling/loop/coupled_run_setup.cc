@@ -76,16 +76,6 @@ std::string CoupledRun::mesh_directory() const {
   return writer() ? p_.output.directory + "/mesh" : ranks_.scratch();
 }
 
-void CoupledRun::write(const Checkpoint& c) const {
-  if (!options_.ranks) {
-    write_checkpoint(checkpoint_path(), c);
-    return;
-  }
-  const std::vector<dem::SystemState> parts = dem::gather_rank_states(c.dem, *options_.ranks);
-  if (writer())
-    write_checkpoint(checkpoint_path(), c, parts);
-}
-
 const meshes::SurfaceMesh& CoupledRun::sample_surface() const {
   return sample_ ? sample_->surface() : initial_surface_;
 }
@@ -185,8 +175,7 @@ meshes::SurfaceMesh CoupledRun::generate_initial_surface() const {
 }
 
 std::optional<OpenStage> CoupledRun::resume() {
-  const dem::RankLink* ranks = options_.ranks;
-  const DemPart part{ranks ? ranks->rank() : 0, ranks ? ranks->n_ranks() : 1};
+  const DemPart part = ranks_.dem_part();
   const Checkpoint c = read_latest_checkpoint(checkpoint_path(), log_, part);
   require_same_case(c, parameters_text_, checkpoint_path());
   if (c.dem_ranks != part.n_ranks)
@@ -245,7 +234,7 @@ void CoupledRun::checkpoint() {
     return; // the node-moving method's state is not checkpointed; it runs in one go
   const Checkpoint c = capture();
   if (p_.coupling.checkpoints)
-    write(c);
+    ranks_.write(checkpoint_path(), c);
   restore(c);
 }
 
@@ -256,7 +245,7 @@ void CoupledRun::checkpoint_inside(const dem::WallLoads& loads, int revolutions_
     throw std::logic_error("CoupledRun: an in-stage checkpoint outside a revolution");
   Checkpoint c = capture();
   c.open_stage = open_stage(loads, revolutions_done, dem_seconds, *revolution);
-  write(c);
+  ranks_.write(checkpoint_path(), c);
 }
 
 void CoupledRun::restore(const Checkpoint& c) {

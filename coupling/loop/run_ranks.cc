@@ -4,6 +4,7 @@
 // rank has the same h.
 #include "coupling/loop/run_ranks.h"
 
+#include "dem/engine/rank_states.h"
 #include "meshes/atomic_file.h"
 
 #include <unistd.h>
@@ -47,6 +48,16 @@ bool RunRanks::any(bool mine) const {
   if (link_)
     link_->max_over_ranks(&v, 1);
   return v != 0;
+}
+
+void RunRanks::write(const std::string& path, const Checkpoint& c) const {
+  if (!link_) {
+    write_checkpoint(path, c);
+    return;
+  }
+  const std::vector<dem::SystemState> parts = dem::gather_rank_states(c.dem, *link_);
+  if (writer())
+    write_checkpoint(path, c, parts);
 }
 
 void RunRanks::require_same(const meshes::SurfaceMesh& surface, const std::string& what) const {

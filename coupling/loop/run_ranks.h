@@ -4,6 +4,7 @@
 // prints, the others keep what their FEM writes in a scratch folder; decisions (a stop, a
 // checkpoint) are agreed, and every rank's worn surfaces must be the same bit for bit.
 #include "coupling/loop/stop_signals.h"
+#include "coupling/output/checkpoint.h"
 #include "dem/engine/rank_link.h"
 #include "meshes/surface_mesh.h"
 
@@ -33,6 +34,11 @@ public:
   int agreed_signal(const StopSignals& signals) const;
   /// True on every rank when `mine` is true on any.
   bool any(bool mine) const;
+  /// Which part of a checkpoint's DEM state this rank reads (read_checkpoint).
+  DemPart dem_part() const { return {link_ ? link_->rank() : 0, link_ ? link_->n_ranks() : 1}; }
+  /// Writes checkpoint c to `path`: over ranks every rank's DEM state is gathered to rank 0,
+  /// which writes them side by side (every rank calls it together).
+  void write(const std::string& path, const Checkpoint& c) const;
   /// Throws when `surface` is not the same, bit for bit, on every rank; `what` names it and
   /// when (e.g. "the sample surfaces ... after the FEM part of stage 3").
   void require_same(const meshes::SurfaceMesh& surface, const std::string& what) const;

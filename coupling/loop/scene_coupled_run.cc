@@ -27,7 +27,6 @@
 #include "coupling/loop/scene_coupled_run.h"
 
 #include "coupling/output/progress_line.h"
-#include "dem/engine/rank_states.h"
 #include "dem/scene/wall_catalogue.h"
 
 #include <algorithm>
@@ -91,15 +90,16 @@ int SceneCoupledRun::run() {
     StageRecord r = begin_stage(k);
     const auto loads = run_dem(r, std::exchange(open, {}), signals);
     if (!loads) {
-      log_ << "stopped by " << StopSignals::name(ranks_.agreed_signal(signals)) << " inside stage "
-           << r.stage << " at t = " << scene_->time() << " s";
+      const int signal = ranks_.agreed_signal(signals);
+      log_ << "stopped by " << StopSignals::name(signal) << " inside stage " << r.stage
+           << " at t = " << scene_->time() << " s";
       if (scene_->system().n_rebuilds() > 0 && p_.coupling.checkpoints)
         log_ << " after a checkpoint; continue with wearsim scene-run --resume " << p_.case_file
              << "\n";
       else // nothing was checkpointed: no particle yet, or checkpoints off
         log_ << " without a checkpoint (no particle yet, or Coupling/Checkpoints off); run it "
                 "again with --overwrite\n";
-      return 128 + ranks_.agreed_signal(signals);
+      return 128 + signal;
     }
     run_parts(r, *loads);
     n_stages_done_ = r.stage;
@@ -148,8 +148,7 @@ std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::setup() {
 }
 
 std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::resume() {
-  const dem::RankLink* ranks = options_.ranks;
-  const DemPart part{ranks ? ranks->rank() : 0, ranks ? ranks->n_ranks() : 1};
+  const DemPart part = ranks_.dem_part();
   const Checkpoint c = read_latest_checkpoint(checkpoint_path(), log_, part);
   require_same_case(c, parameters_text_, checkpoint_path());
   if (!c.scene)
@@ -182,7 +181,7 @@ std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::resume() {
     log_ << "the checkpoint was written on " << c.dem_ranks << " rank(s), this run has "
          << part.n_ranks << ": the scene is decomposed again (it continues, not bit for bit as "
          << "on " << c.dem_ranks << ")" << std::endl;
-  if (ranks && ranks->n_ranks() > 1)
+  if (part.n_ranks > 1)
     log_ << "scene: " << scene_->rank_layout() << "; rank 0 writes" << std::endl;
   log_ << "resumed after stage " << n_stages_done_ << " of " << plan_.size() << " at t = " << s.time
        << " s (" << s.n_records << " records)" << std::endl;
@@ -299,13 +298,7 @@ void SceneCoupledRun::checkpoint(const OpenSceneStage& open) {
   for (std::size_t i = 0; i < parts_.size(); ++i)
     s.parts.push_back(parts_[i].state(open.loads[i]));
   c.scene = s;
-  if (dem::RankLink* link = ranks_.link()) {
-    const std::vector<dem::SystemState> dem_parts = dem::gather_rank_states(c.dem, *link);
-    if (ranks_.writer())
-      write_checkpoint(checkpoint_path(), c, dem_parts);
-  } else {
-    write_checkpoint(checkpoint_path(), c);
-  }
+  ranks_.write(checkpoint_path(), c);
   if (!replaced_.empty()) { // the run --overwrite replaced goes once this one can be resumed
     std::filesystem::remove_all(replaced_);
     log_ << "the replaced run in '" << replaced_ << "' is deleted (this run has its first "

@@ -238,4 +238,25 @@ SystemState merge_rank_states(const std::vector<SystemState>& parts) {
   return m;
 }
 
+SystemState whole_state_on_every_rank(const SystemState& mine, RankLink& link) {
+  const std::vector<SystemState> parts = gather_rank_states(mine, link);
+  std::vector<double> packed, all;
+  if (link.rank() == 0)
+    packed = pack_state(merge_rank_states(parts));
+  link.gather_in_rank_order(packed, all);
+  return unpack_state(all.data(), all.size());
+}
+
+void add_state_particles(Particles& p, const SystemState& s, bool own_part, double density) {
+  const auto& at = own_part && s.reference_position.size() == s.position.size()
+                       ? s.reference_position
+                       : s.position;
+  for (std::size_t i = 0; i < s.position.size(); ++i) {
+    p.add(at[i], s.velocity[i], s.radius[i], density, s.material[i]);
+    p.mass.back() = s.mass[i];
+    p.inertia.back() = s.inertia[i];
+    p.id.back() = s.id[i];
+  }
+}
+
 } // namespace wear::dem

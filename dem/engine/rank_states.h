@@ -38,4 +38,15 @@ SystemState merge_rank_states(const std::vector<SystemState>& parts);
 /// written by that rank of that many, with its continuation part.
 bool continues_exactly(const SystemState& s, int rank, int n_ranks);
 
+/// The whole bed of every rank's `mine` on every rank: the parts gathered to rank 0, merged
+/// there (merge_rank_states) and sent to all. Every rank calls it together.
+SystemState whole_state_on_every_rank(const SystemState& mine, RankLink& link);
+
+/// Adds the real particles of `s` to `p` (before System::setup; resume_state or import_state
+/// then takes the rest of the state), with their masses, inertias and ids: where the state's
+/// last rebuild had them when `own_part` (a rank's part taken back on as many ranks, so that
+/// the set-up moves none), else where they are. `density` [kg/m^3] only seeds
+/// Particles::add.
+void add_state_particles(Particles& p, const SystemState& s, bool own_part, double density);
+
 } // namespace wear::dem

@@ -146,23 +146,24 @@ void RevolutionWall::check_surface() const {
           "the angular range must be non-empty and at most 2 pi [rad]");
 }
 
-Vec3 RevolutionWall::closest_on_cylinder(const Vec3& c) const {
+RevolutionWall::Meridian RevolutionWall::meridian(const Vec3& c) const {
   const auto& s = surface_;
   const Vec3 d = c - s.axis_point;
   const double along = dot(d, s.axis);
   const Vec3 q = d - s.axis * along;
   const double rho = norm(q);
-  const Vec3 u = rho > 0 ? q / rho : e1_;
+  return {along, rho, rho > 0 ? q / rho : e1_};
+}
+
+Vec3 RevolutionWall::closest_on_cylinder(const Vec3& c) const {
+  const auto& s = surface_;
+  const auto [along, rho, u] = meridian(c);
   return s.axis_point + s.axis * std::clamp(along, s.axial_min, s.axial_max) + u * s.radius;
 }
 
 Vec3 RevolutionWall::closest_on_cone(const Vec3& c) const {
   const auto& s = surface_;
-  const Vec3 d = c - s.axis_point;
-  const double along = dot(d, s.axis);
-  const Vec3 q = d - s.axis * along;
-  const double rho = norm(q);
-  const Vec3 u = rho > 0 ? q / rho : e1_;
+  const auto [along, rho, u] = meridian(c);
   const double dr = s.radius_top - s.radius, ds = s.axial_max - s.axial_min;
   const double t = std::clamp(
       ((rho - s.radius) * dr + (along - s.axial_min) * ds) / (dr * dr + ds * ds), 0.0, 1.0);

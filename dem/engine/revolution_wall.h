@@ -103,6 +103,13 @@ private:
   bool wide_ = false;                          ///< the angular range spans more than pi
   double search_ = 0;                          ///< [m] reach of the accounting grid
   std::shared_ptr<const MeshWall> accounting_; ///< immutable, shared by copies
+  /// Point c in the meridional half-plane of the axis: its axial coordinate [m], its distance
+  /// from the axis [m] and the unit radial direction (e1 on the axis).
+  struct Meridian {
+    double along, rho;
+    Vec3 radial;
+  };
+  Meridian meridian(const Vec3& c) const;
   Vec3 closest_on_cylinder(const Vec3& c) const;
   Vec3 closest_on_annulus(const Vec3& c) const;
   Vec3 closest_on_cone(const Vec3& c) const;

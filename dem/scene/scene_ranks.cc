@@ -126,14 +126,8 @@ std::unique_ptr<SceneRun> SceneRun::rebalanced() const {
   RankLink* link = rank_link();
   if (!link || !engine_ready())
     throw std::logic_error("SceneRun::rebalanced: a scene over ranks with its engine set up");
-  // The whole bed on every rank: the parts gathered to rank 0, merged there, and sent on.
   SceneRunState whole = state();
-  const std::vector<SystemState> parts = gather_rank_states(whole.system, *link);
-  std::vector<double> packed, all;
-  if (link->rank() == 0)
-    packed = pack_state(merge_rank_states(parts));
-  link->gather_in_rank_order(packed, all);
-  whole.system = unpack_state(all.data(), all.size());
+  whole.system = whole_state_on_every_rank(whole.system, *link);
   whole.rank_bounds.clear();
   auto next = std::make_unique<SceneRun>(scene_, dem_, walls_);
   next->set_rank_link(link);

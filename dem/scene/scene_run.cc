@@ -332,17 +332,7 @@ void SceneRun::resume(const SceneRunState& s) {
     const int rank = link ? link->rank() : 0, n_ranks = link ? link->n_ranks() : 1;
     const bool exact = continues_exactly(s.system, rank, n_ranks);
     const bool own_part = link && exact;
-    const auto& x = own_part && s.system.reference_position.size() == s.system.position.size()
-                        ? s.system.reference_position
-                        : s.system.position;
-    auto& p = system_.particles;
-    for (std::size_t i = 0; i < s.system.position.size(); ++i) {
-      p.add(x[i], s.system.velocity[i], s.system.radius[i], dem_.particle.density,
-            s.system.material[i]);
-      p.mass.back() = s.system.mass[i];
-      p.inertia.back() = s.system.inertia[i];
-      p.id.back() = s.system.id[i];
-    }
+    add_state_particles(system_.particles, s.system, own_part, dem_.particle.density);
     system_.settings.start_time = s.system.time;
     if (own_part) {
       if (s.rank_bounds.size() != std::size_t(n_ranks) + 1)

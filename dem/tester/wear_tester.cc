@@ -28,8 +28,8 @@
 // every rank, so that every rank holds the same records.
 #include "dem/tester/wear_tester.h"
 
-#include "meshes/constants.h"
 #include "dem/engine/rank_states.h"
+#include "meshes/constants.h"
 
 #include "meshes/sample_frame.h"
 #include "meshes/sample_generator.h"
@@ -469,17 +469,7 @@ WearTester::PushReport WearTester::set_sample_surface(const meshes::SurfaceMesh&
 void WearTester::add_particles_of(const SystemState& state) {
   if (system_.particles.n_real > 0)
     return;
-  auto& p = system_.particles;
-  const bool own_part = state.n_ranks > 1;
-  const auto& at = own_part && state.reference_position.size() == state.position.size()
-                       ? state.reference_position
-                       : state.position;
-  for (std::size_t i = 0; i < state.position.size(); ++i) {
-    p.add(at[i], state.velocity[i], state.radius[i], dem_.particle.density, state.material[i]);
-    p.mass.back() = state.mass[i];
-    p.inertia.back() = state.inertia[i];
-    p.id.back() = state.id[i];
-  }
+  add_state_particles(system_.particles, state, state.n_ranks > 1, dem_.particle.density);
   use_thread_count();
   system_.setup();
   steps_per_revolution_ = std::uint64_t(std::llround(revolution_time_ / system_.time_step()));

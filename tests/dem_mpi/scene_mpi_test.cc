@@ -169,12 +169,7 @@ TEST_CASE("scene over ranks: a state resumed on as many ranks, and as a merged b
   // The bed merged into one process's (what a checkpoint read on another rank count gives),
   // sent to every rank: every particle kept, the balance holds on.
   SceneRunState whole = state;
-  std::vector<double> packed, all;
-  const std::vector<SystemState> parts = gather_rank_states(state.system, world());
-  if (world().rank() == 0)
-    packed = pack_state(merge_rank_states(parts));
-  world().gather_in_rank_order(packed, all);
-  whole.system = unpack_state(all.data(), all.size());
+  whole.system = whole_state_on_every_rank(state.system, world());
   auto c = start(s);
   c->resume(whole);
   const double n_state = over_ranks({double(state.system.position.size())}, world())[0];
