@@ -25,10 +25,10 @@ for seed in $(seq 1 "$n_seeds"); do
 INCLUDE cases/hopper-rim/base.prm
 subsection Scene
   subsection Wall floor
-    set File = cases/hopper-rim/plate-$n-$d_mm.stl
+    set File = cases/hopper-rim/ring-$n-$d_mm.stl
   end
   subsection Wall plug
-    set Radius = $(awk "BEGIN { print $d_mm / 2000 }")
+    set Radius = $(awk "BEGIN { print $d_mm / 2000 + 0.008 }")
   end
 end
 subsection DEM

@@ -1,7 +1,9 @@
-// `wearsim run`: reads the options and the case file and hands them to CoupledRun.
+// `wearsim run`: reads the options and the case file and hands them to the run of its kind: a
+// scene (Scene/Walls names walls) to SceneCoupledRun, the built-in wear tester to CoupledRun.
 #include "coupling/app/run_command.h"
 
 #include "coupling/loop/coupled_run.h"
+#include "coupling/loop/scene_coupled_run.h"
 
 #include <deal.II/base/multithread_info.h>
 
@@ -39,7 +41,8 @@ int run_run_command(const std::vector<std::string>& args, std::ostream& log, dem
   options.ranks = ranks;
   const std::string case_file = parse_run_arguments(args, "run", options);
   CaseParameters p = read_case(case_file);
-  require_no_scene(p, "run");
+  if (!p.scene.walls.empty())
+    return SceneCoupledRun(p, log, options).run();
   // Over ranks each rank's FEM stage keeps to the rank's own threads (DEM/Threads), not all of
   // the node's cores.
   if (ranks && p.dem.n_threads > 0)

@@ -14,8 +14,9 @@ namespace wear::coupling {
 std::string parse_run_arguments(const std::vector<std::string>& args, const std::string& command,
                                 RunOptions& options);
 
-/// Runs (or resumes) the case's schedule; returns the exit code. `ranks`: under mpirun, the
-/// DEM over these ranks (CoupledRun over ranks).
+/// Runs (or resumes) the case: a scene's run (SceneCoupledRun, as `wearsim scene-run`) or the
+/// built-in wear tester's schedule (CoupledRun); returns the exit code. `ranks`: under mpirun,
+/// the DEM over these ranks (a scene's slabs, or the tester's ring of angular slabs).
 int run_run_command(const std::vector<std::string>& args, std::ostream& log,
                     dem::RankLink* ranks = nullptr);
 

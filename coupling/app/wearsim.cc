@@ -10,6 +10,7 @@
 #include "coupling/app/scene_run_command.h"
 #include "coupling/parameters/case_parameters.h"
 #include "coupling/parameters/engine_version.h"
+#include "coupling/parameters/tester_scene_case.h"
 #include "dem/parallel/mpi_rank_link.h"
 
 #include <deal.II/base/mpi.h>
@@ -27,6 +28,9 @@ void usage(std::ostream& out) {
          "  mesh <case.prm>          generate the sample (.msh/.stl/.vtu) and the tester walls\n"
          "  scene <case.prm>         build and check the walls of the case's Scene (CAD files,\n"
          "                           primitives): a table per wall and label, <name>.stl each\n"
+         "  tester-scene <case.prm>  print the wear tester of a tester case written as a scene\n"
+         "                           (walls, sector, consolidator, holder, sample, fill and\n"
+         "                           stages in its Scene subsection), for scene-run\n"
          "  scene-run [--resume | --overwrite] <case.prm>\n"
          "                           the case's Scene: walls and their motions, fill, inlets,\n"
          "                           outlets, to Scene/End time, or with a wearing part and\n"
@@ -37,7 +41,8 @@ void usage(std::ostream& out) {
          "                           evaluations; writes history.h5/.xdmf and summary.csv\n"
          "  run [--resume | --overwrite] <case.prm>\n"
          "                           the coupled DEM-FEM wear run of the case's Coupling/Schedule\n"
-         "                           (staged, reference or dem-only stages); writes summary.csv,\n"
+         "                           (staged, reference or dem-only stages); a scene's case runs\n"
+         "                           as by scene-run; the tester's writes summary.csv,\n"
          "                           stages.csv, history.h5/.xdmf, checkpoint.h5; --resume\n"
          "                           continues a stopped run from its last checkpoint (between\n"
          "                           or inside stages); a folder holding a run is refused unless\n"
@@ -88,13 +93,16 @@ int main(int argc, char** argv) {
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &n_ranks);
   try {
-    if (n_ranks > 1 && cmd == "scene-run") {
-      // A scene's slabs are a ring along a period or an angle, a line otherwise.
+    if (n_ranks > 1 && (cmd == "scene-run" || cmd == "run")) {
+      // A scene's slabs are a ring along a period or an angle, a line otherwise; the built-in
+      // tester's a ring of angular slabs.
       const std::vector<std::string> args(argv + 2, argv + argc);
       RunOptions options;
-      const CaseParameters p = read_case(parse_run_arguments(args, "scene-run", options));
-      wear::dem::MpiRankLink ranks(MPI_COMM_WORLD, wear::dem::rank_ring(p.scene));
-      return run_scene_run_command(args, std::cout, &ranks);
+      const CaseParameters p = read_case(parse_run_arguments(args, cmd, options));
+      const bool scene = !p.scene.walls.empty();
+      wear::dem::MpiRankLink ranks(MPI_COMM_WORLD, !scene || wear::dem::rank_ring(p.scene));
+      return cmd == "run" ? run_run_command(args, std::cout, &ranks)
+                          : run_scene_run_command(args, std::cout, &ranks);
     }
     if (n_ranks > 1) {
       // The tester and the benchmark's sectors and annulus are rings of angular slabs.
@@ -109,8 +117,6 @@ int main(int argc, char** argv) {
       }
       if (cmd == "bench" && argc >= 3 && std::string(argv[2]) == "dem")
         return run_bench_command({argv + 2, argv + argc}, std::cout, &ranks);
-      if (cmd == "run")
-        return run_run_command({argv + 2, argv + argc}, std::cout, &ranks);
       throw std::invalid_argument(
           "under mpirun (" + std::to_string(n_ranks) +
           " ranks) wearsim decomposes 'run <case.prm>', 'scene-run <case.prm>', 'dem <case.prm>' "
@@ -155,6 +161,15 @@ int main(int argc, char** argv) {
         return 2;
       }
       run_scene_command(read_case(argv[2]), std::cout);
+      return 0;
+    }
+    if (cmd == "tester-scene") {
+      if (argc != 3) {
+        std::cerr << "wearsim tester-scene: expected one case file (the scene goes to stdout)\n";
+        return 2;
+      }
+      const CaseParameters p = read_case(argv[2]);
+      std::cout << tester_scene_text(tester_scene_case(p), argv[2]);
       return 0;
     }
     if (cmd == "scene-run")

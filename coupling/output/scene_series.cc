@@ -88,8 +88,10 @@ SceneSeries::SceneSeries(std::string directory, const dem::SceneRun& run, bool s
   meshes::ensure_directory(directory_ + "/walls");
   for (std::size_t k = 0; k < run.walls().size(); ++k) {
     const auto& p = run.walls()[k].parameters;
-    // A wearing part changes at stage ends only: the wear loop's surface series has it.
-    changing_.push_back(dem::wall_motion_of(p).kind != dem::WallMotionKind::fixed);
+    // Only a wall moving as a rigid body changes its place between records; a fixed wall or
+    // one whose surface moves in place (a belt, a turning floor) is written once. A wearing
+    // part changes at stage ends only: the wear loop's surface series has it.
+    changing_.push_back(dem::wall_motion_of(p).rigid);
     if (!changing_.back())
       write_wall(run, int(k), directory_ + "/walls");
   }

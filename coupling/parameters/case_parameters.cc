@@ -21,6 +21,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
+#include <charconv>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
@@ -320,6 +321,105 @@ std::string resolved_parameters(const CaseParameters& p) {
   return out.str();
 }
 
+namespace {
+/// The shortest text that reads back as the same double (1/3 -> 0.3333333333333333, 0.3 -> 0.3).
+std::string shortest(double x) {
+  char buffer[64];
+  const auto r = std::to_chars(buffer, buffer + sizeof buffer, x);
+  return {buffer, r.ptr};
+}
+
+/// A visitor that writes each parameter's value as case-file text, numbers in their shortest
+/// exact form (where ParameterHandler keeps 16 digits).
+struct Texts {
+  std::vector<std::string> section;                       ///< the subsections entered
+  std::vector<std::pair<std::string, std::string>> items; ///< (path, value) in visiting order
+
+  void enter(const std::string& s) { section.push_back(s); }
+  void leave() { section.pop_back(); }
+  void real(const std::string& n, double& x, const std::string&) { add(n, shortest(x)); }
+  void integer(const std::string& n, int& x, int, int, const std::string&) {
+    add(n, std::to_string(x));
+  }
+  void unsigned_integer(const std::string& n, unsigned int& x, int, int, const std::string&) {
+    add(n, std::to_string(x));
+  }
+  void count(const std::string& n, std::uint64_t& x, const std::string&) {
+    add(n, std::to_string(x));
+  }
+  void boolean(const std::string& n, bool& x, const std::string&) { add(n, x ? "true" : "false"); }
+  void choice(const std::string& n, bool& x, const std::string& yes, const std::string& no,
+              const std::string&) {
+    add(n, x ? yes : no);
+  }
+  void selection(const std::string& n, std::string& x, const std::string&, const std::string&) {
+    add(n, x);
+  }
+  void text(const std::string& n, std::string& x, const std::string&) { add(n, x); }
+  void real_list(const std::string& n, std::vector<double>& x, const std::string&) {
+    std::string t;
+    for (const double v : x)
+      t += (t.empty() ? "" : ", ") + shortest(v);
+    add(n, t);
+  }
+  void int_list(const std::string& n, std::vector<int>& x, const std::string&) {
+    std::string t;
+    for (const int v : x)
+      t += (t.empty() ? "" : ", ") + std::to_string(v);
+    add(n, t);
+  }
+
+private:
+  void add(const std::string& name, std::string value) {
+    std::string path;
+    for (const auto& s : section)
+      path += s + "/";
+    items.emplace_back(path + name, std::move(value));
+  }
+};
+} // namespace
+
+std::string changed_parameters(const CaseParameters& p) {
+  const dem::SceneNames names{p.scene.wall_names, p.scene.inlet_names, p.scene.outlet_names,
+                              p.scene.flux_plane_names};
+  CaseParameters copy = p, plain = defaults_with_scene(names);
+  // the lists of names are set whenever they name something (their default is empty)
+  plain.scene.wall_names = plain.scene.inlet_names = plain.scene.outlet_names =
+      plain.scene.flux_plane_names = "";
+  Texts given, defaults;
+  visit(copy, given);
+  visit(plain, defaults);
+  std::ostringstream out;
+  std::vector<std::string> open; // the subsections written and not yet closed
+  for (std::size_t k = 0; k < given.items.size(); ++k) {
+    const auto& [path, value] = given.items[k];
+    if (value == defaults.items.at(k).second)
+      continue;
+    std::vector<std::string> parts;
+    for (std::size_t b = 0, e; b <= path.size(); b = e + 1) {
+      e = std::min(path.find('/', b), path.size());
+      parts.push_back(path.substr(b, e - b));
+    }
+    std::size_t common = 0;
+    while (common < open.size() && common + 1 < parts.size() && open[common] == parts[common])
+      ++common;
+    while (open.size() > common) {
+      open.pop_back();
+      out << std::string(2 * open.size(), ' ') << "end\n";
+    }
+    for (std::size_t k2 = common; k2 + 1 < parts.size(); ++k2) {
+      out << std::string(2 * open.size(), ' ') << "subsection " << parts[k2] << "\n";
+      open.push_back(parts[k2]);
+    }
+    out << std::string(2 * open.size(), ' ') << "set " << parts.back() << " = " << value << "\n";
+  }
+  while (!open.empty()) {
+    open.pop_back();
+    out << std::string(2 * open.size(), ' ') << "end\n";
+  }
+  return out.str();
+}
+
 void write_resolved_parameters(const CaseParameters& p, const std::string& path) {
   const std::string text = resolved_parameters(p);
   meshes::write_atomically(path, [&](std::ostream& out) {
@@ -342,7 +442,7 @@ void require_no_scene(const CaseParameters& p, const std::string& command) {
     throw std::invalid_argument(
         "case file '" + p.case_file + "': Scene/Walls lists walls, but `wearsim " + command +
         "` runs the built-in wear tester; a scene is built and checked by `wearsim scene` and "
-        "run by `wearsim scene-run`");
+        "run by `wearsim run` (or `wearsim scene-run`)");
 }
 
 } // namespace wear::coupling

@@ -71,6 +71,11 @@ CaseParameters read_case(const std::string& path);
 /// The fully resolved parameters (every value, defaults included) in PRM form.
 std::string resolved_parameters(const CaseParameters& p);
 
+/// The entries of `p` that differ from their defaults, in PRM form (subsections nested and
+/// indented by two spaces, in the order the case file declares them): a case file that reads
+/// back as `p`.
+std::string changed_parameters(const CaseParameters& p);
+
 /// Writes the fully resolved parameters of a case (every value, defaults included) as .prm.
 void write_resolved_parameters(const CaseParameters& p, const std::string& path);
 

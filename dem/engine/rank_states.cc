@@ -259,4 +259,33 @@ void add_state_particles(Particles& p, const SystemState& s, bool own_part, doub
   }
 }
 
+Particles gather_particles(const Particles& p, RankLink* link, GatherTo to,
+                           const std::function<bool(std::size_t)>& keep, double density) {
+  constexpr std::size_t values = 13; // position, velocity, spin, radius, mass, id, material
+  std::vector<double> mine, all;
+  for (std::size_t i = 0; i < p.n_real; ++i)
+    if (!keep || keep(i))
+      mine.insert(mine.end(), {p.position[i].x, p.position[i].y, p.position[i].z, p.velocity[i].x,
+                               p.velocity[i].y, p.velocity[i].z, p.angular_velocity[i].x,
+                               p.angular_velocity[i].y, p.angular_velocity[i].z, p.radius[i],
+                               p.mass[i], double(p.id[i]), double(p.material[i])});
+  if (!link)
+    all = std::move(mine);
+  else if (to == GatherTo::every_rank)
+    link->gather_in_rank_order(mine, all);
+  else {
+    std::vector<std::size_t> counts;
+    link->gather_to_first(mine, all, counts);
+  }
+  Particles out;
+  for (std::size_t k = 0; k + values <= all.size(); k += values) {
+    const double* v = all.data() + k;
+    out.add({v[0], v[1], v[2]}, {v[3], v[4], v[5]}, v[9], density, int(v[12]));
+    out.angular_velocity.back() = {v[6], v[7], v[8]};
+    out.mass.back() = v[10];
+    out.id.back() = std::int64_t(v[11]);
+  }
+  return out;
+}
+
 } // namespace wear::dem

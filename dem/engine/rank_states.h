@@ -7,6 +7,7 @@
 #include "dem/engine/system.h"
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace wear::dem {
@@ -48,5 +49,19 @@ SystemState whole_state_on_every_rank(const SystemState& mine, RankLink& link);
 /// the set-up moves none), else where they are. `density` [kg/m^3] only seeds
 /// Particles::add.
 void add_state_particles(Particles& p, const SystemState& s, bool own_part, double density);
+
+/// Where gather_particles() puts the particles.
+enum class GatherTo {
+  every_rank, ///< every rank gets them all (an evaluation every rank makes alike)
+  first_rank  ///< rank 0 gets them all, the others none (a snapshot rank 0 writes)
+};
+
+/// The real particles of `p` for which `keep(i)` holds (all when `keep` is empty), every
+/// rank's in rank order (one process: its own) with position, velocity, spin, radius, mass,
+/// id and material; inertias are not carried (Particles::add's of the radius and `density`
+/// [kg/m^3]). Every rank calls it together. For evaluations, snapshots and inlets, not the
+/// step loop.
+Particles gather_particles(const Particles& p, RankLink* link, GatherTo to,
+                           const std::function<bool(std::size_t)>& keep = {}, double density = 1);
 
 } // namespace wear::dem

@@ -154,36 +154,7 @@ std::string SceneRun::rank_layout() const {
 }
 
 Particles SceneRun::particles_on_first_rank() const {
-  const Particles& p = system_.particles;
-  RankLink* link = rank_link();
-  Particles out;
-  if (!link) {
-    for (std::size_t i = 0; i < p.n_real; ++i) {
-      out.add(p.position[i], p.velocity[i], p.radius[i], 1, p.material[i]);
-      out.angular_velocity.back() = p.angular_velocity[i];
-      out.mass.back() = p.mass[i];
-      out.id.back() = p.id[i];
-    }
-    return out;
-  }
-  constexpr std::size_t values = 12; // position, velocity, spin, radius, mass, id
-  std::vector<double> mine, all;
-  std::vector<std::size_t> counts;
-  mine.reserve(values * p.n_real);
-  for (std::size_t i = 0; i < p.n_real; ++i)
-    mine.insert(mine.end(),
-                {p.position[i].x, p.position[i].y, p.position[i].z, p.velocity[i].x,
-                 p.velocity[i].y, p.velocity[i].z, p.angular_velocity[i].x, p.angular_velocity[i].y,
-                 p.angular_velocity[i].z, p.radius[i], p.mass[i], double(p.id[i])});
-  link->gather_to_first(mine, all, counts);
-  for (std::size_t k = 0; k + values - 1 < all.size(); k += values) {
-    const double* v = all.data() + k;
-    out.add({v[0], v[1], v[2]}, {v[3], v[4], v[5]}, v[9], 1, 0);
-    out.angular_velocity.back() = {v[6], v[7], v[8]};
-    out.mass.back() = v[10];
-    out.id.back() = std::int64_t(v[11]);
-  }
-  return out;
+  return gather_particles(system_.particles, rank_link(), GatherTo::first_rank);
 }
 
 } // namespace wear::dem

@@ -405,15 +405,9 @@ void SceneRun::exchange() {
   Particles near;
   for (auto& inlet : inlets_) {
     if (link && set_up) { // every rank's particles near the box, so that all draw one batch
-      std::vector<double> mine, all;
       const auto& p = system_.particles;
-      for (std::size_t i = 0; i < p.n_real; ++i)
-        if (inlet.may_touch(p.position[i]))
-          mine.insert(mine.end(), {p.position[i].x, p.position[i].y, p.position[i].z, p.radius[i]});
-      link->gather_in_rank_order(mine, all);
-      near = Particles{};
-      for (std::size_t k = 0; k + 3 < all.size(); k += 4)
-        near.add({all[k], all[k + 1], all[k + 2]}, {}, all[k + 3], 1, 0);
+      near = gather_particles(p, link, GatherTo::every_rank,
+                              [&](std::size_t i) { return inlet.may_touch(p.position[i]); });
     }
     auto batch = inlet.batch(time_, link && set_up ? near : system_.particles);
     if (batch.empty())

@@ -183,34 +183,17 @@ const Particles& WearTester::bed_particles() {
   return gather_particles(false);
 }
 
-// Position, velocity, spin, radius and id of each particle, every rank's in rank order.
+// Every rank's particles (or those over the sample), in rank order, on every rank.
 const Particles& WearTester::gather_particles(bool only_over_sample) {
   RankLink* link = system_.rank_link();
   if (!link)
     return system_.particles;
   const Particles& p = system_.particles;
-  constexpr std::size_t m = 11;
-  std::vector<double>& mine = gather_buffer_;
-  mine.clear();
-  for (std::size_t i = 0; i < p.n_real; ++i) {
-    if (only_over_sample && !evaluation_->over_sample(p.position[i]))
-      continue;
-    for (const Vec3& v : {p.position[i], p.velocity[i], p.angular_velocity[i]})
-      mine.insert(mine.end(), {v.x, v.y, v.z});
-    mine.push_back(p.radius[i]);
-    mine.push_back(double(p.id[i]));
-  }
-  std::vector<double> all;
-  link->gather_in_rank_order(mine, all);
-  Particles& g = gathered_;
-  g = Particles{};
-  for (std::size_t k = 0; k + m <= all.size(); k += m) {
-    const double* a = &all[k];
-    g.add({a[0], a[1], a[2]}, {a[3], a[4], a[5]}, a[9], dem_.particle.density, particle_material_);
-    g.angular_velocity.back() = {a[6], a[7], a[8]};
-    g.id.back() = std::int64_t(a[10]);
-  }
-  return g;
+  std::function<bool(std::size_t)> keep;
+  if (only_over_sample)
+    keep = [&](std::size_t i) { return evaluation_->over_sample(p.position[i]); };
+  gathered_ = dem::gather_particles(p, link, GatherTo::every_rank, keep, dem_.particle.density);
+  return gathered_;
 }
 
 FillReport WearTester::fill_and_settle(const std::function<void(const TesterProgress&)>& progress) {

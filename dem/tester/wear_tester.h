@@ -129,10 +129,9 @@ private:
   TesterDemParameters dem_;
   ReferenceDeformationParameters deformation_parameters_;
   System system_;
-  SlabDecomposition slabs_;           ///< over ranks (set_rank_link)
-  Particles gathered_;                ///< over ranks: the particles over the sample, all ranks
-  std::vector<double> gather_buffer_; ///< their values, this rank's and all ranks'
-  std::size_t n_particles_ = 0;       ///< [-] over all ranks
+  SlabDecomposition slabs_;     ///< over ranks (set_rank_link)
+  Particles gathered_;          ///< over ranks: the particles over the sample, all ranks
+  std::size_t n_particles_ = 0; ///< [-] over all ranks
   int sample_wall_ = -1, holder_wall_ = -1, particle_material_ = 0;
   std::vector<int> rotating_walls_;
   std::unique_ptr<WearLaw> law_;

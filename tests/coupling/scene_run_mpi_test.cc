@@ -1,7 +1,8 @@
 // `wearsim scene-run` under mpiexec: a small hopper (1,500 spheres of 6 mm in a 200 mm bin,
 // the plug of its 50 mm orifice dropping at 0.15 s, an outlet below), one thread per rank,
 // each run in its own folder:
-// - twice on 2 ranks: the series (every column) and the last particles bit for bit;
+// - twice on 2 ranks, by `wearsim scene-run` and by `wearsim run` (which takes any scene): the
+//   series (every column) and the last particles bit for bit;
 // - stopped by SIGTERM on 2 ranks after a checkpoint and resumed on 2: the same bits as the
 //   uninterrupted run;
 // - stopped on 3 ranks and resumed on 2, and stopped on 2 and resumed as one process: they
@@ -118,16 +119,19 @@ void check_count_balance(const std::string& out) {
 
 } // namespace
 
-TEST_CASE("wearsim scene-run over ranks: the same bits twice and through a checkpoint, resumed "
-          "on another rank count",
-          "[coupling][mpi]") {
+TEST_CASE(
+    "wearsim scene-run and run over ranks: the same bits twice and through a checkpoint, resumed "
+    "on another rank count",
+    "[coupling][mpi]") {
   const std::string a = fresh("scene_mpi_a"), twice = fresh("scene_mpi_twice");
   REQUIRE(run_in(a, 2, "", "case.prm", "run.log", "scene-run") == 0);
   INFO(file_text(a + "/run.log"));
   CHECK_THAT(file_text(a + "/run.log"),
              Catch::Contains("over 2 MPI rank(s): balanced slabs along x"));
   check_count_balance(a + "/out");
-  REQUIRE(run_in(twice, 2, "", "case.prm", "run.log", "scene-run") == 0);
+  REQUIRE(run_in(twice, 2, "", "case.prm", "run.log", "run") == 0); // any scene
+  CHECK_THAT(file_text(twice + "/run.log"),
+             Catch::Contains("over 2 MPI rank(s): balanced slabs along x"));
   CHECK(file_text(twice + "/out/scene_series.csv") == file_text(a + "/out/scene_series.csv"));
   CHECK(file_text(twice + "/out/particles_9.vtu") == file_text(a + "/out/particles_9.vtu"));
 

@@ -69,7 +69,7 @@ def main():
              "thread per run" + (f", {o.seconds // 60} min {o.seconds % 60} s for the runs"
                                  if o.seconds else "") + ".", "",
              f"Wear-law volume per revolution [mm^3], revolutions {o.first} to the last, "
-             "cases/sector-30 (built-in tester) and cases/reference/scene/quick-<kind>.prm (scene):",
+             "cases/sector-30 (built-in tester) and the same case written as a scene by `wearsim tester-scene` (scene):",
              "", "| kind | seed | tester | scene |", "|---|---|---|---|"]
     ok = True
     verdicts = []

@@ -1,7 +1,8 @@
 #!/bin/bash
 # The wear tester as a scene against the built-in tester: the small sector (cases/sector-30, plain
 # and convex, 30-degree sector, s = 4, 2 dem-only and 4 staged revolutions at 20x) run both
-# ways over the same insertion seeds, one thread per run, as many runs at once as the machine
+# ways over the same insertion seeds, the scene written from the same case by
+# `wearsim tester-scene`, one thread per run, as many runs at once as the machine
 # has cores. compare_scene.py then sets each path's wear per revolution (revolutions 3 to 6)
 # as mean +- 95 % interval across the seeds side by side and exits 1 when a scene mean falls
 # outside the tester's interval. README.md beside this script says why not bit for bit.
@@ -27,11 +28,16 @@ mkdir -p "$root"
 start=$(date +%s)
 
 run_one() { # <path: tester|scene> <kind> <seed>
-  local out="$root/$1-$2-$3" prm command
-  if [ "$1" = tester ]; then prm=cases/sector-30/$2.prm command=run; else prm=cases/reference/scene/quick-$2.prm command=scene-run; fi
+  local out="$root/$1-$2-$3"
   sed -e "s|^subsection DEM|subsection DEM\n  set Seed = $3|" \
-      -e "s|set Directory = .*|set Directory = $out|" "$prm" > "$out.prm"
-  "$wearsim" $command --overwrite "$out.prm" > "$out.log" 2>&1
+      -e "s|set Directory = .*|set Directory = $out|" cases/sector-30/$2.prm > "$out.prm"
+  if [ "$1" = tester ]; then
+    "$wearsim" run --overwrite "$out.prm" > "$out.log" 2>&1
+  else
+    "$wearsim" tester-scene "$out.prm" | sed -e "s|set Directory = .*|set Directory = $out|" \
+      > "$out.scene.prm"
+    "$wearsim" scene-run --overwrite "$out.scene.prm" > "$out.log" 2>&1
+  fi
 }
 
 for seed in "${seeds[@]}"; do

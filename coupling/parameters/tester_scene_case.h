@@ -1,0 +1,23 @@
+#pragma once
+// A wear-tester case written as a scene case (`wearsim tester-scene`): the same machine,
+// particles, wear law, coupling and FEM, its walls, sector, fill and stages in the Scene
+// subsection (dem/tester/tester_scene.h) instead of the built-in tester's own parameters.
+#include "coupling/parameters/case_parameters.h"
+
+#include <string>
+
+namespace wear::coupling {
+
+/// The scene case of tester case `tester`: Scene = dem::tester_scene of its geometry, DEM and
+/// Coupling/Revolutions per stage; the tester's own entries (Geometry/Tester but the holder's
+/// rim width, the DEM entries only the tester reads, Coupling/Revolutions per stage) back at
+/// their defaults, since the scene now holds them; Output/Directory with "-scene" appended.
+/// Throws std::invalid_argument naming the parameter when the case is a scene already or its
+/// schedule holds a reference stage (the node-moving scheme runs in the built-in tester only).
+CaseParameters tester_scene_case(const CaseParameters& tester);
+
+/// The text of that case file: a comment naming the tester case and the engine, then the
+/// entries that differ from their defaults (changed_parameters).
+std::string tester_scene_text(const CaseParameters& scene, const std::string& tester_file);
+
+} // namespace wear::coupling
