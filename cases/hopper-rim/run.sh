@@ -6,14 +6,16 @@
 # output/hopper-rim/<n>-<D>-s<seed>;
 # a run whose folder holds a finished series is skipped, so the script resumes a study.
 # Then: /usr/bin/python3 cases/hopper-rim/report.py
-#   usage: [WEARSIM=path/to/wearsim] bash cases/hopper-rim/run.sh [N]
+#   usage: [WEARSIM=path/to/wearsim] [DIAMETERS="36 48"] bash cases/hopper-rim/run.sh [N]
+# (DIAMETERS: the orifices in mm to run, of 36 and 48)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 n_seeds=${1:-6}
 out=output/hopper-rim
 mkdir -p "$out/cases"
 for seed in $(seq 1 "$n_seeds"); do
-  for d_mm in 36 48; do
+  for d_mm in ${DIAMETERS:-36 48}; do
+    case $d_mm in 36|48) ;; *) echo "run.sh: DIAMETERS: no plate for $d_mm mm (36 or 48)" >&2; exit 2 ;; esac
     for n in 32 128; do
       run="$n-$d_mm-s$seed"
       if [ -f "$out/$run/scene_series.csv" ] &&

@@ -12,6 +12,7 @@
 #include "dem/tester/wear_tester.h"
 #include "meshes/constants.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace wear::dem {
@@ -111,7 +112,9 @@ SceneParameters tester_scene(const meshes::GeometryParameters& geometry,
   auto& fill = s.fill;
   fill.region = "cylinder";
   fill.origin = {0, 0, 1e-4};
-  fill.axis = {0, 0, h};
+  // up to the walls' top, or higher when the loose fill needs more room (a short sector's
+  // walls): the particles placed above the walls stand over the annulus and fall into it
+  fill.axis = {0, 0, std::max(h, 1.001 * dem.loose_factor * dem.fill_height)};
   fill.radius = ro - 1e-4;
   fill.radius_inner = ri + 1e-4;
   fill.bed_height = dem.fill_height;

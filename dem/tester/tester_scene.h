@@ -20,7 +20,8 @@ namespace wear::dem {
 ///   annular sector; the scene's primitives are flat), its column left empty by the fill;
 /// - the holder (when the tester has one, meshed at the walls' size as the tester's) and the
 ///   sample, placed by Geometry/Placement, the sample wearing;
-/// - the fill: the annulus 0.1 mm clear of the walls, to the fill height, settled;
+/// - the fill: the annulus 0.1 mm clear of the walls, to the fill height, settled, placed
+///   loosely up to the walls' top or the loose fill's (DEM/Loose factor), whichever is higher;
 /// - a record every 1/(Samples per revolution) of a revolution, no particle snapshots;
 /// - the domain of the built-in tester (the annulus with 50 mm to spare, up to the walls'
 ///   height plus the loose fill's).

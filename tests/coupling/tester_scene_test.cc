@@ -111,6 +111,9 @@ TEST_CASE("a tester case written by wearsim tester-scene reads back as the same 
   CHECK(q.scene.output_interval * p.dem.samples_per_revolution ==
         Approx(q.scene.stage_duration / p.coupling.revolutions_per_stage).epsilon(1e-15));
   CHECK(q.scene.wall_names == "floor, inner, outer, sample");
+  // the sector's walls (0.3 m) are lower than the loose fill (2.5 x 0.13 m): the fill reaches
+  // above them, as a scene's fill must
+  CHECK(q.scene.fill.axis.at(2) >= q.dem.loose_factor * q.scene.fill.bed_height);
   CHECK(vec(q.scene.walls[1].axis).z == p.geometry.tester.wall_height);
   CHECK(q.scene.periodic_angle_deg == p.geometry.tester.sector_angle_deg);
   CHECK(q.dem.psd.scaling_factor == p.dem.psd.scaling_factor);
