@@ -469,7 +469,8 @@ WearIntegrals System::wear_integrals(int w) const {
       r.normal_moment[f] += Vec3{v[7], v[8], v[9]};
       r.impulse_moment[f] += Vec3{v[10], v[11], v[12]};
     }
-    const double* tot = &a[n_wear_values * nf];
+    // a wall of one face keeps its totals on that face (add_wear)
+    const double* tot = &a[n_wear_values * (nf == 1 ? 0 : nf)];
     r.total_impulse += Vec3{tot[0], tot[1], tot[2]};
     r.total_normal_impulse += tot[3];
     r.total_archard += tot[4];

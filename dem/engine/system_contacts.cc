@@ -210,6 +210,10 @@ template <class Wall>
     v[11] += moment.y * share;
     v[12] += moment.z * share;
   }
+  // A wall of one face (an exact surface's accounting face) holds its totals there: the same
+  // sums in the same order, by shares of 1 (System::wear_integrals reads them so).
+  if (wall.n_faces() == 1)
+    return;
   double* tot = &a[n_wear_values * wall.n_faces()];
   tot[0] += impulse.x;
   tot[1] += impulse.y;
