@@ -20,7 +20,9 @@ namespace wear::coupling {
 
 class SceneSeries {
 public:
-  /// Writes the fixed walls into `directory`/walls/ and starts the tables; `snapshots`: the
+  /// Writes the walls that keep their place (fixed, or their surface moving in place) into
+  /// `directory`/walls/ and starts the tables; a wall moving as a rigid body goes to
+  /// walls_<k>/ at every record k; `snapshots`: the
   /// particles at every record (Scene/Particle snapshots).
   SceneSeries(std::string directory, const dem::SceneRun& run, bool snapshots);
   /// Continues the records of a resumed run: the tables as they stood after its first

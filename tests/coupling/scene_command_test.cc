@@ -4,10 +4,14 @@
 // scenes are refused naming the wall and the problem before anything is written, and the
 // tester's commands refuse a scene.
 #include "coupling/app/scene_command.h"
+#include "coupling/output/scene_series.h"
+#include "dem/scene/scene_run.h"
 #include "dem/scene/scene_walls.h"
 #include "error_of.h"
+#include "meshes/atomic_file.h"
 #include "meshes/gmsh_session.h"
 #include "meshes/stl_io.h"
+#include "tests/dem/scene_fixtures.h"
 
 #include <catch2/catch.hpp>
 
@@ -143,4 +147,34 @@ TEST_CASE("wearsim scene: bad scenes are refused naming the wall, before anythin
         std::string::npos);
   CaseParameters tester;
   CHECK_NOTHROW(require_no_scene(tester, "dem"));
+}
+
+TEST_CASE("a scene's series writes a wall that keeps its place once, a moving body at every "
+          "record",
+          "[coupling][scene]") {
+  // The belt's surface moves in place (surface translation), the left side stands, the right
+  // side moves as a rigid body: only the last changes between records.
+  auto scene = wear::dem::testing::endless_belt();
+  scene.periodic_direction = "none";
+  scene.flux_plane_names = "";
+  scene.flux_planes.clear();
+  auto& right = scene.walls[2];
+  right.motion = "translation";
+  right.velocity = {0, 0.01, 0};
+  const wear::meshes::GeometryParameters geometry;
+  const wear::dem::DemParameters dem;
+  const wear::dem::SceneRun run(scene, dem, wear::dem::build_scene_walls(scene, geometry));
+  const std::string dir = "scene_series_walls";
+  std::filesystem::remove_all(dir);
+  wear::meshes::ensure_directory(dir);
+  SceneSeries series(dir, run, false);
+  for (int k = 1; k <= 2; ++k)
+    series.add(wear::dem::SceneWindow{}, run, wear::dem::Particles{});
+  for (const char* name : {"belt", "left"}) {
+    CHECK(std::filesystem::exists(dir + "/walls/" + name + ".vtu"));
+    CHECK_FALSE(std::filesystem::exists(dir + "/walls_1/" + name + ".vtu"));
+  }
+  CHECK_FALSE(std::filesystem::exists(dir + "/walls/right.vtu"));
+  CHECK(std::filesystem::exists(dir + "/walls_1/right.vtu"));
+  CHECK(std::filesystem::exists(dir + "/walls_2/right.vtu"));
 }
