@@ -231,7 +231,7 @@ SceneCoupledRun::run_dem(StageRecord& r, std::optional<OpenSceneStage> open,
     const dem::SceneWindow w = scene_->advance(std::min(stage.end, scene_->time() + every));
     if (w.integrated > 0)
       for (std::size_t i = 0; i < parts_.size(); ++i)
-        stage.loads[i] += scene_->wall_loads(parts_[i].wall(), *law_, w.integrated);
+        stage.loads[i] += scene_->wall_loads(parts_[i].wall(), *law_, w);
     record(w);
     if (!parts_.empty())
       log_ << "stage " << r.stage << "/" << plan_.size() << " " << scheme_name(r.scheme) << ": ";

@@ -498,6 +498,8 @@ SceneWindow SceneRun::advance(double t_end) {
       const auto& labels = accounting_labels(k);
       for (std::size_t f = 0; f < labels.size(); ++f)
         loads.archard_label[labels[f]] += wi.archard[f];
+      if (walls_[k].parameters.wears)
+        w.wearing.emplace(k, wi);
     }
   if (set_up && w.n_particles > 0) {
     for (std::size_t i = 0; i < p.n_real; ++i) {
@@ -514,10 +516,14 @@ SceneWindow SceneRun::advance(double t_end) {
   return w;
 }
 
-WallLoads SceneRun::wall_loads(std::size_t k, const WearLaw& law, double duration) const {
-  const WearIntegrals integrals = system_.wear_integrals_over_ranks(int(k));
+WallLoads SceneRun::wall_loads(std::size_t k, const WearLaw& law, const SceneWindow& w) const {
+  const auto at = w.wearing.find(k);
+  if (at == w.wearing.end())
+    throw std::logic_error("SceneRun::wall_loads: the window holds no integrals of wall '" +
+                           walls_.at(k).parameters.name + "'");
+  const WearIntegrals& integrals = at->second;
   return dem::wall_loads(integrals, law.removed_volume(integrals), walls_.at(k).surface.mesh,
-                         duration, load_spreading(dem_.wall_loads, dem_.psd));
+                         w.integrated, load_spreading(dem_.wall_loads, dem_.psd));
 }
 
 void SceneRun::replace_wall_surface(std::size_t k, const meshes::SurfaceMesh& mesh) {

@@ -42,6 +42,10 @@ struct SceneWindow {
   double mean_speed = 0, max_speed = 0; ///< [m/s] of the particles at the end
   /// [s] time the walls' integrals cover: the window, from the engine's set-up on
   double integrated = 0;
+  /// The window's integrals over the ranks of each wearing wall (Wears = true), by the wall's
+  /// index in the scene, once the engine has integrated: what a part's loads are made of
+  /// (SceneRun::wall_loads), reduced over the ranks once with the window's records.
+  std::map<std::size_t, WearIntegrals> wearing;
   BinnedWindow fields; ///< on the grid of Scene/Fields (empty without one)
 };
 
@@ -102,10 +106,11 @@ public:
   /// the outlets take their particles, then the engine steps. Returns the window's record.
   SceneWindow advance(double t_end);
 
-  /// The last window's loads on wall k (a wearing wall of the engine; every scene wall is),
-  /// the wear law applied, in the wall's frame, the traction and the wear volume laid on the
-  /// faces as the DEM subsection's coarse-graining says.
-  WallLoads wall_loads(std::size_t k, const WearLaw& law, double duration) const;
+  /// Window w's loads on wearing wall k (its integrals in w.wearing, over w.integrated), the
+  /// wear law applied, in the wall's frame, the traction and the wear volume laid on the faces
+  /// as the DEM subsection's coarse-graining says. Throws std::logic_error when w holds no
+  /// integrals of wall k (a wall that does not wear, or a window before any particle).
+  WallLoads wall_loads(std::size_t k, const WearLaw& law, const SceneWindow& w) const;
   /// Gives wall k a new surface (e.g. the worn part after a stage), same frame, motion and
   /// material. The particles keep their state; the new surface lies inside the old one where
   /// it wore, so no particle starts overlapping it beyond a remesh's chord offset.
