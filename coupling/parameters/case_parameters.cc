@@ -332,8 +332,14 @@ std::string shortest(double x) {
 /// A visitor that writes each parameter's value as case-file text, numbers in their shortest
 /// exact form (where ParameterHandler keeps 16 digits).
 struct Texts {
-  std::vector<std::string> section;                       ///< the subsections entered
-  std::vector<std::pair<std::string, std::string>> items; ///< (path, value) in visiting order
+  /// One parameter: its subsections and name in order ("Scene", "Wall floor", "Source"), its
+  /// value as text.
+  struct Item {
+    std::vector<std::string> path;
+    std::string value;
+  };
+  std::vector<std::string> section; ///< the subsections entered
+  std::vector<Item> items;          ///< in visiting order
 
   void enter(const std::string& s) { section.push_back(s); }
   void leave() { section.pop_back(); }
@@ -371,10 +377,9 @@ struct Texts {
 
 private:
   void add(const std::string& name, std::string value) {
-    std::string path;
-    for (const auto& s : section)
-      path += s + "/";
-    items.emplace_back(path + name, std::move(value));
+    std::vector<std::string> path = section;
+    path.push_back(name);
+    items.push_back({std::move(path), std::move(value)});
   }
 };
 } // namespace
@@ -392,14 +397,9 @@ std::string changed_parameters(const CaseParameters& p) {
   std::ostringstream out;
   std::vector<std::string> open; // the subsections written and not yet closed
   for (std::size_t k = 0; k < given.items.size(); ++k) {
-    const auto& [path, value] = given.items[k];
-    if (value == defaults.items.at(k).second)
+    const auto& [parts, value] = given.items[k];
+    if (value == defaults.items.at(k).value)
       continue;
-    std::vector<std::string> parts;
-    for (std::size_t b = 0, e; b <= path.size(); b = e + 1) {
-      e = std::min(path.find('/', b), path.size());
-      parts.push_back(path.substr(b, e - b));
-    }
     std::size_t common = 0;
     while (common < open.size() && common + 1 < parts.size() && open[common] == parts[common])
       ++common;

@@ -38,6 +38,7 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace wear::dem {
 
@@ -490,7 +491,7 @@ SceneWindow SceneRun::advance(double t_end) {
   w.walls.resize(walls_.size());
   if (set_up && duration > 0)
     for (std::size_t k = 0; k < walls_.size(); ++k) {
-      const WearIntegrals wi = system_.wear_integrals_over_ranks(int(k));
+      WearIntegrals wi = system_.wear_integrals_over_ranks(int(k));
       auto& loads = w.walls[k];
       loads.force = wi.total_impulse / duration;
       loads.torque = wi.total_impulse_moment / duration;
@@ -499,7 +500,7 @@ SceneWindow SceneRun::advance(double t_end) {
       for (std::size_t f = 0; f < labels.size(); ++f)
         loads.archard_label[labels[f]] += wi.archard[f];
       if (walls_[k].parameters.wears)
-        w.wearing.emplace(k, wi);
+        w.wearing.emplace(k, std::move(wi)); // the part's loads are made of it
     }
   if (set_up && w.n_particles > 0) {
     for (std::size_t i = 0; i < p.n_real; ++i) {

@@ -65,7 +65,6 @@ SceneParameters tester_scene(const meshes::GeometryParameters& geometry,
   const double ri = t.inner_radius, ro = t.outer_radius, h = t.wall_height;
 
   SceneParameters s;
-  std::vector<std::string> names{"floor", "inner", "outer"};
   SceneWallParameters floor = turning("floor", "disc", omega, t.wall_mesh_size);
   floor.axis = {0, 0, 1};
   floor.radius = ro;
@@ -77,10 +76,8 @@ SceneParameters tester_scene(const meshes::GeometryParameters& geometry,
     cylinder.radius = r;
     s.walls.push_back(cylinder);
   }
-  if (t.consolidator) {
+  if (t.consolidator)
     s.walls.push_back(consolidator(t));
-    names.push_back("consolidator");
-  }
   if (t.holder) {
     SceneWallParameters holder;
     holder.name = "holder";
@@ -88,7 +85,6 @@ SceneParameters tester_scene(const meshes::GeometryParameters& geometry,
     holder.material = "holder";
     holder.mesh_size = t.wall_mesh_size; // the built-in tester's holder
     s.walls.push_back(holder);
-    names.push_back("holder");
   }
   SceneWallParameters sample;
   sample.name = "sample";
@@ -96,9 +92,8 @@ SceneParameters tester_scene(const meshes::GeometryParameters& geometry,
   sample.material = "sample";
   sample.wears = true;
   s.walls.push_back(sample);
-  names.push_back("sample");
-  for (const auto& n : names)
-    s.wall_names += (s.wall_names.empty() ? "" : ", ") + n;
+  for (const auto& w : s.walls)
+    s.wall_names += (s.wall_names.empty() ? "" : ", ") + w.name;
 
   if (t.sector_angle_deg < 360)
     s.periodic_angle_deg = t.sector_angle_deg;
