@@ -2,8 +2,9 @@
 #   meshes/ includes no other module and no deal.II;
 #   dem/ never includes deal.II, fem/ or coupling/; its engine never includes what runs on
 #   it (dem/wear/, dem/scene/, dem/tester/) nor the ranks' MPI layer (dem/parallel/); the
-#   wall loads and wear laws (dem/wear/) include neither the scenes nor the tester, and the
-#   scenes never include the tester; only dem/parallel includes mpi.h;
+#   wall loads and wear laws (dem/wear/) and the evaluations (dem/evaluation/) include
+#   neither the scenes nor the tester, and the scenes never include the tester; only
+#   dem/parallel includes mpi.h;
 #   fem/ never includes dem/ or coupling/;
 #   inside coupling/, only the command line (app/) sees everything: the loop and the run
 #   output never include app/, the parameters include neither the loop, the output nor
@@ -11,8 +12,9 @@
 set(rules
   "meshes|deal\\.II/|fem/|dem/|coupling/"
   "dem|deal\\.II/|fem/|coupling/"
-  "dem/engine|dem/tester/|dem/scene/|dem/wear/|dem/parallel/|mpi\\.h"
+  "dem/engine|dem/tester/|dem/scene/|dem/wear/|dem/evaluation/|dem/parallel/|mpi\\.h"
   "dem/wear|dem/tester/|dem/scene/|mpi\\.h"
+  "dem/evaluation|dem/tester/|dem/scene/|mpi\\.h"
   "dem/scene|dem/tester/|mpi\\.h"
   "dem/tester|mpi\\.h"
   "dem/validation|mpi\\.h"

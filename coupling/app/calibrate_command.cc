@@ -7,12 +7,16 @@
 // with V_r the wear-face volume of revolution r of the run and R the revolutions after steady
 // state (docs/theory.md section 7: wear is judged on the steady flow). For a coupled run with a
 // geometry that wears, the scaled coefficient is the first-order answer: the flow changes with the
-// shape.
+// shape. A scene's wearing part (--part) the scene evaluates (Scene/Evaluation) has periods
+// for revolutions; another part has no steady-state judgement and is calibrated per second:
+//   coefficient_cal = coefficient * (V_measured / t_test) / (sum_{k in K} V_k / (|K| T_stage)),
+// V_k the wear-law volume of its staged stage k (from its first staged stage, or --from).
 #include "coupling/app/calibrate_command.h"
 
 #include "coupling/parameters/case_parameters.h"
 #include "meshes/atomic_file.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -89,14 +93,16 @@ const dem::WearLawParameter* linear_coefficient(const std::string& model) {
 struct CalibrateArguments {
   std::string run, measured; ///< run folder; measured volume as given, with its unit
   double revolutions = 0;    ///< simulated revolutions the measurement stands for
+  double time = 0;           ///< [s] of operation the measurement stands for (a scene's part)
   int from = 0;              ///< first revolution to average (0: after steady state)
+  std::string part;          ///< a scene's wearing part (--part)
 };
 
-double revolutions_argument(const std::string& v) {
+double number_argument(const std::string& option, const std::string& v) {
   try {
     return std::stod(v);
   } catch (const std::exception&) {
-    throw std::invalid_argument("wearsim calibrate: --revolutions '" + v + "' is not a number");
+    throw std::invalid_argument("wearsim calibrate: " + option + " '" + v + "' is not a number");
   }
 }
 
@@ -113,8 +119,8 @@ int from_argument(const std::string& v) {
 }
 
 CalibrateArguments calibrate_arguments(const std::vector<std::string>& args) {
-  const std::string usage = "usage: wearsim calibrate <run> --measured <volume with unit> "
-                            "--revolutions <n> [--from <revolution>]";
+  const std::string usage = "usage: wearsim calibrate <run> [--part <wall>] --measured <volume "
+                            "with unit> (--revolutions <n> | --time <s>) [--from <revolution>]";
   CalibrateArguments a;
   for (std::size_t k = 0; k < args.size(); ++k) {
     const auto value = [&]() -> std::string {
@@ -125,7 +131,11 @@ CalibrateArguments calibrate_arguments(const std::vector<std::string>& args) {
     if (args[k] == "--measured")
       a.measured = value();
     else if (args[k] == "--revolutions")
-      a.revolutions = revolutions_argument(value());
+      a.revolutions = number_argument("--revolutions", value());
+    else if (args[k] == "--time")
+      a.time = number_argument("--time", value());
+    else if (args[k] == "--part")
+      a.part = value();
     else if (args[k] == "--from")
       a.from = from_argument(value());
     else if (a.run.empty() && args[k].rfind("--", 0) != 0)
@@ -134,7 +144,7 @@ CalibrateArguments calibrate_arguments(const std::vector<std::string>& args) {
       throw std::invalid_argument("wearsim calibrate: unexpected argument '" + args[k] + "'; " +
                                   usage);
   }
-  if (a.run.empty() || a.measured.empty() || a.revolutions == 0)
+  if (a.run.empty() || a.measured.empty() || (a.revolutions == 0) == (a.time == 0))
     throw std::invalid_argument("wearsim calibrate: " + usage);
   return a;
 }
@@ -142,13 +152,15 @@ CalibrateArguments calibrate_arguments(const std::vector<std::string>& args) {
 void print_calibration(const CalibrateArguments& a, const Calibration& c, std::ostream& out) {
   char line[512];
   std::snprintf(line, sizeof line,
-                "run %s, wear law %s\n"
-                "simulated wear per revolution %.6g mm^3 (mean of %d revolutions from %d)\n"
-                "measured wear per revolution  %.6g mm^3\n"
+                "run %s%s, wear law %s\n"
+                "simulated wear per %s %.6g mm^3 (mean of %d %s from %d)\n"
+                "measured wear per %s  %.6g mm^3\n"
                 "%s: %.6g -> %.6g (x %.4g)\n",
-                a.run.c_str(), c.model.c_str(), c.simulated_per_rev * 1e9, c.n_revolutions,
-                c.first_revolution, c.measured_per_rev * 1e9, c.coefficient_name.c_str(),
-                c.coefficient, c.calibrated, c.calibrated / c.coefficient);
+                a.run.c_str(), a.part.empty() ? "" : (", part '" + a.part + "'").c_str(),
+                c.model.c_str(), c.unit.c_str(), c.simulated_per_rev * 1e9, c.n_revolutions,
+                c.unit == "s" ? "stages" : "revolutions", c.first_revolution, c.unit.c_str(),
+                c.measured_per_rev * 1e9, c.coefficient_name.c_str(), c.coefficient, c.calibrated,
+                c.calibrated / c.coefficient);
   out << line;
 }
 
@@ -157,27 +169,74 @@ void write_calibration(const CalibrateArguments& a, const Calibration& c, const 
   meshes::write_atomically(file, [&](std::ostream& f) {
     char text[1024];
     std::snprintf(text, sizeof text,
-                  "# wearsim calibrate: %s scaled so the steady wear per revolution of\n"
-                  "# %s (%.9g m^3, mean of %d revolutions from %d) equals the measured\n"
-                  "# %.9g m^3 per revolution (%s over %g simulated revolutions).\n"
+                  "# wearsim calibrate: %s scaled so the steady wear per %s of\n"
+                  "# %s%s (%.9g m^3, mean of %d %s from %d) equals the measured\n"
+                  "# %.9g m^3 per %s (%s over %g %s).\n"
                   "# Copy this subsection into a case file, or INCLUDE this file after it.\n"
                   "subsection Wear law\n"
                   "  set Model = %s\n"
                   "  set %s = %.9g\n"
                   "end\n",
-                  c.coefficient_name.c_str(), a.run.c_str(), c.simulated_per_rev, c.n_revolutions,
-                  c.first_revolution, c.measured_per_rev, a.measured.c_str(), a.revolutions,
-                  c.model.c_str(), c.coefficient_name.c_str(), c.calibrated);
+                  c.coefficient_name.c_str(), c.unit.c_str(), a.run.c_str(),
+                  a.part.empty() ? "" : (", part " + a.part).c_str(), c.simulated_per_rev,
+                  c.n_revolutions, c.unit == "s" ? "stages" : "revolutions", c.first_revolution,
+                  c.measured_per_rev, c.unit.c_str(), a.measured.c_str(),
+                  c.unit == "s" ? a.time : a.revolutions,
+                  c.unit == "s" ? "s of operation" : "simulated revolutions", c.model.c_str(),
+                  c.coefficient_name.c_str(), c.calibrated);
     f << text;
   });
 }
 } // namespace
 
+namespace {
+
+// A scene's part without an evaluation: its staged stages' wear-law volume per second.
+void calibrate_per_second(const std::string& run, const std::string& part, const CaseParameters& p,
+                          double measured_volume, double time, int from_stage, Calibration& c) {
+  const std::string path = run + "/parts/" + part + "/stages.csv";
+  const auto rows = read_summary(path);
+  if (rows.empty())
+    throw std::runtime_error("calibrate: '" + path + "' holds no finished stage");
+  double sum = 0;
+  for (const auto& row : rows) {
+    const int stage = int(number(row, "stage", path));
+    const bool staged = int(number(row, "scheme", path)) == int(Scheme::staged);
+    if (from_stage > 0 ? stage < from_stage : (!staged && c.n_revolutions == 0))
+      continue;
+    if (c.n_revolutions == 0)
+      c.first_revolution = stage;
+    sum += number(row, "dem_wear_volume_m3", path);
+    ++c.n_revolutions;
+  }
+  if (c.n_revolutions == 0)
+    throw std::runtime_error("calibrate: '" + path + "' has no " +
+                             (from_stage > 0 ? "stage from " + std::to_string(from_stage)
+                                             : std::string("staged stage")) +
+                             " (name the first stage to average with --from)");
+  c.unit = "s";
+  c.simulated_per_rev = sum / (c.n_revolutions * p.scene.stage_duration);
+  c.measured_per_rev = measured_volume / time;
+}
+
+} // namespace
+
 Calibration calibrate(const std::string& run, double measured_volume, double revolutions,
-                      int from_revolution) {
+                      int from_revolution, const std::string& part) {
   if (!(revolutions > 0) || !std::isfinite(revolutions))
-    throw std::invalid_argument("calibrate: --revolutions must be a positive number");
+    throw std::invalid_argument(std::string("calibrate: ") +
+                                (part.empty() ? "--revolutions" : "--revolutions or --time") +
+                                " must be a positive number");
   const CaseParameters p = read_case(run + "/parameters.prm");
+  const bool scene = !p.scene.walls.empty();
+  if (scene && part.empty())
+    throw std::runtime_error("calibrate: run '" + run +
+                             "' is a scene's; name its wearing part with --part <wall name>");
+  if (scene && std::none_of(p.scene.walls.begin(), p.scene.walls.end(),
+                            [&](const auto& w) { return w.name == part && w.wears; }))
+    throw std::runtime_error("calibrate: run '" + run + "' has no wearing part '" + part +
+                             "' (--part)");
+  const bool evaluated = !scene || p.scene.evaluation.wall == part;
   Calibration c;
   c.model = p.wear_law.model;
   const dem::WearLawParameter* coefficient = linear_coefficient(c.model);
@@ -186,7 +245,14 @@ Calibration calibrate(const std::string& run, double measured_volume, double rev
                              "/parameters.prm' has no coefficient to calibrate");
   c.coefficient_name = coefficient->name;
   c.coefficient = p.wear_law.*coefficient->member;
-  const std::string path = run + "/summary.csv";
+  if (!evaluated) {
+    calibrate_per_second(run, part, p, measured_volume, revolutions, from_revolution, c);
+    c.calibrated = c.coefficient * c.measured_per_rev / c.simulated_per_rev;
+    if (!(c.simulated_per_rev > 0))
+      throw std::runtime_error("calibrate: part '" + part + "' of '" + run + "' wore nothing");
+    return c;
+  }
+  const std::string path = (scene ? run + "/parts/" + part : run) + "/summary.csv";
   const auto rows = read_summary(path);
   if (rows.empty())
     throw std::runtime_error("calibrate: '" + path + "' holds no finished revolution");
@@ -195,8 +261,9 @@ Calibration calibrate(const std::string& run, double measured_volume, double rev
     const int steady = int(number(rows.back(), "steady_revolution", path));
     if (steady == 0)
       throw std::runtime_error(
-          "calibrate: the run '" + run +
-          "' never reached steady state (DEM/Steady threshold); "
+          "calibrate: the run '" + run + "' never reached steady state (" +
+          (scene ? "Scene/Evaluation" : "DEM") +
+          "/Steady threshold); "
           "run more revolutions, or name the first revolution to average with --from");
     first = steady + 1;
   }
@@ -222,8 +289,21 @@ Calibration calibrate(const std::string& run, double measured_volume, double rev
 
 int run_calibrate_command(const std::vector<std::string>& args, std::ostream& out) {
   const CalibrateArguments a = calibrate_arguments(args);
-  const Calibration c =
-      calibrate(a.run, parse_volume(a.measured, "--measured"), a.revolutions, a.from);
+  const CaseParameters p = read_case(a.run + "/parameters.prm");
+  if (!p.scene.walls.empty() && a.part.empty())
+    throw std::invalid_argument("wearsim calibrate: run '" + a.run +
+                                "' is a scene's; name its wearing part with --part <wall name>");
+  const bool per_second = !p.scene.walls.empty() && p.scene.evaluation.wall != a.part;
+  if (per_second && a.time == 0)
+    throw std::invalid_argument("wearsim calibrate: part '" + a.part +
+                                "' has no revolutions (Scene/Evaluation); give the time the "
+                                "measurement stands for with --time <s>");
+  if (!per_second && a.revolutions == 0)
+    throw std::invalid_argument("wearsim calibrate: give the revolutions the measurement stands "
+                                "for with --revolutions <n> (--time is for a scene's part "
+                                "without an evaluation)");
+  const Calibration c = calibrate(a.run, parse_volume(a.measured, "--measured"),
+                                  per_second ? a.time : a.revolutions, a.from, a.part);
   print_calibration(a, c, out);
   const std::string file = a.run + "/calibration.prm";
   write_calibration(a, c, file);

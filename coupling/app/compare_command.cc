@@ -11,11 +11,13 @@
 // (totals, per stage) get an interval across runs, and none from a single run.
 //
 // `--part <name>`: the runs are scenes (`wearsim scene-run`) and the figures those of their
-// wearing part <name> (parts/<name>/history.h5): the wear per stage (the wear-law volume of
-// the stage's DEM windows, unamplified) from the first staged stage on, or from --from, in
-// place of the wear per revolution after steady state; a scene has no steady-state judgement
-// of its own, so its first staged stage (after the dem-only stages that fill the equipment)
-// stands for it.
+// wearing part <name> (parts/<name>/). A part the scene evaluates (Scene/Evaluation, the
+// tester's sample) has its revolutions (periods) with their steady state, compared as a
+// tester's run, and a built-in tester's run on either side is read as its sample (the tester
+// against the tester as a scene). Another part has the wear per stage (the wear-law volume of the
+// stage's DEM windows, unamplified) from the first staged stage on, or from --from, in place of the
+// wear per revolution after steady state; it has no steady-state judgement of its own, so its first
+// staged stage (after the dem-only stages that fill the equipment) stands for it.
 #include "coupling/app/compare_command.h"
 
 #include "coupling/analysis/interval.h"
@@ -127,19 +129,25 @@ Run load_part(const std::string& dir, const std::string& side, int from, const s
 Run load(const std::string& dir, const std::string& side, int from, const std::string& part) {
   std::ostringstream warnings;
   const CaseParameters p = read_case(dir + "/parameters.prm", warnings);
-  if (!part.empty())
+  const bool tester = p.scene.walls.empty(); // the built-in tester's run: its sample
+  if (!tester && !part.empty() && p.scene.evaluation.wall != part)
     return load_part(dir, side, from, part, p);
-  if (!p.scene.walls.empty())
+  if (!tester && part.empty())
     throw std::runtime_error("side " + side + ": run '" + dir +
                              "' is a scene's (`wearsim scene-run`); name its wearing part with "
                              "--part <wall name>");
+  // the tester's run, or the part a scene evaluates as the tester's sample
+  const std::string folder = tester ? dir : dir + "/parts/" + part;
+  if (!tester && !std::filesystem::exists(folder + "/summary.csv"))
+    throw std::runtime_error("side " + side + ": part '" + part + "' of run '" + dir +
+                             "' has no finished stage yet (" + folder + "/summary.csv)");
   Run r;
   r.dir = dir;
   r.unit = "revolution";
   r.convex = p.geometry.sample.convex;
   r.kind = r.convex ? "convex" : "plain";
   r.seed = p.dem.seed;
-  const Hdf5Reader h5(dir + "/history.h5");
+  const Hdf5Reader h5(folder + "/history.h5");
   const auto revolution = h5.doubles("/revolutions/revolution");
   const auto wear = h5.doubles("/revolutions/wear_volume_m3");
   const auto cumulative = h5.doubles("/revolutions/wear_volume_cumulative_m3");
@@ -154,12 +162,13 @@ Run load(const std::string& dir, const std::string& side, int from, const std::s
     throw std::runtime_error("run '" + dir + "' has no finished revolution yet");
   r.n_revolutions = int(revolution.size());
   r.total_wear = cumulative.back();
-  r.steady_revolution = steady_revolution(dir + "/summary.csv");
+  r.steady_revolution = steady_revolution(folder + "/summary.csv");
   if (from == 0 && r.steady_revolution == 0)
-    throw std::runtime_error("side " + side + ": run '" + dir +
-                             "' never reached steady state (DEM/Steady threshold), so it has no "
-                             "revolutions after steady state; run more revolutions, or name the "
-                             "first revolution to average with --from");
+    throw std::runtime_error("side " + side + ": run '" + dir + "' never reached steady state (" +
+                             (tester ? "DEM" : "Scene/Evaluation") +
+                             "/Steady threshold), so it has no revolutions after steady state; "
+                             "run more revolutions, or name the first revolution to average "
+                             "with --from");
   r.first = from > 0 ? from : r.steady_revolution + 1;
   r.columns.resize(n_columns);
   for (std::size_t k = 0; k < revolution.size(); ++k) {

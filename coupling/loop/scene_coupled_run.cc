@@ -13,6 +13,8 @@
 //   3. The parts' new surfaces to their DEM walls, the particles kept (a part only recedes
 //      from them); a checkpoint.
 // "dem-only" stages change no surface. Without stages the run is one DEM stage to End time.
+// The part Scene/Evaluation names is sampled after every window and evaluated per period
+// (wearing_part.h).
 // Checkpoints are taken between two windows, where the engine is between two steps: the
 // engine's state with its continuation, the inlets' generators, the outlets' and flux planes'
 // counts, each worn part and its open stage's summed loads; a resumed run repeats the
@@ -164,7 +166,7 @@ std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::resume() {
   OpenSceneStage open{{}, s.stage_end};
   for (std::size_t i = 0; i < part_walls_.size(); ++i) {
     parts_.emplace_back(part_case_, part_walls_[i], s.parts[i], ranks_.writer());
-    walls[part_walls_[i]].surface.mesh = parts_.back().surface();
+    walls[part_walls_[i]].surface.mesh = parts_.back().wall_surface();
     open.loads.push_back(loads_of(s.parts[i].open, parts_.back().surface()));
   }
   scene_ = std::make_unique<dem::SceneRun>(p_.scene, p_.dem, std::move(walls));
@@ -228,10 +230,17 @@ SceneCoupledRun::run_dem(StageRecord& r, std::optional<OpenSceneStage> open,
   const double interval = p_.output.checkpoint_interval;
   meshes::Stopwatch since_checkpoint;
   while (scene_->time() < stage.end - 1e-9 * every) {
+    const meshes::Stopwatch window_clock;
     const dem::SceneWindow w = scene_->advance(std::min(stage.end, scene_->time() + every));
-    if (w.integrated > 0)
-      for (std::size_t i = 0; i < parts_.size(); ++i)
-        stage.loads[i] += scene_->wall_loads(parts_[i].wall(), *law_, w);
+    const double window_seconds = window_clock.seconds();
+    for (std::size_t i = 0; i < parts_.size(); ++i) {
+      const dem::WallLoads window =
+          w.integrated > 0 ? parts_[i].own_loads(scene_->wall_loads(parts_[i].wall(), *law_, w))
+                           : dem::WallLoads::zero(parts_[i].surface());
+      if (w.integrated > 0)
+        stage.loads[i] += window;
+      parts_[i].observe(*scene_, w, *law_, window, window_seconds);
+    }
     record(w);
     if (!parts_.empty())
       log_ << "stage " << r.stage << "/" << plan_.size() << " " << scheme_name(r.scheme) << ": ";
@@ -269,7 +278,7 @@ void SceneCoupledRun::run_parts(const StageRecord& r, const std::vector<dem::Wal
       ranks_.require_same(parts_[i].surface(), "part '" + parts_[i].name() +
                                                    "' after the FEM part of stage " +
                                                    std::to_string(r.stage));
-      scene_->replace_wall_surface(parts_[i].wall(), parts_[i].surface());
+      scene_->replace_wall_surface(parts_[i].wall(), parts_[i].wall_surface());
     }
   if (!parts_.empty())
     log_ << format("stage %d %s done at t = %.4g s, DEM %.0f s\n", r.stage,

@@ -11,8 +11,10 @@
 //   3. Geometry (staged): recession, mesh motion or remeshing (fem::WornSample).
 //   4. Output: the surface and volume with their fields (HDF5 + XDMF, VTU), stages.csv,
 //      part_wear.csv (volume per surface, per stage and cumulative).
-// A part is held at its clamped surfaces only: the tester's holder support (u . n = 0 on the
-// sample's sides) is set in the sample's own frame, and a scene's FEM works in the scene's.
+// A part is held at its clamped surfaces; the tester's sample (Source = sample) works in its own
+// frame as the built-in tester's (its loads' vectors turned into it, its surface placed in the
+// scene for the DEM wall), clamped at its bottom and, in a scene with the holder, its sides held
+// normal to themselves (u . n = 0) as the holder holds them.
 // Assumption: the tester's worn-through check (a clamped bottom below the wear face) does not
 // apply to a part; a part worn through folds its surface and the stage stops with the fold
 // message.
@@ -28,6 +30,7 @@
 #include "meshes/sample_generator.h"
 #include "meshes/stopwatch.h"
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -37,23 +40,35 @@ namespace {
 
 /// The part's remeshing and mesh sizes: the wall's Mesh size everywhere (equal top and
 /// bottom sizes make the sample's graded size field uniform, whatever its thickness). The
-/// tester's sample keeps its own sizes and grading (Geometry/Sample), measured along its up
-/// direction from its bottom's plane where Geometry/Placement puts it.
+/// tester's sample keeps its own sizes and grading (Geometry/Sample) in its own frame.
 fem::WornSampleParameters part_parameters(const CaseParameters& p,
                                           const dem::SceneWallParameters& wall) {
   const std::string dir = part_directory(p, wall.name) + "/mesh";
-  if (dem::wall_source_of(wall).source == dem::WallSource::sample) {
-    fem::WornSampleParameters w = fem::worn_sample_parameters(p.fem, p.geometry.sample, dir);
-    const meshes::SampleFrame frame(p.geometry.sample, p.geometry.placement);
-    w.remesh.up = frame.vector_to_tester({0, 0, 1});
-    w.remesh.up_offset = meshes::dot(w.remesh.up, frame.point_to_tester({0, 0, 0}));
-    return w;
-  }
+  if (dem::wall_source_of(wall).source == dem::WallSource::sample)
+    return fem::worn_sample_parameters(p.fem, p.geometry.sample, dir);
   meshes::SampleGeometry sizes;
   sizes.mesh_size = sizes.mesh_size_bottom = wall.mesh_size;
   sizes.thickness = wall.mesh_size;
   sizes.curvature_refinement = false;
   return fem::worn_sample_parameters(p.fem, sizes, dir);
+}
+
+/// The tester's sample's own frame (Geometry/Sample placed by Geometry/Placement), where its
+/// FEM works as the built-in tester's does; none for any other part (the wall's frame).
+std::optional<meshes::SampleFrame> part_frame(const CaseParameters& p,
+                                              const dem::SceneWallParameters& wall) {
+  if (dem::wall_source_of(wall).source != dem::WallSource::sample)
+    return std::nullopt;
+  return meshes::SampleFrame(p.geometry.sample, p.geometry.placement);
+}
+
+/// The tester's sample rests in its holder when the scene has one (Source = holder): its sides
+/// are held normal to themselves (u . n = 0), as in the built-in tester.
+bool held_sides(const CaseParameters& p, const dem::SceneWallParameters& wall) {
+  return dem::wall_source_of(wall).source == dem::WallSource::sample &&
+         std::any_of(p.scene.walls.begin(), p.scene.walls.end(), [](const auto& w) {
+           return dem::wall_source_of(w).source == dem::WallSource::holder;
+         });
 }
 
 const char* part_wear_header =
@@ -72,6 +87,7 @@ std::string part_directory(const CaseParameters& p, const std::string& name) {
 WearingPart::WearingPart(const CaseParameters& p, std::size_t index, dem::SceneWall& wall,
                          std::ostream& log, bool writes)
     : wall_(index), name_(wall.parameters.name), directory_(part_directory(p, name_)),
+      frame_(part_frame(p, wall.parameters)), held_sides_(held_sides(p, wall.parameters)),
       writes_(writes) {
   const auto worn = part_parameters(p, wall.parameters);
   meshes::ensure_directory(directory_ + "/mesh");
@@ -79,10 +95,10 @@ WearingPart::WearingPart(const CaseParameters& p, std::size_t index, dem::SceneW
   const std::string msh = directory_ + "/mesh/part.msh";
   std::size_t n_tetrahedra = 0;
   meshes::SurfaceMesh surface;
-  if (dem::wall_source_of(wall.parameters).source == dem::WallSource::sample) { // placed mesh
+  if (frame_) { // the tester's sample, in its own frame
     meshes::SampleGeometry sg = p.geometry.sample;
     sg.volume_mesh = true;
-    const auto g = meshes::generate_sample(sg, msh, &p.geometry.placement);
+    const auto g = meshes::generate_sample(sg, msh);
     surface = g.surface;
     n_tetrahedra = g.n_tetrahedra;
   } else {
@@ -91,7 +107,7 @@ WearingPart::WearingPart(const CaseParameters& p, std::size_t index, dem::SceneW
     n_tetrahedra = report.n_tetrahedra;
   }
   sample_ = std::make_unique<fem::WornSample>(msh, surface, worn);
-  wall.surface.mesh = surface;
+  wall.surface.mesh = wall_surface();
   std::string labels;
   for (const auto& [label, area] : meshes::area_per_label(surface))
     labels += " " + meshes::label::name(label);
@@ -100,6 +116,45 @@ WearingPart::WearingPart(const CaseParameters& p, std::size_t index, dem::SceneW
                 meshes::enclosed_volume(surface) * 1e9, labels.c_str(), clock.seconds());
   previous_stress_ = von_mises_on(surface);
   output_ = std::make_unique<RunOutput>(directory_, writes_);
+  make_evaluation(p);
+}
+
+void WearingPart::make_evaluation(const CaseParameters& p) {
+  if (p.scene.evaluation.wall == name_)
+    evaluation_ = std::make_unique<dem::SceneEvaluation>(
+        p.scene, p.geometry, p.dem.psd.mean_diameter(), wall_, wall_surface());
+}
+
+meshes::SurfaceMesh WearingPart::wall_surface() const {
+  return frame_ ? frame_->place_in_tester(surface()) : surface();
+}
+
+dem::WallLoads WearingPart::own_loads(const dem::WallLoads& wall_loads) const {
+  if (!frame_)
+    return wall_loads;
+  const meshes::SampleFrame& frame = *frame_;
+  return wall_loads.follow(surface(),
+                           [&frame](const meshes::Vec3& v) { return frame.vector_to_sample(v); });
+}
+
+void WearingPart::observe(const dem::SceneRun& scene, const dem::SceneWindow& w,
+                          const dem::WearLaw& law, const dem::WallLoads& window,
+                          double wall_seconds) {
+  if (evaluation_)
+    evaluation_->observe(scene, w, law, window.wear_volume.values(), wall_seconds);
+}
+
+const std::vector<dem::RevolutionRecord>& WearingPart::revolutions() const {
+  static const std::vector<dem::RevolutionRecord> none;
+  return evaluation_ ? evaluation_->history() : none;
+}
+
+void WearingPart::write_tables() const {
+  if (evaluation_)
+    output_->write_tables(evaluation_->history(), stages_, evaluation_->n_columns(),
+                          evaluation_->element_labels());
+  else
+    output_->write_tables({}, stages_, 0, {});
 }
 
 void WearingPart::record_initial(double time) {
@@ -111,7 +166,12 @@ void WearingPart::record_initial(double time) {
 WearingPart::WearingPart(const CaseParameters& p, std::size_t index, const PartCheckpoint& c,
                          bool writes)
     : wall_(index), name_(p.scene.walls.at(index).name), directory_(part_directory(p, name_)),
+      frame_(part_frame(p, p.scene.walls[index])), held_sides_(held_sides(p, p.scene.walls[index])),
       writes_(writes), stages_(c.stages) {
+  if (frame_ && !c.sample_frame)
+    throw std::runtime_error("--resume: the checkpoint holds the tester's sample '" + name_ +
+                             "' in the scene's frame (an older engine's); run the case again "
+                             "with --overwrite");
   meshes::ensure_directory(directory_ + "/mesh"); // a rank's scratch copy starts empty
   sample_ = std::make_unique<fem::WornSample>(c.sample, part_parameters(p, p.scene.walls[index]));
   previous_stress_ = von_mises_on(sample_->surface());
@@ -120,6 +180,15 @@ WearingPart::WearingPart(const CaseParameters& p, std::size_t index, const PartC
     removed_per_label_[c.labels[k]] = c.removed_per_label[k];
   output_ = std::make_unique<RunOutput>(directory_, writes_);
   output_->reload(stages_);
+  make_evaluation(p);
+  if (evaluation_ != nullptr) {
+    if (!c.evaluation)
+      throw std::runtime_error("--resume: the checkpoint holds no evaluation of part '" + name_ +
+                               "' (Scene/Evaluation/Wall); run the case again with --overwrite");
+    evaluation_->resume(*c.evaluation);
+  } else if (c.evaluation)
+    throw std::runtime_error("--resume: the checkpoint holds an evaluation of part '" + name_ +
+                             "' the case does not ask (Scene/Evaluation/Wall)");
   // part_wear.csv as it stood after the checkpoint's stages.
   std::ifstream in(directory_ + "/part_wear.csv");
   std::string line;
@@ -142,7 +211,7 @@ bool WearingPart::run_stage(StageRecord r, const dem::WallLoads& loads, const Ca
   if (staged) {
     fem::ElasticityParameters ep = p.fem.elasticity;
     ep.averaging_radius = stress_averaging_radius(p);
-    ep.holder_support = false;
+    ep.holder_support = held_sides_;
     const StageStress stress = solve_stage_stress(*sample_, loads, ep, *output_, r);
     GeometryUpdate update = apply_stage_wear(*sample_, increment, stress, r);
     for (const auto& refusal : update.report.remesh_refusals)
@@ -167,8 +236,14 @@ bool WearingPart::run_stage(StageRecord r, const dem::WallLoads& loads, const Ca
   r.n_surface_faces = int(surface.n_faces());
   r.n_tetrahedra = int(sample_->triangulation().n_active_cells());
   r.output_seconds += clock.seconds();
+  if (evaluation_) { // the periods of this stage (a stage is a whole number of them)
+    if (staged)
+      evaluation_->set_surface(wall_surface());
+    r.first_revolution = stages_.empty() ? 1 : stages_.back().last_revolution + 1;
+    r.last_revolution = int(evaluation_->history().size());
+  }
   stages_.push_back(r);
-  output_->write_tables({}, stages_, 0, {});
+  write_tables();
   if (staged) // a dem-only stage's volume changes nothing
     for (const auto& [label, v] : stage_per_label)
       removed_per_label_[label] += v;
@@ -201,6 +276,9 @@ PartCheckpoint WearingPart::state(const dem::WallLoads& open) const {
     c.removed_per_label.push_back(v);
   }
   c.open = open_stage(open, 0, 0, {});
+  if (evaluation_)
+    c.evaluation = evaluation_->state();
+  c.sample_frame = frame_.has_value();
   return c;
 }
 

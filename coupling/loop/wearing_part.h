@@ -4,17 +4,22 @@
 // moved and remeshed by fem::WornSample. A scene holds any number of them; each has its own
 // sample, stress, stage records and output folder (Output/Directory/parts/<wall name>:
 // stages.csv, part_wear.csv, history.xdmf with the surface and volume per stage, mesh/), and
-// writes and reads its own part of the run's checkpoint.
+// writes and reads its own part of the run's checkpoint. The part Scene/Evaluation names (the
+// tester's sample) is also evaluated period by period as the tester's revolutions
+// (dem/scene/scene_evaluation.h): summary.csv and history.h5's revolutions in its folder.
 #include "coupling/loop/stage_record.h"
 #include "coupling/output/run_output.h"
 #include "coupling/output/scene_checkpoint.h"
 #include "coupling/parameters/case_parameters.h"
+#include "dem/scene/scene_evaluation.h"
 #include "dem/scene/scene_walls.h"
 #include "dem/wear/wall_loads.h"
 #include "fem/worn_sample.h"
+#include "meshes/sample_frame.h"
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -39,7 +44,13 @@ public:
   std::size_t wall() const { return wall_; } ///< index among the scene's walls
   const std::string& name() const { return name_; }
   const fem::WornSample& sample() const { return *sample_; }
+  /// The part's surface in its own frame, where its FEM works: the wall's (a moving wall's
+  /// body frame), or the tester's sample's own (Geometry/Sample).
   const meshes::SurfaceMesh& surface() const { return sample_->surface(); }
+  /// The surface in the DEM wall's frame (the sample placed by Geometry/Placement).
+  meshes::SurfaceMesh wall_surface() const;
+  /// A window's loads on the wall (its frame, SceneRun::wall_loads) in the part's own frame.
+  dem::WallLoads own_loads(const dem::WallLoads& wall_loads) const;
   const std::vector<StageRecord>& stages() const { return stages_; }
   /// [m^3] removed volume asked of the geometry per label, summed over the staged stages
   /// (part_wear.csv also lists a dem-only stage's amplified wear-law volume, which changes
@@ -47,6 +58,14 @@ public:
   const std::map<int, double>& removed_per_label() const { return removed_per_label_; }
   /// Where the part writes: Output/Directory/parts/<name>.
   const std::string& directory() const { return directory_; }
+
+  /// After window w of the scene, its loads on the part (`window`) and its
+  /// wall time [s]: the evaluation's sample and, at a period's end, its record (every rank
+  /// calls it together). Nothing without an evaluation.
+  void observe(const dem::SceneRun& scene, const dem::SceneWindow& w, const dem::WearLaw& law,
+               const dem::WallLoads& window, double wall_seconds);
+  /// The evaluation's records, or none without one.
+  const std::vector<dem::RevolutionRecord>& revolutions() const;
 
   /// Stage r (its number, scheme, amplification, time and DEM figures set) under the loads
   /// the DEM summed on the part (part frame): the wear increment; for a staged stage the
@@ -60,8 +79,11 @@ public:
 private:
   std::size_t wall_;
   std::string name_, directory_;
+  std::optional<meshes::SampleFrame> frame_; ///< the tester's sample's own frame, or none
+  bool held_sides_ = false;                  ///< the sample's sides held by the holder
   std::unique_ptr<fem::WornSample> sample_;
   std::unique_ptr<RunOutput> output_;
+  std::unique_ptr<dem::SceneEvaluation> evaluation_; ///< the tester's evaluation, or none
   bool writes_ = true;
   std::vector<StageRecord> stages_;
   /// [Pa] the last staged stage's von Mises stress on the part's faces (zeros before the
@@ -69,6 +91,11 @@ private:
   meshes::FaceField<double> previous_stress_;
   std::map<int, double> removed_per_label_;
   std::string wear_rows_; ///< part_wear.csv's rows so far
+
+  /// The evaluation Scene/Evaluation asks of this part, on its surface (scene frame).
+  void make_evaluation(const CaseParameters& p);
+  /// The part's tables: stages.csv, history.h5 and, evaluated, summary.csv.
+  void write_tables() const;
 };
 
 /// Output/Directory/parts/<name>: a wearing part's folder.

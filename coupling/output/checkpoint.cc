@@ -396,6 +396,24 @@ void write_stage_records(Hdf5File& h5, const std::string& g, const std::vector<S
   write_records(h5, g, r);
 }
 
+void write_revolution_records(Hdf5File& h5, const std::string& g,
+                              const std::vector<dem::RevolutionRecord>& r) {
+  write_records(h5, g, r);
+}
+
+std::vector<dem::RevolutionRecord> read_revolution_records(const Hdf5Reader& h5,
+                                                           const std::string& g) {
+  return read_records<dem::RevolutionRecord>(h5, g);
+}
+
+void write_revolution_samples(Hdf5File& h5, const std::string& g, const dem::RevolutionSamples& s) {
+  write_samples(h5, g, s);
+}
+
+dem::RevolutionSamples read_revolution_samples(const Hdf5Reader& h5, const std::string& g) {
+  return read_samples(h5, g);
+}
+
 std::vector<StageRecord> read_stage_records(const Hdf5Reader& h5, const std::string& g) {
   return read_records<StageRecord>(h5, g);
 }

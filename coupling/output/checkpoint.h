@@ -9,7 +9,7 @@
 #include "coupling/output/checkpoint_arrays.h"
 #include "coupling/output/scene_checkpoint.h"
 #include "dem/engine/system.h"
-#include "dem/tester/tester_evaluation.h"
+#include "dem/evaluation/tester_evaluation.h"
 #include "dem/tester/wear_tester.h"
 
 #include <optional>

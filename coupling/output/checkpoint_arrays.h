@@ -70,5 +70,14 @@ void read_load_arrays(const Hdf5Reader& h5, const std::string& g, OpenStage& o);
 /// the text attribute g:distortions (checkpoint.cc, beside the record's field list).
 void write_stage_records(Hdf5File& h5, const std::string& g, const std::vector<StageRecord>& r);
 std::vector<StageRecord> read_stage_records(const Hdf5Reader& h5, const std::string& g);
+/// The same for an evaluation's records, one per revolution (or period).
+void write_revolution_records(Hdf5File& h5, const std::string& g,
+                              const std::vector<dem::RevolutionRecord>& r);
+std::vector<dem::RevolutionRecord> read_revolution_records(const Hdf5Reader& h5,
+                                                           const std::string& g);
+/// An open revolution's (or period's) samples in group g: scalars, the per-face sums at the
+/// last sample, the per-sample series, column forces as n_columns x n_samples.
+void write_revolution_samples(Hdf5File& h5, const std::string& g, const dem::RevolutionSamples& s);
+dem::RevolutionSamples read_revolution_samples(const Hdf5Reader& h5, const std::string& g);
 
 } // namespace wear::coupling

@@ -4,7 +4,11 @@
 //   n_flux_planes, flux_plane_<k>/{ids, last, counts}
 //   rank_bounds         the slabs' cuts of a run over ranks (empty from one process)
 //   n_parts, part_<k>/{sample/..., face_von_mises, stages/..., labels, removed_per_label,
-//                      open_loads/... with attribute duration}
+//                      open_loads/... with attribute duration, attribute sample_frame for the
+//                      tester's sample (kept in its own frame), and with Scene/Evaluation
+//                      evaluation/{records/..., samples/..., sums (removed, normal_impulse,
+//                      wear_volume as n_faces x 3), scalars (windows, contact total, wall
+//                      seconds, particle-steps)}}
 #include "coupling/output/scene_checkpoint.h"
 
 #include <stdexcept>
@@ -25,6 +29,40 @@ void write_part(Hdf5File& h5, const std::string& g, const PartCheckpoint& p) {
   write_doubles(h5, g + "/removed_per_label", p.removed_per_label);
   write_load_arrays(h5, g + "/open_loads", p.open);
   h5.attribute(g + "/open_loads/impulse", "duration", p.open.duration);
+  if (p.sample_frame)
+    h5.attribute(g, "sample_frame", 1.0);
+  if (!p.evaluation)
+    return;
+  h5.attribute(g, "evaluated", 1.0);
+  const auto& e = *p.evaluation;
+  write_revolution_records(h5, g + "/evaluation/records", e.history);
+  write_revolution_samples(h5, g + "/evaluation/samples", e.samples);
+  std::vector<double> sums;
+  for (std::size_t f = 0; f < e.removed.size(); ++f)
+    sums.insert(sums.end(), {e.removed[f], e.normal_impulse[f], e.wear_volume[f]});
+  h5.write(g + "/evaluation/sums", sums, {e.removed.size(), 3});
+  write_doubles(h5, g + "/evaluation/scalars",
+                {double(e.n_windows), e.contact_total, e.wall_seconds, e.particle_steps});
+}
+
+dem::SceneEvaluationState read_evaluation(const Hdf5Reader& h5, const std::string& g) {
+  dem::SceneEvaluationState e;
+  e.history = read_revolution_records(h5, g + "/records");
+  e.samples = read_revolution_samples(h5, g + "/samples");
+  const auto dims = h5.dims(g + "/sums");
+  const auto sums = h5.doubles(g + "/sums");
+  if (dims.size() != 2 || dims[1] != 3 || sums.size() != dims[0] * 3)
+    throw std::runtime_error("'" + g + "/sums' is not n_faces x 3");
+  for (std::size_t f = 0; f < dims[0]; ++f) {
+    e.removed.push_back(sums[3 * f]);
+    e.normal_impulse.push_back(sums[3 * f + 1]);
+    e.wear_volume.push_back(sums[3 * f + 2]);
+  }
+  const auto x = h5.doubles(g + "/scalars");
+  if (x.size() != 4 || !(x[0] >= 0))
+    throw std::runtime_error("'" + g + "/scalars' does not hold the open period's progress");
+  e.n_windows = int(x[0]), e.contact_total = x[1], e.wall_seconds = x[2], e.particle_steps = x[3];
+  return e;
 }
 
 PartCheckpoint read_part(const Hdf5Reader& h5, const std::string& g) {
@@ -41,6 +79,9 @@ PartCheckpoint read_part(const Hdf5Reader& h5, const std::string& g) {
     throw std::runtime_error("the stress or loads of '" + g + "' are not on its surface's faces");
   if (p.labels.size() != p.removed_per_label.size())
     throw std::runtime_error("the per-label volumes of '" + g + "' differ in length");
+  p.sample_frame = h5.has_attribute(g, "sample_frame");
+  if (h5.has_attribute(g, "evaluated"))
+    p.evaluation = read_evaluation(h5, g + "/evaluation");
   return p;
 }
 

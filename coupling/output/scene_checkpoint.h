@@ -5,8 +5,10 @@
 #include "coupling/output/checkpoint_arrays.h"
 #include "dem/scene/flux_plane.h"
 #include "dem/scene/inlet.h"
+#include "dem/scene/scene_evaluation.h"
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace wear::coupling {
@@ -20,6 +22,10 @@ struct PartCheckpoint {
   std::vector<int> labels;               ///< the part's labels with removed volume so far
   std::vector<double> removed_per_label; ///< [m^3] per label above (staged stages)
   OpenStage open;                        ///< the open stage's loads (part frame)
+  /// The part's evaluation (Scene/Evaluation), or none
+  std::optional<dem::SceneEvaluationState> evaluation;
+  /// The part is the tester's sample, kept in its own frame (the sample's state and loads)
+  bool sample_frame = false;
 };
 
 struct SceneCheckpoint {

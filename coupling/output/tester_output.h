@@ -2,7 +2,7 @@
 // Output of a wear-tester run: history.h5 (the sample surface and every per-face field per
 // revolution, particle snapshots), history.xdmf beside it for ParaView, and summary.csv
 // with one row per revolution. Every file is rewritten atomically after each revolution.
-#include "dem/tester/tester_evaluation.h"
+#include "dem/evaluation/tester_evaluation.h"
 #include "dem/tester/wear_tester.h"
 
 #include <ostream>

@@ -1,8 +1,8 @@
 // A wear-tester case as a scene case (tester_scene_case.h). The values the tester reads from
-// its own entries (fill height, rotation rate, samples per revolution, sector, walls,
-// consolidator) go into the scene's walls, fill and stages; the entries themselves return to
-// their defaults, so that the scene case sets nothing a scene does not use (case_scope.h
-// refuses those) and reads back as the same case.
+// its own entries (fill height, rotation rate, samples per revolution, steady state, sector,
+// walls, consolidator) go into the scene's walls, fill, stages and evaluation; the entries
+// themselves return to their defaults, so that the scene case sets nothing a scene does not use
+// (case_scope.h refuses those) and reads back as the same case.
 #include "coupling/parameters/tester_scene_case.h"
 
 #include "coupling/parameters/engine_version.h"

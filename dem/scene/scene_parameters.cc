@@ -154,6 +154,53 @@ bool moves_rigidly(const SceneWallParameters& w) {
   return wall_motion_of(w).rigid;
 }
 
+namespace {
+
+/// n when x is n times `unit` to 1e-6 of it, else 0.
+long whole_multiple(double x, double unit) {
+  const double n = std::round(x / unit);
+  return n >= 1 && std::abs(x - n * unit) <= 1e-6 * unit ? long(n) : 0;
+}
+
+void validate_evaluation(const SceneParameters& s) {
+  const auto& e = s.evaluation;
+  const SceneEvaluationParameters defaults;
+  if (e.wall.empty()) {
+    if (e.period != defaults.period || e.steady_threshold != defaults.steady_threshold ||
+        e.steady_periods != defaults.steady_periods)
+      throw std::invalid_argument("Scene/Evaluation: Period and the steady-state entries "
+                                  "evaluate a wall; name it in Scene/Evaluation/Wall (or leave "
+                                  "them out)");
+    return;
+  }
+  const auto w = std::find_if(s.walls.begin(), s.walls.end(),
+                              [&](const SceneWallParameters& x) { return x.name == e.wall; });
+  if (w == s.walls.end())
+    throw std::invalid_argument("Scene/Evaluation/Wall: '" + e.wall +
+                                "' is not a wall of Scene/Walls");
+  if (wall_source_of(*w).source != WallSource::sample || !w->wears)
+    throw std::invalid_argument("Scene/Evaluation/Wall: '" + e.wall +
+                                "' is not the tester's sample; the evaluation's columns and "
+                                "elements are the sample's (Source = sample, Wears = true)");
+  if (!(s.stage_duration > 0))
+    throw std::invalid_argument("Scene/Evaluation/Wall: the evaluation is a wearing part's and "
+                                "needs stages (Scene/Stage duration)");
+  if (!(e.period > 0))
+    throw std::invalid_argument("Scene/Evaluation/Period must be positive [s]");
+  if (whole_multiple(e.period, s.output_interval) < 2)
+    throw std::invalid_argument("Scene/Evaluation/Period: must be a whole number (at least two) "
+                                "of Scene/Output interval, its samples; got " +
+                                std::to_string(e.period / s.output_interval));
+  if (whole_multiple(s.stage_duration, e.period) < 1)
+    throw std::invalid_argument("Scene/Evaluation/Period: Scene/Stage duration must be a whole "
+                                "number of periods (a period never spans two stages); got " +
+                                std::to_string(s.stage_duration / e.period));
+  if (!(e.steady_threshold > 0))
+    throw std::invalid_argument("Scene/Evaluation/Steady threshold must be positive");
+}
+
+} // namespace
+
 void validate(const SceneParameters& s) {
   const auto three = [](const std::vector<double>& v, const std::string& what) {
     if (v.size() != 3)
@@ -336,6 +383,7 @@ void validate(const SceneParameters& s) {
                                     "direction");
     }
   }
+  validate_evaluation(s);
   for (const auto& in : s.inlets) {
     const std::string p = "Scene/Inlet " + in.name;
     three(in.corner, p + "/Corner");

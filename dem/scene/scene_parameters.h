@@ -92,6 +92,16 @@ struct SceneFillParameters {
   std::string clear_above;              ///< walls in the region with no particle placed above
 };
 
+/// The wear tester's evaluation of a scene's sample (Source = sample), one record per period
+/// (dem/scene/scene_evaluation.h): wear per column and element, normal force, bottom-layer
+/// speed and spin, bed height, steady state.
+struct SceneEvaluationParameters {
+  std::string wall;              ///< the evaluated wall's name; empty: no evaluation
+  double period = 0;             ///< [s] of one record (a revolution of the tester)
+  double steady_threshold = 0.1; ///< [-] coefficient of variation below which a period is steady
+  int steady_periods = 2;        ///< consecutive steady periods that judge the run steady
+};
+
 /// A grid of boxes on which the run bins the particles' solid fraction and velocity.
 struct SceneFieldParameters {
   std::vector<int> cells{0, 0, 0};      ///< nx, ny, nz; 0: no fields
@@ -110,6 +120,7 @@ struct SceneParameters {
   std::vector<SceneFluxPlaneParameters> flux_planes; ///< one per name, in that order
   SceneFillParameters fill;
   SceneFieldParameters fields;
+  SceneEvaluationParameters evaluation;
   std::vector<double> domain_min{-10, -10, -10}; ///< [m] particles and walls stay inside
   std::vector<double> domain_max{10, 10, 10};    ///< [m]
   std::vector<double> gravity{0, 0, -9.81};      ///< [m/s^2]
@@ -249,6 +260,25 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
          "placed: a plate submerged in the bed, such as a leveller, would otherwise carry "
          "the particles dropped on it through the run. The column over the wall's bounding "
          "box, widened by a largest diameter, stays empty while the bed is placed.");
+  v.leave();
+  v.enter("Evaluation");
+  v.text("Wall", s.evaluation.wall,
+         "The wear tester's evaluation of this wall, the scene's sample (Source = sample, Wears = "
+         "true): per Period, the wear-law volume per column of the pattern and per convex "
+         "element, the normal force on the wear face, the bottom layer's speed and spin, the "
+         "speed over the sample, the bed height and the coefficients of variation that judge "
+         "steady state, as the built-in tester's revolutions (docs/wear-tester.md); written "
+         "to parts/<wall>/summary.csv and history.h5, which `wearsim compare --part <wall>` "
+         "reads. Its samples are the records (Output interval). Empty: none.");
+  v.real("Period", s.evaluation.period,
+         "[s] Simulated time of one evaluation record (the tester's revolution): a whole "
+         "number of Output intervals, at least two, and Stage duration a whole number of "
+         "periods.");
+  v.real("Steady threshold", s.evaluation.steady_threshold,
+         "[-] Coefficient of variation (over a period's samples) of the speed over the "
+         "sample, the bed height and the wear rate below which a period counts as steady.");
+  v.integer("Steady periods", s.evaluation.steady_periods, 1, 1000,
+            "Consecutive steady periods that judge the run steady.");
   v.leave();
   v.enter("Fields");
   v.int_list("Cells", s.fields.cells,

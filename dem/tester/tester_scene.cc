@@ -7,6 +7,8 @@
 // rectangle of the same height, centred on its angle, spanning r0 = r_i + 0.5 mm to
 // r1 = sqrt((r_o - 1 mm)^2 - (w/2)^2) radially (its outer corners 1 mm inside the outer
 // cylinder) and w = e (r_i + r_o) / 2 across: the sector's area to within a few per cent.
+// The sample is evaluated per revolution as the built-in tester's (Scene/Evaluation, its
+// steady state judged by DEM/Steady threshold and Steady revolutions).
 #include "dem/tester/tester_scene.h"
 
 #include "dem/tester/wear_tester.h"
@@ -103,6 +105,10 @@ SceneParameters tester_scene(const meshes::GeometryParameters& geometry,
   s.stage_duration = revolutions_per_stage * revolution;
   s.output_interval = revolution / dem.samples_per_revolution;
   s.particle_snapshots = false;
+  s.evaluation.wall = "sample";
+  s.evaluation.period = revolution;
+  s.evaluation.steady_threshold = dem.steady_threshold;
+  s.evaluation.steady_periods = dem.steady_revolutions;
 
   auto& fill = s.fill;
   fill.region = "cylinder";

@@ -11,6 +11,7 @@
 //   seeds a side, the interval across runs of each run's mean; a scene run without --part, a
 //   part the run does not have, and --part without a name are refused.
 #include "coupling/analysis/interval.h"
+#include "coupling/app/calibrate_command.h"
 #include "coupling/app/compare_command.h"
 #include "coupling/output/run_output.h"
 #include "plate_scene.h"
@@ -254,4 +255,45 @@ TEST_CASE("wearsim compare --part: a scene's wearing part, per stage from its fi
              Catch::Contains("no wearing part 'skirt'") && Catch::Contains("wearing walls: plate"));
   CHECK_THAT(error_of({"compare_scene_a1", "compare_scene_b1", "--part"}),
              Catch::Contains("--part needs the name"));
+}
+
+TEST_CASE("wearsim calibrate --part: a scene's part per second of its staged stages",
+          "[coupling][calibrate]") {
+  const std::string dir = "calibrate_scene";
+  const std::vector<double> staged = write_scene_run(dir, 45, 1e-9);
+  double sum = 0;
+  for (double v : staged)
+    sum += v;
+  const CaseParameters p = read_case(dir + "/parameters.prm");
+  const double rate = sum / double(staged.size()) / p.scene.stage_duration; // [m^3/s]
+  // 2 mm^3 measured over 100 s of operation: the coefficient scales by (2e-9 / 100) / rate;
+  // the dem-only stage, five times the wear, is left out.
+  const Calibration c = calibrate(dir, 2e-9, 100, 0, "plate");
+  CHECK(c.unit == "s");
+  CHECK(c.n_revolutions == 12);
+  CHECK(c.first_revolution == 2);
+  // (stages.csv keeps 10 digits)
+  CHECK(c.simulated_per_rev == Approx(rate).epsilon(1e-8));
+  CHECK(c.calibrated / c.coefficient == Approx(2e-11 / rate).epsilon(1e-8));
+  CHECK(calibrate(dir, 2e-9, 100, 5, "plate").n_revolutions == 9); // --from 5: stages 5 to 13
+  // through the command: the part without an evaluation takes --time, not --revolutions
+  std::ostringstream out;
+  REQUIRE(run_calibrate_command({dir, "--part", "plate", "--measured", "2mm^3", "--time", "100"},
+                                out) == 0);
+  CHECK_THAT(out.str(), Catch::Contains("per s") && Catch::Contains("part 'plate'"));
+  CHECK(std::filesystem::exists(dir + "/calibration.prm"));
+  const auto refused = [&](const std::vector<std::string>& args) {
+    std::ostringstream o;
+    try {
+      run_calibrate_command(args, o);
+    } catch (const std::exception& e) {
+      return std::string(e.what());
+    }
+    return std::string("not refused");
+  };
+  CHECK_THAT(refused({dir, "--part", "plate", "--measured", "2mm^3", "--revolutions", "4"}),
+             Catch::Contains("--time"));
+  CHECK_THAT(refused({dir, "--measured", "2mm^3", "--time", "100"}), Catch::Contains("--part"));
+  CHECK_THAT(refused({dir, "--part", "skirt", "--measured", "2mm^3", "--time", "100"}),
+             Catch::Contains("no wearing part 'skirt'"));
 }

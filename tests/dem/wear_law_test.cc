@@ -1,8 +1,8 @@
 // Wear laws and the reference deformation: analytic Archard volume on a face interior, an
 // edge and a vertex; mesh-size independence under a particle bed; uniform recession of a
 // flat plate; fits and statistics of the evaluation.
+#include "dem/evaluation/tester_evaluation.h"
 #include "dem/tester/reference_deformation.h"
-#include "dem/tester/tester_evaluation.h"
 #include "dem/wear/wear_law.h"
 #include "meshes/structured_grid.h"
 #include "tests/dem/dem_fixtures.h"

@@ -8,7 +8,9 @@ the mean over the seeds +- the 95 % interval (Student t, n - 1 degrees of freedo
 agrees when its mean lies inside the built-in tester's interval (the ensemble spread).
 Writes <root>/report.md and prints it; exits 1 when a kind disagrees, 2 on missing runs.
 
-usage: compare_scene.py [--from K] [--seconds S] <root> <seed> [<seed> ...]
+Then the reductions of `wearsim compare` (compare-*.txt beside the runs), if present.
+
+usage: compare_scene.py [--from K] [--seconds S] [--cases DIR] <root> <seed> [<seed> ...]
 """
 import argparse
 import csv
@@ -57,6 +59,7 @@ def main():
     a = argparse.ArgumentParser()
     a.add_argument("--from", dest="first", type=int, default=3)
     a.add_argument("--seconds", type=int, default=0)
+    a.add_argument("--cases", default="cases/sector-30")
     a.add_argument("root")
     a.add_argument("seeds", nargs="+")
     o = a.parse_args()
@@ -69,7 +72,7 @@ def main():
              "thread per run" + (f", {o.seconds // 60} min {o.seconds % 60} s for the runs"
                                  if o.seconds else "") + ".", "",
              f"Wear-law volume per revolution [mm^3], revolutions {o.first} to the last, "
-             "cases/sector-30 (built-in tester) and the same case written as a scene by `wearsim tester-scene` (scene):",
+             f"{o.cases} (built-in tester) and the same case written as a scene by `wearsim tester-scene` (scene):",
              "", "| kind | seed | tester | scene |", "|---|---|---|---|"]
     ok = True
     verdicts = []
@@ -88,6 +91,16 @@ def main():
                         f"the tester's {tm:.3f} +- {th:.3f} mm^3 per revolution "
                         f"({100 * (sm - tm) / tm:+.1f} %).")
     lines += [""] + verdicts
+    for name, what in (("tester", "built-in tester, convex against plain"),
+                       ("scene", "the tester as a scene, convex against plain"),
+                       ("plain", "plain sample, the scene against the tester"),
+                       ("convex", "convex sample, the scene against the tester")):
+        path = os.path.join(o.root, f"compare-{name}.txt")
+        if os.path.isfile(path):
+            with open(path) as f:
+                text = [l.rstrip() for l in f]
+            lines += ["", f"`wearsim compare --part sample --from {o.first}`, {what}:", ""]
+            lines += [f"    {l}" for l in text]
     text = "\n".join(lines) + "\n"
     with open(os.path.join(o.root, "report.md"), "w") as f:
         f.write(text)

@@ -7,10 +7,17 @@
 # as mean +- 95 % interval across the seeds side by side and exits 1 when a scene mean falls
 # outside the tester's interval. README.md beside this script says why not bit for bit.
 #
+# Then `wearsim compare --part sample` (which reads a built-in tester's run as its sample and
+# a scene's evaluated sample alike) sets, per path, the convex sample's reduction against the
+# plain one with its interval across the seeds (compare-tester.txt, compare-scene.txt), and
+# per kind the scene against the tester (compare-plain.txt, compare-convex.txt).
+#
 # usage: bash cases/reference/scene/scene_vs_tester.sh [seed ...]
 #        (default seeds 1 2 3: 16 min on 2 cores beside the test suite; JOBS=<n> sets the runs at once;
 #         WEARSIM=<path> the binary, default build/wearsim; OUTPUT=<folder> the runs' folder,
-#         default output/reference-scene)
+#         default output/reference-scene; CASES=<folder> the plain.prm and convex.prm to run,
+#         default cases/sector-30 (cases/quick: the default case); FROM=<k> the first
+#         revolution averaged, default 3)
 set -euo pipefail
 cd "$(dirname "$0")/../../.."
 seeds=()
@@ -24,13 +31,17 @@ wearsim=${WEARSIM:-build/wearsim}
 source scripts/run_pool.sh
 pool_init "scene vs tester" "${JOBS:-$(nproc)}" || exit 2
 root=${OUTPUT:-output/reference-scene}
+cases=${CASES:-cases/sector-30}
+from=${FROM:-3}
+[ -f "$cases/plain.prm" ] && [ -f "$cases/convex.prm" ] ||
+  { echo "scene_vs_tester.sh: $cases has no plain.prm and convex.prm (CASES)" >&2; exit 2; }
 mkdir -p "$root"
 start=$(date +%s)
 
 run_one() { # <path: tester|scene> <kind> <seed>
   local out="$root/$1-$2-$3"
   sed -e "s|^subsection DEM|subsection DEM\n  set Seed = $3|" \
-      -e "s|set Directory = .*|set Directory = $out|" cases/sector-30/$2.prm > "$out.prm"
+      -e "s|set Directory = .*|set Directory = $out|" "$cases/$2.prm" > "$out.prm"
   if [ "$1" = tester ]; then
     "$wearsim" run --overwrite "$out.prm" > "$out.log" 2>&1
   else
@@ -48,5 +59,14 @@ for seed in "${seeds[@]}"; do
   done
 done
 pool_wait || { printf 'scene vs tester: failed: %s\n' "${POOL_FAILED[@]}" >&2; exit 1; }
-/usr/bin/python3 cases/reference/scene/compare_scene.py --seconds $(( $(date +%s) - start )) \
-  "$root" "${seeds[@]}"
+runs() { for seed in "${seeds[@]}"; do printf '%s ' "$root/$1-$2-$seed"; done; }
+for path in tester scene; do
+  "$wearsim" compare --part sample --from "$from" $(runs "$path" plain) -- $(runs "$path" convex) \
+    > "$root/compare-$path.txt"
+done
+for kind in plain convex; do
+  "$wearsim" compare --part sample --from "$from" $(runs tester "$kind") -- $(runs scene "$kind") \
+    > "$root/compare-$kind.txt"
+done
+/usr/bin/python3 cases/reference/scene/compare_scene.py --from "$from" \
+  --seconds $(( $(date +%s) - start )) --cases "$cases" "$root" "${seeds[@]}"

@@ -17,7 +17,7 @@
 // number of consecutive revolutions.
 // Fits through the origin minimise sum (y - f(x))^2: a = sum xy / sum x^2; (b, c) from the
 // 2 x 2 normal equations in x^2 and x. R^2 = 1 - SS_res / SS_tot, SS_tot about the mean.
-#include "dem/tester/tester_evaluation.h"
+#include "dem/evaluation/tester_evaluation.h"
 
 #include "meshes/sample_generator.h"
 
