@@ -10,8 +10,9 @@
 //      loads on each part (impulse, Archard, wear-law volume V_f per face, in the part's own
 //      frame) summed.
 //   2. Each part: wear, stress and geometry under its own loads, its records (wearing_part.h).
-//   3. The parts' new surfaces to their DEM walls, the particles kept (a part only recedes
-//      from them); a checkpoint.
+//   3. Each part's new surface to its DEM wall, the particles kept (a part only recedes from
+//      them; those a remesh's chords would overlap pushed out, Coupling/Push tolerance); a
+//      checkpoint.
 // "dem-only" stages change no surface. Without stages the run is one DEM stage to End time.
 // The part Scene/Evaluation names is sampled after every window and evaluated per period
 // (wearing_part.h).
@@ -274,12 +275,12 @@ SceneCoupledRun::run_dem(StageRecord& r, std::optional<OpenSceneStage> open,
 
 void SceneCoupledRun::run_parts(const StageRecord& r, const std::vector<dem::WallLoads>& loads) {
   for (std::size_t i = 0; i < parts_.size(); ++i)
-    if (parts_[i].run_stage(r, loads[i], part_case_, log_)) {
+    parts_[i].run_stage(r, loads[i], part_case_, log_, [&](const meshes::SurfaceMesh& surface) {
       ranks_.require_same(parts_[i].surface(), "part '" + parts_[i].name() +
                                                    "' after the FEM part of stage " +
                                                    std::to_string(r.stage));
-      scene_->replace_wall_surface(parts_[i].wall(), parts_[i].wall_surface());
-    }
+      return scene_->replace_wall_surface(parts_[i].wall(), surface, p_.coupling.push_tolerance);
+    });
   if (!parts_.empty())
     log_ << format("stage %d %s done at t = %.4g s, DEM %.0f s\n", r.stage,
                    scheme_name(r.scheme).c_str(), r.time, r.dem_seconds)

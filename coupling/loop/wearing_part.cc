@@ -198,8 +198,9 @@ WearingPart::WearingPart(const CaseParameters& p, std::size_t index, const PartC
       wear_rows_ += line + "\n";
 }
 
-bool WearingPart::run_stage(StageRecord r, const dem::WallLoads& loads, const CaseParameters& p,
-                            std::ostream& log) {
+void WearingPart::run_stage(
+    StageRecord r, const dem::WallLoads& loads, const CaseParameters& p, std::ostream& log,
+    const std::function<dem::PushReport(const meshes::SurfaceMesh&)>& to_wall) {
   const bool staged = r.scheme == Scheme::staged;
   const meshes::Stopwatch wear_clock;
   const WearIncrement increment =
@@ -219,6 +220,9 @@ bool WearingPart::run_stage(StageRecord r, const dem::WallLoads& loads, const Ca
           << "': a remesh needed more than one attempt; refused:" << refusal << "\n";
     applied = std::move(update.applied);
     previous_stress_ = std::move(update.von_mises);
+    const dem::PushReport pushed = to_wall(wall_surface());
+    r.n_pushed = pushed.n_pushed;
+    r.max_push = pushed.max_distance;
   }
 
   const meshes::Stopwatch clock;
@@ -258,12 +262,13 @@ bool WearingPart::run_stage(StageRecord r, const dem::WallLoads& loads, const Ca
     meshes::write_atomically(directory_ + "/part_wear.csv",
                              [&](std::ostream& out) { out << part_wear_header << wear_rows_; });
   log << format("stage %d %s, part '%s': wear-law volume %.4g mm^3, removed %.4g mm^3 "
-                "(cumulative %.4g), max von Mises (ball) %.3g MPa, %d remeshes, FEM %.1f s\n",
+                "(cumulative %.4g), max von Mises (ball) %.3g MPa, %d remeshes, FEM %.1f s, %d "
+                "particles pushed out\n",
                 r.stage, scheme_name(r.scheme).c_str(), name_.c_str(), r.dem_wear_volume * 1e9,
                 r.applied_volume * 1e9, r.cumulative_applied * 1e9, r.max_von_mises_ball * 1e-6,
-                r.n_remeshes, r.fem_solve_seconds + r.motion_seconds + r.remesh_seconds)
+                r.n_remeshes, r.fem_solve_seconds + r.motion_seconds + r.remesh_seconds,
+                r.n_pushed)
       << std::flush;
-  return staged;
 }
 
 PartCheckpoint WearingPart::state(const dem::WallLoads& open) const {

@@ -17,6 +17,7 @@
 #include "fem/worn_sample.h"
 #include "meshes/sample_frame.h"
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -69,10 +70,12 @@ public:
 
   /// Stage r (its number, scheme, amplification, time and DEM figures set) under the loads
   /// the DEM summed on the part (part frame): the wear increment; for a staged stage the
-  /// stress under those loads and the geometry update. Records the stage and writes its
-  /// output. Returns true when the part's surface changed (the DEM wall takes it then).
-  bool run_stage(StageRecord r, const dem::WallLoads& loads, const CaseParameters& p,
-                 std::ostream& log);
+  /// stress under those loads, the geometry update and the new surface handed to `to_wall`
+  /// (in the wall's frame; it says which particles it pushed out). Records the stage and
+  /// writes its output.
+  void run_stage(StageRecord r, const dem::WallLoads& loads, const CaseParameters& p,
+                 std::ostream& log,
+                 const std::function<dem::PushReport(const meshes::SurfaceMesh&)>& to_wall);
   /// The part's checkpoint part; `open`: the open stage's loads summed so far.
   PartCheckpoint state(const dem::WallLoads& open) const;
 

@@ -77,6 +77,12 @@ struct WearIntegrals {
   void zero_faces(std::size_t n_faces);
 };
 
+/// Particles pushed out of a wall's new surface (System::push_out_of_wall).
+struct PushReport {
+  int n_pushed = 0;
+  double max_distance = 0; ///< [m] largest displacement of a pushed particle
+};
+
 /// Everything that decides how a set-up System continues: the real particles in the engine's
 /// order, the pair list with its tangential histories, the wall-contact slots and the clock.
 /// Imported into a System set up with the same particles, walls and thread count it continues
@@ -217,6 +223,13 @@ public:
   /// contact candidates; contact histories are kept.
   void set_wall_vertices(int w, const std::vector<Vec3>& vertices);
 
+  /// Pushes the real particles that `mesh`, the new surface of mesh wall w (its frame: a moving
+  /// wall's body frame, at the wall's current pose), would hold overlapping by more than
+  /// `tolerance` times their radius out along closest point -> centre to touch it (a surface
+  /// that recedes from the bed encloses none; a remesh's chords and a volume-restoring offset
+  /// may reach a little outwards). Call before replace_wall_mesh(w, mesh). Over ranks every
+  /// rank calls it together and the report is the whole bed's.
+  PushReport push_out_of_wall(int w, const meshes::SurfaceMesh& mesh, double tolerance);
   /// Replaces the mesh of wall w (new topology allowed, e.g. a remeshed worn surface); its
   /// material, motion, wear flag, name and covered labels stay. The wall's wear integrals restart
   /// at zero.

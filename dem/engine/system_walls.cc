@@ -7,10 +7,16 @@
 // A mesh wall with a rigid motion is queried in its body frame: particle centres are taken
 // there (MeshWall::to_body) and distances are the same in both frames.
 //
+// Push-out from a new wall surface: a bed particle lies outside the wall, and one stage moves the
+// surface by far less than a radius, so its centre is still outside: it goes along closest point
+// -> centre (the face normal's sign is no test of side at a convex edge or vertex) to touch.
+//
 // Elastic energy of a wall contact: the Hertz term 8/15 E* sqrt(R) delta^(5/2) of every
 // contact the force pass would count before merging, junction contacts excepted (the
 // tangential springs of wall contacts are left out, as they always were).
 #include "dem/engine/system.h"
+
+#include "meshes/surface_locator.h"
 
 #include <algorithm>
 #include <cmath>
@@ -104,6 +110,48 @@ void System::size_wear_accumulators() {
       if (wall_wearing(w))
         t[w].assign(n_wear_values * (wall_faces(w) + 1), 0.0);
   }
+}
+
+
+PushReport System::push_out_of_wall(int w, const meshes::SurfaceMesh& mesh, double tolerance) {
+  const MeshWall& wall = walls_[mesh_index(w, "push_out_of_wall")];
+  PushReport report;
+  auto& p = particles;
+  if (p.n_real > 0) {
+    const meshes::SurfaceLocator locator(mesh);
+    const auto normals = meshes::face_normals(mesh);
+    const auto box = meshes::bounding_box(mesh);
+    double r_max = 0;
+    for (std::size_t i = 0; i < p.n_real; ++i)
+      r_max = std::max(r_max, p.radius[i]);
+    for (std::size_t i = 0; i < p.n_real; ++i) {
+      const Vec3 x = wall.to_body(p.position[i]);
+      if (x.x < box.min.x - r_max || x.y < box.min.y - r_max || x.z < box.min.z - r_max ||
+          x.x > box.max.x + r_max || x.y > box.max.y + r_max || x.z > box.max.z + r_max)
+        continue;
+      const auto near = locator.nearest(x);
+      if (near.face < 0)
+        continue;
+      const double r = p.radius[i];
+      const double overlap = r - near.distance;
+      if (overlap <= tolerance * r)
+        continue;
+      const Vec3 out =
+          near.distance > 0 ? (x - near.point) / near.distance : normals[std::size_t(near.face)];
+      const Vec3 moved = near.point + out * r;
+      report.max_distance = std::max(report.max_distance, meshes::norm(moved - x));
+      p.position[i] = wall.to_world(moved);
+      ++report.n_pushed;
+    }
+  }
+  if (rank_link_) {
+    double pushed[2] = {double(report.n_pushed), report.max_distance};
+    rank_link_->sum_in_rank_order(pushed, 1);
+    rank_link_->max_over_ranks(pushed + 1, 1);
+    report.n_pushed = int(pushed[0]);
+    report.max_distance = pushed[1];
+  }
+  return report;
 }
 
 } // namespace wear::dem

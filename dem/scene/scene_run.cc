@@ -527,9 +527,12 @@ WallLoads SceneRun::wall_loads(std::size_t k, const WearLaw& law, const SceneWin
                          w.integrated, load_spreading(dem_.wall_loads, dem_.psd));
 }
 
-void SceneRun::replace_wall_surface(std::size_t k, const meshes::SurfaceMesh& mesh) {
+PushReport SceneRun::replace_wall_surface(std::size_t k, const meshes::SurfaceMesh& mesh,
+                                          double push_tolerance) {
+  const PushReport pushed = system_.push_out_of_wall(int(k), mesh, push_tolerance);
   system_.replace_wall_mesh(int(k), mesh);
   walls_.at(k).surface.mesh = mesh;
+  return pushed;
 }
 
 } // namespace wear::dem

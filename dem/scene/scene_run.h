@@ -113,8 +113,11 @@ public:
   WallLoads wall_loads(std::size_t k, const WearLaw& law, const SceneWindow& w) const;
   /// Gives wall k a new surface (e.g. the worn part after a stage), same frame, motion and
   /// material. The particles keep their state; the new surface lies inside the old one where
-  /// it wore, so no particle starts overlapping it beyond a remesh's chord offset.
-  void replace_wall_surface(std::size_t k, const meshes::SurfaceMesh& mesh);
+  /// it wore, and the particles it overlaps by more than `push_tolerance` times their radius
+  /// (a remesh's chords, a volume-restoring offset) are pushed out to touch it
+  /// (System::push_out_of_wall). Every rank calls it together.
+  PushReport replace_wall_surface(std::size_t k, const meshes::SurfaceMesh& mesh,
+                                  double push_tolerance);
 
   double time() const { return time_; } ///< [s]
   /// [s] Inlet batches and outlets act this often (the shortest inlet interval).

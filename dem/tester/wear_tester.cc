@@ -34,7 +34,6 @@
 #include "meshes/sample_frame.h"
 #include "meshes/sample_generator.h"
 #include "meshes/stopwatch.h"
-#include "meshes/surface_locator.h"
 #include "meshes/tester_walls.h"
 
 #include <omp.h>
@@ -395,49 +394,7 @@ WearTester::PushReport WearTester::set_sample_surface(const meshes::SurfaceMesh&
                            "revolution");
   const auto placed =
       meshes::SampleFrame(geometry_.sample, geometry_.placement).place_in_tester(sample);
-  PushReport report;
-  auto& p = system_.particles;
-  if (p.n_real > 0) {
-    // A receding surface moves away from the bed; only where the new surface lies outside
-    // the old one can it enclose particles: remeshing chords, the volume-restoring offset,
-    // and tangential relaxation on a convex cap (a tangential move leaves a curved surface
-    // outwards).
-    const meshes::SurfaceLocator locator(placed);
-    const auto normals = meshes::face_normals(placed);
-    const auto box = meshes::bounding_box(placed);
-    double r_max = 0;
-    for (std::size_t i = 0; i < p.n_real; ++i)
-      r_max = std::max(r_max, p.radius[i]);
-    for (std::size_t i = 0; i < p.n_real; ++i) {
-      const Vec3& x = p.position[i];
-      if (x.x < box.min.x - r_max || x.y < box.min.y - r_max || x.z < box.min.z - r_max ||
-          x.x > box.max.x + r_max || x.y > box.max.y + r_max || x.z > box.max.z + r_max)
-        continue;
-      const auto near = locator.nearest(x);
-      if (near.face < 0)
-        continue;
-      // Bed particles lie outside the sample, and one stage moves the surface by far less
-      // than a radius, so the centre is still outside: push along closest point -> centre.
-      // (The face normal's sign is no test of side at a convex edge or vertex.)
-      const double r = p.radius[i];
-      const double overlap = r - near.distance;
-      if (overlap <= push_tolerance * r)
-        continue;
-      const Vec3 out =
-          near.distance > 0 ? (x - near.point) / near.distance : normals[std::size_t(near.face)];
-      const Vec3 moved = near.point + out * r;
-      report.max_distance = std::max(report.max_distance, meshes::norm(moved - x));
-      p.position[i] = moved;
-      ++report.n_pushed;
-    }
-  }
-  if (RankLink* link = system_.rank_link()) {
-    double pushed[2] = {double(report.n_pushed), report.max_distance};
-    link->sum_in_rank_order(pushed, 1);
-    link->max_over_ranks(pushed + 1, 1);
-    report.n_pushed = int(pushed[0]);
-    report.max_distance = pushed[1];
-  }
+  const PushReport report = system_.push_out_of_wall(sample_wall_, placed, push_tolerance);
   system_.replace_wall_mesh(sample_wall_, placed);
   evaluation_->set_surface(sample);
   cumulative_removed_.assign(placed.n_faces(), 0);

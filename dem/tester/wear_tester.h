@@ -84,10 +84,7 @@ public:
   /// order defines the face fields from now on). Particles that the new surface overlaps by
   /// more than `push_tolerance` of their radius are moved out along the surface normal to
   /// zero overlap; says how many and how far. Per-face sums restart on the new faces.
-  struct PushReport {
-    int n_pushed = 0;
-    double max_distance = 0; ///< [m] largest displacement of a pushed particle
-  };
+  using PushReport = dem::PushReport;
   PushReport set_sample_surface(const meshes::SurfaceMesh& sample, double push_tolerance = 0.01);
 
   /// Continues a run from a checkpoint instead of fill_and_settle(): sets the system up with

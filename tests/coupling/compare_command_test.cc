@@ -14,6 +14,7 @@
 #include "coupling/app/calibrate_command.h"
 #include "coupling/app/compare_command.h"
 #include "coupling/output/run_output.h"
+#include "meshes/constants.h"
 #include "plate_scene.h"
 #include "small_tester.h"
 
@@ -43,7 +44,7 @@ std::vector<double> wear_series(const FakeRun& f) {
   std::vector<double> w;
   double v = 0;
   for (int r = 1; r <= f.n_revolutions; ++r) {
-    const double z = std::sqrt(-2 * std::log(uniform())) * std::cos(2 * M_PI * uniform());
+    const double z = std::sqrt(-2 * std::log(uniform())) * std::cos(2 * wear::pi * uniform());
     v = 0.5 * v + z;
     w.push_back(f.mean * (1 + 0.1 * v));
   }

@@ -7,6 +7,7 @@
 //   out independently (the t quantiles at Welch-Satterthwaite dof by Simpson integration of
 //   the t density and bisection, in Python), 1e-5.
 #include "coupling/analysis/interval.h"
+#include "meshes/constants.h"
 
 #include <catch2/catch.hpp>
 
@@ -31,7 +32,7 @@ public:
     }
     const double u1 = (double(rng_() >> 11) + 0.5) * 0x1.0p-53,
                  u2 = double(rng_() >> 11) * 0x1.0p-53;
-    const double r = std::sqrt(-2 * std::log(u1)), angle = 2 * M_PI * u2;
+    const double r = std::sqrt(-2 * std::log(u1)), angle = 2 * wear::pi * u2;
     spare_ = r * std::sin(angle);
     has_spare_ = true;
     return r * std::cos(angle);

@@ -9,6 +9,7 @@
 #include "dem/scene/scene_walls.h"
 #include "error_of.h"
 #include "meshes/atomic_file.h"
+#include "meshes/constants.h"
 #include "meshes/gmsh_session.h"
 #include "meshes/stl_io.h"
 #include "tests/dem/scene_fixtures.h"
@@ -101,7 +102,7 @@ TEST_CASE("wearsim scene: walls from STEP and primitives by name, with their siz
   CHECK(wear::meshes::enclosed_volume(liner) == Approx(0.1 * 0.2 * 0.05).epsilon(1e-12));
   CHECK(liner.labels().size() == 6);
   const auto drum = wear::meshes::read_stl("scene_out/scene/drum.stl");
-  CHECK(wear::meshes::total_area(drum) == Approx(2 * M_PI * 0.5 * 0.4).epsilon(2e-3));
+  CHECK(wear::meshes::total_area(drum) == Approx(2 * wear::pi * 0.5 * 0.4).epsilon(2e-3));
   CHECK(std::filesystem::exists("scene_out/scene/floor.vtu"));
   CHECK(std::filesystem::exists("scene_out/parameters.prm"));
   // The wearing liner's surfaces by CAD number and role: all wear, none is clamped.

@@ -12,6 +12,7 @@
 // slope of the outlet's mass over the steady part of the discharge; W^(2/5) against D gives C and k
 // by a straight-line fit.
 #include "dem/scene/scene_run.h"
+#include "meshes/constants.h"
 #include "scene_fixtures.h"
 
 #include <catch2/catch.hpp>
@@ -73,7 +74,7 @@ Discharge discharge(double orifice) {
   top = top / double(layer) + d / 2;
   Discharge out;
   out.n_particles = p.n_real;
-  out.bulk_density = double(p.n_real) * rho_s * M_PI / 6 * d * d * d / (M_PI * 0.01 * top);
+  out.bulk_density = double(p.n_real) * rho_s * wear::pi / 6 * d * d * d / (wear::pi * 0.01 * top);
   // Steady discharge: from 0.15 s after opening (the first particles reach the outlet and
   // the flow has formed) over 0.7 s, the outlet's mass sampled every 0.05 s (the bed then
   // still stands more than a diameter of the largest orifice above it).

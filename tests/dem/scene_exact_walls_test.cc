@@ -5,6 +5,7 @@
 // triangles, and a scene's run holding them as revolution walls.
 #include "dem/scene/scene_run.h"
 #include "dem/scene/scene_walls.h"
+#include "meshes/constants.h"
 #include "scene_fixtures.h"
 
 #include <catch2/catch.hpp>
@@ -139,7 +140,7 @@ TEST_CASE("scene walls: a bin's cylinder and floor are revolution walls of the r
   // 0.4 s), the window's mean force per wall.
   run.advance(0.4);
   const SceneWindow w = run.advance(0.5);
-  const double weight = 100 * 2650 * M_PI / 6 * std::pow(0.006, 3) * 9.81;
+  const double weight = 100 * 2650 * wear::pi / 6 * std::pow(0.006, 3) * 9.81;
   const double carried = w.walls[0].force.z + w.walls[1].force.z + w.walls[2].force.z;
   CHECK(carried == Approx(-weight).epsilon(0.02));
   CHECK(w.walls[1].force.z < -0.5 * weight);
@@ -173,7 +174,7 @@ TEST_CASE("scene walls: a hopper's cone is a revolution wall of the run and carr
   CHECK(run.system().revolution_wall(0).n_faces() == 1);
   run.advance(0.5);
   const SceneWindow w = run.advance(0.6);
-  const double weight = 100 * 2650 * M_PI / 6 * std::pow(0.006, 3) * 9.81;
+  const double weight = 100 * 2650 * wear::pi / 6 * std::pow(0.006, 3) * 9.81;
   CHECK(w.walls[0].force.z + w.walls[1].force.z == Approx(-weight).epsilon(0.02));
   // The bed, about 10 mm deep, leans on the cone's lowest ring beside the floor: 28 % of its
   // weight on the cone at this seed.

@@ -4,6 +4,7 @@
 // follows the DEM subsection's Loose factor and Settle time.
 #include "dem/scene/scene_run.h"
 #include "dem/tester/wear_tester.h"
+#include "meshes/constants.h"
 #include "meshes/gmsh_session.h"
 #include "scene_fixtures.h"
 
@@ -57,7 +58,7 @@ TEST_CASE("scene run: a bin drains through its orifice and every particle is cou
   CHECK(w.n_removed > 40);
   // Filled = in the bin + taken by the outlet, in count and (one size) in mass.
   CHECK(w.n_particles + w.n_removed == 400);
-  const double m = 2650 * M_PI / 6 * 0.006 * 0.006 * 0.006;
+  const double m = 2650 * wear::pi / 6 * 0.006 * 0.006 * 0.006;
   CHECK(w.outlet_mass[0] == Approx(double(w.n_removed) * m).epsilon(1e-12));
   // Through the plane: what the outlet took, and those below the plane not yet taken.
   std::size_t n_below = 0;
@@ -96,7 +97,7 @@ TEST_CASE("scene run: an empty scene fed by an inlet starts at its first particl
   const SceneWindow before = run.advance(0.04); // nothing yet
   CHECK(before.n_particles == 0);
   const SceneWindow w = run.advance(0.25);
-  const double m = 2650 * M_PI / 6 * 0.006 * 0.006 * 0.006;
+  const double m = 2650 * wear::pi / 6 * 0.006 * 0.006 * 0.006;
   CHECK(w.n_particles == w.n_inserted);
   CHECK(w.inserted_mass == Approx(double(w.n_inserted) * m).epsilon(1e-12));
   // The rate from the start time on, to one particle at the last batch (batches come at the
@@ -185,7 +186,8 @@ TEST_CASE("scene run: a fill to a bed height settles before the run starts") {
     grid_volume += w.fields.solid_fraction[c] * h.x * h.y * h.z;
     speed = std::max(speed, wear::meshes::norm(w.fields.velocity[c]));
   }
-  CHECK(grid_volume == Approx(double(n) * 4.0 / 3.0 * M_PI * std::pow(0.003, 3)).epsilon(1e-12));
+  CHECK(grid_volume ==
+        Approx(double(n) * 4.0 / 3.0 * wear::pi * std::pow(0.003, 3)).epsilon(1e-12));
   CHECK(speed < 0.01);
 }
 
@@ -337,7 +339,7 @@ TEST_CASE("scene run: a bed in a periodic sector on a turntable stays in the sec
   for (std::size_t i = 0; i < p.n_real; ++i) {
     const double theta = std::atan2(p.position[i].y, p.position[i].x);
     REQUIRE(theta >= -1e-12);
-    REQUIRE(theta < M_PI / 3 + 1e-12);
+    REQUIRE(theta < wear::pi / 3 + 1e-12);
     const Vec3 t{-std::sin(theta), std::cos(theta), 0};
     mean_tangential += wear::meshes::dot(p.velocity[i], t) / double(p.n_real);
   }
@@ -375,7 +377,7 @@ TEST_CASE("scene run: a bed in a periodic sector on a turntable stays in the sec
   for (std::size_t i = 0; i < q.n_real; ++i) {
     const double theta = std::atan2(q.position[i].y, q.position[i].x);
     REQUIRE(theta >= -1e-12);
-    REQUIRE(theta < M_PI / 3 + 1e-12);
+    REQUIRE(theta < wear::pi / 3 + 1e-12);
     z.push_back(q.position[i].z + q.radius[i]);
   }
   std::sort(z.begin(), z.end());
@@ -392,7 +394,7 @@ TEST_CASE("scene run: a tilted solid from STEP is filled to a count, inside it a
   {
     wear::meshes::GmshSession session("fill solid");
     const int box = gmsh::model::occ::addBox(-30, -20, 20, 60, 40, 40);
-    gmsh::model::occ::rotate({{3, box}}, 0, 0, 40, 1, 0, 0, M_PI / 6);
+    gmsh::model::occ::rotate({{3, box}}, 0, 0, 40, 1, 0, 0, wear::pi / 6);
     gmsh::model::occ::synchronize();
     gmsh::write("fill_tilted_box.step");
   }
@@ -408,7 +410,7 @@ TEST_CASE("scene run: a tilted solid from STEP is filled to a count, inside it a
   REQUIRE(p.n_real == 60);
   // Each sphere lies inside the box: in its frame (turned back by 30 degrees about x through
   // (0, 0, 40) mm) within the half sizes less the radius.
-  const double c = std::cos(M_PI / 6), s30 = std::sin(M_PI / 6);
+  const double c = std::cos(wear::pi / 6), s30 = std::sin(wear::pi / 6);
   for (std::size_t i = 0; i < p.n_real; ++i) {
     const Vec3 x = p.position[i] - Vec3{0, 0, 0.04};
     const Vec3 local{x.x, c * x.y + s30 * x.z, -s30 * x.y + c * x.z};
@@ -430,7 +432,7 @@ TEST_CASE("scene run: a tilted solid from STEP is filled to a count, inside it a
   {
     wear::meshes::GmshSession session("fill solid low");
     const int box = gmsh::model::occ::addBox(-30, -20, -10, 60, 40, 40);
-    gmsh::model::occ::rotate({{3, box}}, 0, 0, 10, 1, 0, 0, M_PI / 6);
+    gmsh::model::occ::rotate({{3, box}}, 0, 0, 10, 1, 0, 0, wear::pi / 6);
     gmsh::model::occ::synchronize();
     gmsh::write("fill_low_box.step");
   }
@@ -480,4 +482,55 @@ TEST_CASE("scene run: a bed on an endless belt, periodic along it, goes round an
   scene.rank_slabs_along = "auto";
   scene.periodic_angle_deg = 30;
   CHECK_THROWS_WITH(validate(scene), Catch::Contains("exclude each other"));
+}
+
+TEST_CASE(
+    "scene run: a wall's new surface pushes out the particles it would overlap, to touch it") {
+  // A lid (a plane) far above a settled bed in the pinhole bin is lowered into its top layer:
+  // every particle the lowered lid overlaps by more than the tolerance (1 % of its radius)
+  // moves down along the lid's normal (its closest point -> centre) to touch it, the others
+  // stay where they are (System::push_out_of_wall).
+  SceneParameters scene = testing::pinhole_bin_cylinder_fill("bin, floor, lid");
+  auto& lid = scene.walls[2];
+  lid.source = "plane";
+  lid.origin = {-0.08, -0.08, 0.28};
+  lid.edge_u = {0.16, 0, 0};
+  lid.edge_v = {0, 0.16, 0};
+  lid.mesh_size = 0.04;
+  SceneRun run(scene, gravel(), build_scene_walls(scene));
+  run.setup();
+  run.advance(0.3);
+  const auto& p = run.system().particles;
+  double top = 0;
+  for (std::size_t i = 0; i < p.n_real; ++i)
+    top = std::max(top, p.position[i].z);
+  const double z_lid = top + 0.5 * 0.003; // half a radius above the highest centre
+  const std::vector<Vec3> before(p.position.begin(), p.position.begin() + long(p.n_real));
+  int expected = 0;
+  double deepest = 0;
+  for (std::size_t i = 0; i < p.n_real; ++i) {
+    const double overlap = p.radius[i] - (z_lid - before[i].z);
+    if (overlap > 0.01 * p.radius[i]) {
+      ++expected;
+      deepest = std::max(deepest, overlap);
+    }
+  }
+  REQUIRE(expected > 0);
+  auto lowered = run.walls()[2].surface.mesh;
+  for (auto& v : lowered.vertices)
+    v.z = z_lid;
+  const PushReport pushed = run.replace_wall_surface(2, lowered, 0.01);
+  CHECK(pushed.n_pushed == expected);
+  CHECK(pushed.max_distance == Approx(deepest).epsilon(1e-9));
+  for (std::size_t i = 0; i < p.n_real; ++i) {
+    INFO("particle " << i);
+    const double overlap = p.radius[i] - (z_lid - before[i].z);
+    if (overlap > 0.01 * p.radius[i]) { // now touching the lid, moved straight down
+      CHECK(p.position[i].z == Approx(z_lid - p.radius[i]).epsilon(1e-12));
+      CHECK(p.position[i].x == Approx(before[i].x).margin(1e-12)); // (the closest point's
+      CHECK(p.position[i].y == Approx(before[i].y).margin(1e-12)); // rounding)
+    } else
+      CHECK(p.position[i].z == before[i].z);
+  }
+  CHECK(run.walls()[2].surface.mesh.vertices[0].z == z_lid);
 }

@@ -4,6 +4,7 @@
 // and bottom; the fill leaves a submerged part's box and volume out.
 #include "dem/scene/scene_run.h"
 #include "dem/tester/wear_tester.h"
+#include "meshes/constants.h"
 #include "meshes/sample_frame.h"
 #include "scene_fixtures.h"
 
@@ -68,7 +69,7 @@ TEST_CASE("scene walls: the tester's sample and holder stand where the tester pu
       c += face[f] * centre[f];
   c = c * (1 / area.at(label::base));
   CHECK(std::hypot(c.x, c.y) == Approx(0.395).epsilon(1e-9));
-  CHECK(std::atan2(c.y, c.x) * 180 / M_PI == Approx(15).epsilon(1e-9));
+  CHECK(std::atan2(c.y, c.x) * 180 / wear::pi == Approx(15).epsilon(1e-9));
   CHECK(c.z == Approx(0.040).epsilon(1e-9));
   // Sides and bottom rest in the holder's pocket, named covered on both walls (one contact
   // where the wear face meets the rim, as in the tester).
@@ -137,7 +138,7 @@ TEST_CASE("scene run: a part standing in the fill is left out of it, its volume 
   scene.fill.bed_height = 0.03;
   SceneRun bed(scene, gravel(), build_scene_walls(scene));
   bed.setup();
-  const double footprint = M_PI * 0.058 * 0.058, v = M_PI * std::pow(0.006, 3) / 6;
+  const double footprint = wear::pi * 0.058 * 0.058, v = wear::pi * std::pow(0.006, 3) / 6;
   const double phi = gravel().assumed_packing;
   const auto n = [&](double volume) { return std::size_t(phi * volume / v); };
   CHECK(bed.system().particles.n_real == n(footprint * 0.03 - 0.02 * 0.02 * 0.01));

@@ -20,6 +20,7 @@
 #include "dem/engine/rank_states.h"
 #include "dem/scene/scene_run.h"
 #include "dem/scene/scene_walls.h"
+#include "meshes/constants.h"
 #include "tests/dem/scene_fixtures.h"
 #include "tests/dem_mpi/dem_mpi_fixtures.h"
 
@@ -98,7 +99,7 @@ std::vector<double> bed(const SceneRun& run) {
 void check_balance(const SceneRun& run, const SceneWindow& w) {
   INFO("t = " << w.t_end << " s on " << world().n_ranks() << " rank(s)");
   CHECK(w.n_particles + w.n_removed == n_fill + w.n_inserted);
-  const double m = 2650 * M_PI / 6 * 0.006 * 0.006 * 0.006;
+  const double m = 2650 * wear::pi / 6 * 0.006 * 0.006 * 0.006;
   CHECK(w.outlet_mass[0] == Approx(double(w.n_removed) * m).epsilon(1e-12));
   double below = 0;
   const auto& p = run.system().particles;
@@ -187,7 +188,7 @@ TEST_CASE("scene over ranks: a bed on an endless belt goes round a ring of ranks
   run.setup();
   const SceneWindow w = run.advance(1.0);
   CHECK(w.n_particles == 300);
-  const double m = 2650 * M_PI / 6 * 0.006 * 0.006 * 0.006;
+  const double m = 2650 * wear::pi / 6 * 0.006 * 0.006 * 0.006;
   CHECK(w.flux_mass[0] > 0.5 * 300 * m);
   CHECK(run.flux_planes()[0].n_forward() >= run.flux_planes()[0].n_backward());
 }

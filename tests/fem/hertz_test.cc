@@ -6,6 +6,7 @@
 // (Johnson's figure 3.9: 0.31 p0 at 0.48 a).
 #include "fem/boundary_face_map.h"
 #include "fem/elasticity.h"
+#include "meshes/constants.h"
 
 #include <catch2/catch.hpp>
 
@@ -140,8 +141,8 @@ TEST_CASE("elasticity: Hertzian pressure on a block, the largest shear stress be
       F[f] = {0, 0, -load};
       total += load;
     }
-  INFO("applied load " << total << " N, Hertz 2/3 pi a^2 p0 = " << 2.0 / 3 * M_PI * a * a * p0);
-  CHECK(total == Approx(2.0 / 3 * M_PI * a * a * p0).epsilon(1e-3));
+  INFO("applied load " << total << " N, Hertz 2/3 pi a^2 p0 = " << 2.0 / 3 * wear::pi * a * a * p0);
+  CHECK(total == Approx(2.0 / 3 * wear::pi * a * a * p0).epsilon(1e-3));
   ElasticityParameters p;
   p.youngs_modulus = E;
   p.poisson_ratio = nu;

@@ -205,7 +205,7 @@ TEST_CASE("tangential relaxation cuts a spike folded nearly flat, and only that"
   wear::meshes::SurfaceMesh m;
   m.vertices.push_back({0, 0, 0});
   for (int k = 0; k < 6; ++k)
-    m.vertices.push_back({std::cos(k * M_PI / 3), std::sin(k * M_PI / 3), 0});
+    m.vertices.push_back({std::cos(k * wear::pi / 3), std::sin(k * wear::pi / 3), 0});
   for (std::uint32_t k = 0; k < 6; ++k)
     m.triangles.push_back({0, 1 + k, 1 + (k + 1) % 6});
   m.face_labels.assign(6, 3);

@@ -4,6 +4,7 @@
 #include "fem/boundary_face_map.h"
 #include "fem/elasticity.h"
 #include "fem/stress_measures.h"
+#include "meshes/constants.h"
 
 #include <catch2/catch.hpp>
 
@@ -214,7 +215,7 @@ struct RefinementCase {
     const double r2 = (c.x - W / 2) * (c.x - W / 2) + (c.y - W / 2) * (c.y - W / 2);
     return Vec3{0, 0, -p0 * std::exp(-r2 / (s * s)) * area};
   }
-  Vec3 point(double share) const { return Vec3{0, 0, -M_PI * s * s * p0 * share}; }
+  Vec3 point(double share) const { return Vec3{0, 0, -wear::pi * s * s * p0 * share}; }
   /// Coarse and fine measures of the smooth (point) load.
   std::array<Measures, 2> run(bool point_load, unsigned int degree) const {
     std::array<Measures, 2> m;

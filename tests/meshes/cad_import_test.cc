@@ -3,6 +3,7 @@
 // meshing tolerance, in metres whatever the file's unit, closed and outward, one label per
 // CAD surface; bad input is refused naming the file.
 #include "meshes/cad_import.h"
+#include "meshes/constants.h"
 #include "meshes/gmsh_session.h"
 #include "meshes/stl_io.h"
 #include "tests/meshes/test_shapes.h"
@@ -71,7 +72,7 @@ TEST_CASE("CAD import: a cylinder from STEP within the chord error of its mesh s
   const double r = 0.05, h = 0.1, size = 0.005;
   write_shape("cad_cylinder.step", true, r, 0, h);
   const auto s = read_cad_surface("cad_cylinder.step", {LengthUnit::metre, size});
-  const double area = 2 * M_PI * r * r + 2 * M_PI * r * h, volume = M_PI * r * r * h;
+  const double area = 2 * wear::pi * r * r + 2 * wear::pi * r * h, volume = wear::pi * r * r * h;
   // A polygon of edges h inscribed in a circle of radius r lacks about (h/r)^2 / 12 of its
   // area (h = 5 mm, r = 50 mm: 8.3e-4); the surface and the volume alike. Tolerance 2e-3.
   const double area_error = total_area(s.mesh) / area - 1;
@@ -142,7 +143,7 @@ TEST_CASE("CAD import: primitives have their analytic areas", "[meshes][cad]") {
   disc.axis = {1, 1, 0};
   disc.radius = 0.1;
   const auto d = primitive_surface(disc, size, "Scene/disc");
-  const double disc_error = total_area(d.mesh) / (M_PI * 0.01) - 1;
+  const double disc_error = total_area(d.mesh) / (wear::pi * 0.01) - 1;
   INFO("disc: area " << disc_error << " relative");
   CHECK(std::abs(disc_error) < 2e-3);
   // Turned onto its normal: every vertex in the plane through the centre normal to (1, 1, 0).
@@ -153,7 +154,7 @@ TEST_CASE("CAD import: primitives have their analytic areas", "[meshes][cad]") {
   // With a hole: an annulus (a hopper's floor), its inner boundary the hole's circle.
   disc.radius_inner = 0.03;
   const auto ring = primitive_surface(disc, size, "Scene/ring");
-  CHECK(total_area(ring.mesh) == Approx(M_PI * (0.01 - 0.0009)).epsilon(2e-3));
+  CHECK(total_area(ring.mesh) == Approx(wear::pi * (0.01 - 0.0009)).epsilon(2e-3));
   double nearest = 1;
   for (const auto& v : ring.mesh.vertices)
     nearest = std::min(nearest, norm(v - disc.origin));
@@ -169,7 +170,7 @@ TEST_CASE("CAD import: primitives have their analytic areas", "[meshes][cad]") {
   tube.radius = 0.1;
   const auto t = primitive_surface(tube, size, "Scene/tube");
   CHECK(t.surface_labels.size() == 1); // the side only
-  const double tube_error = total_area(t.mesh) / (2 * M_PI * 0.1 * 0.2) - 1;
+  const double tube_error = total_area(t.mesh) / (2 * wear::pi * 0.1 * 0.2) - 1;
   INFO("open cylinder: area " << tube_error << " relative");
   CHECK(std::abs(tube_error) < 2e-3);
   CHECK(!check_closed(t.mesh).closed());
@@ -177,7 +178,7 @@ TEST_CASE("CAD import: primitives have their analytic areas", "[meshes][cad]") {
   const auto closed = primitive_surface(tube, size, "Scene/tube");
   CHECK(closed.surface_labels.size() == 3);
   CHECK(check_closed(closed.mesh).closed());
-  CHECK(enclosed_volume(closed.mesh) == Approx(M_PI * 0.01 * 0.2).epsilon(2e-3));
+  CHECK(enclosed_volume(closed.mesh) == Approx(wear::pi * 0.01 * 0.2).epsilon(2e-3));
 
   Primitive cone;
   cone.kind = PrimitiveKind::cone;
@@ -186,7 +187,7 @@ TEST_CASE("CAD import: primitives have their analytic areas", "[meshes][cad]") {
   cone.radius_top = 0.05;
   const auto c = primitive_surface(cone, size, "Scene/cone");
   const double slant = std::sqrt(0.1 * 0.1 + 0.05 * 0.05);
-  CHECK(total_area(c.mesh) == Approx(M_PI * (0.1 + 0.05) * slant).epsilon(2e-3));
+  CHECK(total_area(c.mesh) == Approx(wear::pi * (0.1 + 0.05) * slant).epsilon(2e-3));
 
   Primitive box;
   box.kind = PrimitiveKind::box;

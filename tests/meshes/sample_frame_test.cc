@@ -1,3 +1,4 @@
+#include "meshes/constants.h"
 #include "meshes/sample_frame.h"
 
 #include <catch2/catch.hpp>
@@ -42,5 +43,5 @@ TEST_CASE("sample frame: wear-face centre at the placement", "[sample_frame]") {
   const Vec3 c = f.point_to_tester({0, 0, s.thickness});
   CHECK(std::hypot(c.x, c.y) == Approx(pl.radius).epsilon(1e-14));
   CHECK(c.z == Approx(pl.wear_face_height).epsilon(1e-14));
-  CHECK(std::atan2(c.y, c.x) * 180 / M_PI == Approx(pl.angle_deg).epsilon(1e-14));
+  CHECK(std::atan2(c.y, c.x) * 180 / wear::pi == Approx(pl.angle_deg).epsilon(1e-14));
 }
