@@ -149,6 +149,11 @@ CalibrateArguments calibrate_arguments(const std::vector<std::string>& args) {
   return a;
 }
 
+/// What the calibration averaged: revolutions, or a scene part's stages (per second).
+const char* averaged(const Calibration& c) {
+  return c.unit == "s" ? "stages" : "revolutions";
+}
+
 void print_calibration(const CalibrateArguments& a, const Calibration& c, std::ostream& out) {
   char line[512];
   std::snprintf(line, sizeof line,
@@ -158,8 +163,8 @@ void print_calibration(const CalibrateArguments& a, const Calibration& c, std::o
                 "%s: %.6g -> %.6g (x %.4g)\n",
                 a.run.c_str(), a.part.empty() ? "" : (", part '" + a.part + "'").c_str(),
                 c.model.c_str(), c.unit.c_str(), c.simulated_per_rev * 1e9, c.n_revolutions,
-                c.unit == "s" ? "stages" : "revolutions", c.first_revolution, c.unit.c_str(),
-                c.measured_per_rev * 1e9, c.coefficient_name.c_str(), c.coefficient, c.calibrated,
+                averaged(c), c.first_revolution, c.unit.c_str(), c.measured_per_rev * 1e9,
+                c.coefficient_name.c_str(), c.coefficient, c.calibrated,
                 c.calibrated / c.coefficient);
   out << line;
 }
@@ -179,9 +184,8 @@ void write_calibration(const CalibrateArguments& a, const Calibration& c, const 
                   "end\n",
                   c.coefficient_name.c_str(), c.unit.c_str(), a.run.c_str(),
                   a.part.empty() ? "" : (", part " + a.part).c_str(), c.simulated_per_rev,
-                  c.n_revolutions, c.unit == "s" ? "stages" : "revolutions", c.first_revolution,
-                  c.measured_per_rev, c.unit.c_str(), a.measured.c_str(),
-                  c.unit == "s" ? a.time : a.revolutions,
+                  c.n_revolutions, averaged(c), c.first_revolution, c.measured_per_rev,
+                  c.unit.c_str(), a.measured.c_str(), c.unit == "s" ? a.time : a.revolutions,
                   c.unit == "s" ? "s of operation" : "simulated revolutions", c.model.c_str(),
                   c.coefficient_name.c_str(), c.calibrated);
     f << text;
@@ -190,6 +194,22 @@ void write_calibration(const CalibrateArguments& a, const Calibration& c, const 
 } // namespace
 
 namespace {
+
+/// Whether a run is calibrated per second (a scene's part without an evaluation) or per
+/// revolution (the tester's run, or the part a scene evaluates: its periods). Throws for a
+/// scene without --part and for a part that is not one of its wearing walls.
+bool per_second(const CaseParameters& p, const std::string& run, const std::string& part) {
+  if (p.scene.walls.empty())
+    return false;
+  if (part.empty())
+    throw std::invalid_argument("calibrate: run '" + run +
+                                "' is a scene's; name its wearing part with --part <wall name>");
+  if (std::none_of(p.scene.walls.begin(), p.scene.walls.end(),
+                   [&](const auto& w) { return w.name == part && w.wears; }))
+    throw std::runtime_error("calibrate: run '" + run + "' has no wearing part '" + part +
+                             "' (--part)");
+  return p.scene.evaluation.wall != part;
+}
 
 // A scene's part without an evaluation: its staged stages' wear-law volume per second.
 void calibrate_per_second(const std::string& run, const std::string& part, const CaseParameters& p,
@@ -229,14 +249,7 @@ Calibration calibrate(const std::string& run, double measured_volume, double rev
                                 " must be a positive number");
   const CaseParameters p = read_case(run + "/parameters.prm");
   const bool scene = !p.scene.walls.empty();
-  if (scene && part.empty())
-    throw std::runtime_error("calibrate: run '" + run +
-                             "' is a scene's; name its wearing part with --part <wall name>");
-  if (scene && std::none_of(p.scene.walls.begin(), p.scene.walls.end(),
-                            [&](const auto& w) { return w.name == part && w.wears; }))
-    throw std::runtime_error("calibrate: run '" + run + "' has no wearing part '" + part +
-                             "' (--part)");
-  const bool evaluated = !scene || p.scene.evaluation.wall == part;
+  const bool by_time = per_second(p, run, part);
   Calibration c;
   c.model = p.wear_law.model;
   const dem::WearLawParameter* coefficient = linear_coefficient(c.model);
@@ -245,11 +258,11 @@ Calibration calibrate(const std::string& run, double measured_volume, double rev
                              "/parameters.prm' has no coefficient to calibrate");
   c.coefficient_name = coefficient->name;
   c.coefficient = p.wear_law.*coefficient->member;
-  if (!evaluated) {
+  if (by_time) {
     calibrate_per_second(run, part, p, measured_volume, revolutions, from_revolution, c);
-    c.calibrated = c.coefficient * c.measured_per_rev / c.simulated_per_rev;
     if (!(c.simulated_per_rev > 0))
       throw std::runtime_error("calibrate: part '" + part + "' of '" + run + "' wore nothing");
+    c.calibrated = c.coefficient * c.measured_per_rev / c.simulated_per_rev;
     return c;
   }
   const std::string path = (scene ? run + "/parts/" + part : run) + "/summary.csv";
@@ -289,21 +302,17 @@ Calibration calibrate(const std::string& run, double measured_volume, double rev
 
 int run_calibrate_command(const std::vector<std::string>& args, std::ostream& out) {
   const CalibrateArguments a = calibrate_arguments(args);
-  const CaseParameters p = read_case(a.run + "/parameters.prm");
-  if (!p.scene.walls.empty() && a.part.empty())
-    throw std::invalid_argument("wearsim calibrate: run '" + a.run +
-                                "' is a scene's; name its wearing part with --part <wall name>");
-  const bool per_second = !p.scene.walls.empty() && p.scene.evaluation.wall != a.part;
-  if (per_second && a.time == 0)
+  const bool by_time = per_second(read_case(a.run + "/parameters.prm"), a.run, a.part);
+  if (by_time && a.time == 0)
     throw std::invalid_argument("wearsim calibrate: part '" + a.part +
                                 "' has no revolutions (Scene/Evaluation); give the time the "
                                 "measurement stands for with --time <s>");
-  if (!per_second && a.revolutions == 0)
+  if (!by_time && a.revolutions == 0)
     throw std::invalid_argument("wearsim calibrate: give the revolutions the measurement stands "
                                 "for with --revolutions <n> (--time is for a scene's part "
                                 "without an evaluation)");
   const Calibration c = calibrate(a.run, parse_volume(a.measured, "--measured"),
-                                  per_second ? a.time : a.revolutions, a.from, a.part);
+                                  by_time ? a.time : a.revolutions, a.from, a.part);
   print_calibration(a, c, out);
   const std::string file = a.run + "/calibration.prm";
   write_calibration(a, c, file);

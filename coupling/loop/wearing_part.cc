@@ -122,7 +122,7 @@ WearingPart::WearingPart(const CaseParameters& p, std::size_t index, dem::SceneW
 void WearingPart::make_evaluation(const CaseParameters& p) {
   if (p.scene.evaluation.wall == name_)
     evaluation_ = std::make_unique<dem::SceneEvaluation>(
-        p.scene, p.geometry, p.dem.psd.mean_diameter(), wall_, wall_surface());
+        p.scene, p.geometry, p.dem.psd.mean_diameter(), wall_, surface());
 }
 
 meshes::SurfaceMesh WearingPart::wall_surface() const {
@@ -142,11 +142,6 @@ void WearingPart::observe(const dem::SceneRun& scene, const dem::SceneWindow& w,
                           double wall_seconds) {
   if (evaluation_)
     evaluation_->observe(scene, w, law, window.wear_volume.values(), wall_seconds);
-}
-
-const std::vector<dem::RevolutionRecord>& WearingPart::revolutions() const {
-  static const std::vector<dem::RevolutionRecord> none;
-  return evaluation_ ? evaluation_->history() : none;
 }
 
 void WearingPart::write_tables() const {
@@ -242,7 +237,7 @@ void WearingPart::run_stage(
   r.output_seconds += clock.seconds();
   if (evaluation_) { // the periods of this stage (a stage is a whole number of them)
     if (staged)
-      evaluation_->set_surface(wall_surface());
+      evaluation_->set_surface(surface);
     r.first_revolution = stages_.empty() ? 1 : stages_.back().last_revolution + 1;
     r.last_revolution = int(evaluation_->history().size());
   }
@@ -266,8 +261,7 @@ void WearingPart::run_stage(
                 "particles pushed out\n",
                 r.stage, scheme_name(r.scheme).c_str(), name_.c_str(), r.dem_wear_volume * 1e9,
                 r.applied_volume * 1e9, r.cumulative_applied * 1e9, r.max_von_mises_ball * 1e-6,
-                r.n_remeshes, r.fem_solve_seconds + r.motion_seconds + r.remesh_seconds,
-                r.n_pushed)
+                r.n_remeshes, r.fem_solve_seconds + r.motion_seconds + r.remesh_seconds, r.n_pushed)
       << std::flush;
 }
 

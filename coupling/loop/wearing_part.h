@@ -65,8 +65,6 @@ public:
   /// calls it together). Nothing without an evaluation.
   void observe(const dem::SceneRun& scene, const dem::SceneWindow& w, const dem::WearLaw& law,
                const dem::WallLoads& window, double wall_seconds);
-  /// The evaluation's records, or none without one.
-  const std::vector<dem::RevolutionRecord>& revolutions() const;
 
   /// Stage r (its number, scheme, amplification, time and DEM figures set) under the loads
   /// the DEM summed on the part (part frame): the wear increment; for a staged stage the
@@ -95,7 +93,8 @@ private:
   std::map<int, double> removed_per_label_;
   std::string wear_rows_; ///< part_wear.csv's rows so far
 
-  /// The evaluation Scene/Evaluation asks of this part, on its surface (scene frame).
+  /// The evaluation Scene/Evaluation asks of this part (the tester's sample), on its surface
+  /// in its own frame.
   void make_evaluation(const CaseParameters& p);
   /// The part's tables: stages.csv, history.h5 and, evaluated, summary.csv.
   void write_tables() const;

@@ -112,7 +112,6 @@ void System::size_wear_accumulators() {
   }
 }
 
-
 PushReport System::push_out_of_wall(int w, const meshes::SurfaceMesh& mesh, double tolerance) {
   const MeshWall& wall = walls_[mesh_index(w, "push_out_of_wall")];
   PushReport report;

@@ -8,7 +8,8 @@
 // integrals); the period's record takes the wear volume as the windows' loads lay it on the
 // faces (DEM/Wear field), summed, and the per-contact total. Records and samples are the
 // tester's (dem/evaluation/tester_evaluation.h): columns, elements and the bed are read in the
-// sample's own frame (Geometry/Sample, Geometry/Placement).
+// sample's own frame (Geometry/Sample, Geometry/Placement), in which the caller gives the
+// sample's surface.
 #include "dem/scene/scene_evaluation.h"
 
 #include "dem/engine/rank_states.h"
@@ -20,14 +21,11 @@ namespace wear::dem {
 
 SceneEvaluation::SceneEvaluation(const SceneParameters& scene, const meshes::GeometryParameters& g,
                                  double layer_diameter, std::size_t wall,
-                                 const meshes::SurfaceMesh& placed)
+                                 const meshes::SurfaceMesh& sample)
     : wall_(wall), n_samples_(int(std::lround(scene.evaluation.period / scene.output_interval))),
-      frame_(g.sample, g.placement),
-      evaluation_(frame_.place_in_sample(placed), g.sample, g.placement, layer_diameter,
-                  scene.evaluation.steady_threshold, scene.evaluation.steady_periods) {
-  open_.removed.assign(placed.n_faces(), 0);
-  open_.normal_impulse.assign(placed.n_faces(), 0);
-  open_.wear_volume.assign(placed.n_faces(), 0);
+      evaluation_(sample, g.sample, g.placement, layer_diameter, scene.evaluation.steady_threshold,
+                  scene.evaluation.steady_periods) {
+  open_period(sample.n_faces());
 }
 
 void SceneEvaluation::observe(const SceneRun& scene, const SceneWindow& w, const WearLaw& law,
@@ -71,20 +69,21 @@ void SceneEvaluation::observe(const SceneRun& scene, const SceneWindow& w, const
   r.wall_seconds = open_.wall_seconds;
   r.particle_steps_per_second =
       open_.wall_seconds > 0 ? open_.particle_steps / open_.wall_seconds : 0;
-  SceneEvaluationState next;
-  next.removed.assign(nf, 0);
-  next.normal_impulse.assign(nf, 0);
-  next.wear_volume.assign(nf, 0);
-  open_ = std::move(next);
+  open_period(nf);
 }
 
-void SceneEvaluation::set_surface(const meshes::SurfaceMesh& placed) {
+void SceneEvaluation::open_period(std::size_t n_faces) {
+  open_ = SceneEvaluationState{};
+  open_.removed.assign(n_faces, 0);
+  open_.normal_impulse.assign(n_faces, 0);
+  open_.wear_volume.assign(n_faces, 0);
+}
+
+void SceneEvaluation::set_surface(const meshes::SurfaceMesh& sample) {
   if (open_.n_windows != 0)
     throw std::logic_error("SceneEvaluation: a new surface inside a period");
-  evaluation_.set_surface(frame_.place_in_sample(placed));
-  open_.removed.assign(placed.n_faces(), 0);
-  open_.normal_impulse.assign(placed.n_faces(), 0);
-  open_.wear_volume.assign(placed.n_faces(), 0);
+  evaluation_.set_surface(sample);
+  open_period(sample.n_faces());
 }
 
 SceneEvaluationState SceneEvaluation::state() const {

@@ -33,22 +33,22 @@ struct SceneEvaluationState {
 
 class SceneEvaluation {
 public:
-  /// Evaluates wall `wall` of the scene, whose surface `placed` is in the scene's frame (the
-  /// tester's), with the tester geometry `g` (its sample and placement) and the bottom
-  /// layer's diameter `layer_diameter` [m] (the size distribution's mean).
+  /// Evaluates wall `wall` of the scene, the tester's sample, whose surface `sample` is given
+  /// in the sample's own frame (face order as the DEM wall's), with the tester geometry `g`
+  /// (its sample and placement) and the bottom layer's diameter `layer_diameter` [m] (the
+  /// size distribution's mean).
   SceneEvaluation(const SceneParameters& scene, const meshes::GeometryParameters& g,
-                  double layer_diameter, std::size_t wall, const meshes::SurfaceMesh& placed);
+                  double layer_diameter, std::size_t wall, const meshes::SurfaceMesh& sample);
 
-  std::size_t wall() const { return wall_; }
   /// After window w: its integrals on the wall (w.wearing), `wear_volume` [m^3] the window's
   /// loads' wear volume on the wall's faces, `wall_seconds` [s] the window's wall time. Takes
   /// a sample of the particles over the sample (over ranks gathered on every rank: every rank
   /// calls it together) and closes a record at the period's last window.
   void observe(const SceneRun& scene, const SceneWindow& w, const WearLaw& law,
                const std::vector<double>& wear_volume, double wall_seconds);
-  /// The wall's new surface (scene frame; between two periods): columns and labels derived
-  /// anew, the records kept.
-  void set_surface(const meshes::SurfaceMesh& placed);
+  /// The wall's new surface (the sample's frame; between two periods): columns and labels
+  /// derived anew, the records kept.
+  void set_surface(const meshes::SurfaceMesh& sample);
 
   const std::vector<RevolutionRecord>& history() const { return evaluation_.history(); }
   int n_columns() const { return evaluation_.n_columns(); }
@@ -60,10 +60,11 @@ public:
 
 private:
   std::size_t wall_;
-  int n_samples_;             ///< windows per period
-  meshes::SampleFrame frame_; ///< sample <-> scene (tester) frame
+  int n_samples_; ///< windows per period
   TesterEvaluation evaluation_;
   SceneEvaluationState open_; ///< the open period's sums (its samples live in evaluation_)
+  /// The sums of a period not yet begun, on `n_faces` faces.
+  void open_period(std::size_t n_faces);
 };
 
 } // namespace wear::dem
