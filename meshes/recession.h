@@ -1,7 +1,7 @@
 #pragma once
 // The recession of a worn surface: how far, and along what, its vertices move for a removed
 // volume per face. One home for both deformation schemes: the reference node-moving scheme
-// (dem/tester/reference_deformation) moves the vertices by area_weighted_recession as it is;
+// (dem/wear/reference_deformation) moves the vertices by area_weighted_recession as it is;
 // the staged scheme (fem/) keeps the vertices shared with the unworn surface on it and scales
 // the field until the enclosed volume drops by exactly the removed volume
 // (volume_exact_recession), and gives back the volume a remesh cut off with the same field

@@ -76,12 +76,12 @@ SceneCoupledRun::SceneCoupledRun(const CaseParameters& p, std::ostream& log,
                                   "float)");
   }
   for (const auto& item : parse_schedule(p_.coupling.schedule)) {
-    if (item.scheme == Scheme::reference)
-      throw std::invalid_argument("Coupling/Schedule: the reference (node-moving) scheme runs "
-                                  "on the built-in tester only; a scene's stages are staged or "
-                                  "dem-only");
     plan_.insert(plan_.end(), std::size_t(item.n_stages), item.scheme);
+    moves_nodes_ |= item.scheme == Scheme::reference;
   }
+  if (moves_nodes_ && options_.resume)
+    throw std::invalid_argument("--resume: a reference (node-moving) run is not checkpointed; "
+                                "run it again with --overwrite");
   law_ = dem::make_wear_law(p_.wear_law);
 }
 
@@ -96,7 +96,7 @@ int SceneCoupledRun::run() {
       const int signal = ranks_.agreed_signal(signals);
       log_ << "stopped by " << StopSignals::name(signal) << " inside stage " << r.stage
            << " at t = " << scene_->time() << " s";
-      if (scene_->system().n_rebuilds() > 0 && p_.coupling.checkpoints)
+      if (scene_->system().n_rebuilds() > 0 && p_.coupling.checkpoints && !moves_nodes_)
         log_ << " after a checkpoint; continue with wearsim scene-run --resume " << p_.case_file
              << "\n";
       else // nothing was checkpointed: no particle yet, or checkpoints off
@@ -106,6 +106,11 @@ int SceneCoupledRun::run() {
     }
     run_parts(r, *loads);
     n_stages_done_ = r.stage;
+    if (const std::string distorted = distortion(); !distorted.empty()) {
+      log_ << "the reference method distorted " << distorted << " in stage " << r.stage
+           << "; the run stops here, as the reference study's did\n";
+      break;
+    }
     checkpoint({zero_loads(), scene_->time() + p_.scene.stage_duration});
     if (options_.stop_after > 0 && ++n_run >= options_.stop_after && k + 1 < plan_.size()) {
       log_ << "stopped after stage " << r.stage << " as asked; continue with --resume\n";
@@ -134,6 +139,13 @@ std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::setup() {
   scene_ = std::make_unique<dem::SceneRun>(p_.scene, p_.dem, std::move(walls));
   scene_->set_rank_link(options_.ranks);
   scene_->setup([&](const std::string& text) { log_ << "scene: " << text << "\n" << std::flush; });
+  if (moves_nodes_) {
+    for (const auto& part : parts_)
+      scene_->move_wall_nodes(part.wall(), p_.wear_law, p_.deformation.update_interval,
+                              p_.coupling.amplification);
+    log_ << "scene: the wearing parts' nodes move inside the DEM every "
+         << p_.deformation.update_interval << " steps (reference scheme; not checkpointed)\n";
+  }
   if (options_.ranks && options_.ranks->n_ranks() > 1)
     log_ << "scene: " << scene_->rank_layout() << "; rank 0 writes" << std::endl;
   for (auto& part : parts_)
@@ -274,21 +286,35 @@ SceneCoupledRun::run_dem(StageRecord& r, std::optional<OpenSceneStage> open,
 }
 
 void SceneCoupledRun::run_parts(const StageRecord& r, const std::vector<dem::WallLoads>& loads) {
-  for (std::size_t i = 0; i < parts_.size(); ++i)
-    parts_[i].run_stage(r, loads[i], part_case_, log_, [&](const meshes::SurfaceMesh& surface) {
-      ranks_.require_same(parts_[i].surface(), "part '" + parts_[i].name() +
-                                                   "' after the FEM part of stage " +
-                                                   std::to_string(r.stage));
-      return scene_->replace_wall_surface(parts_[i].wall(), surface, p_.coupling.push_tolerance);
-    });
+  for (std::size_t i = 0; i < parts_.size(); ++i) {
+    const dem::WallNodeMoves* moves = scene_->node_moves(parts_[i].wall());
+    parts_[i].run_stage(
+        r, loads[i], part_case_, log_,
+        [&](const meshes::SurfaceMesh& surface) {
+          ranks_.require_same(parts_[i].surface(), "part '" + parts_[i].name() +
+                                                       "' after the FEM part of stage " +
+                                                       std::to_string(r.stage));
+          return scene_->replace_wall_surface(parts_[i].wall(), surface,
+                                              p_.coupling.push_tolerance);
+        },
+        moves ? &moves->deformation() : nullptr);
+  }
   if (!parts_.empty())
     log_ << format("stage %d %s done at t = %.4g s, DEM %.0f s\n", r.stage,
                    scheme_name(r.scheme).c_str(), r.time, r.dem_seconds)
          << std::flush;
 }
 
+std::string SceneCoupledRun::distortion() const {
+  for (const auto& part : parts_)
+    if (!part.stages().empty() && !part.stages().back().distortion.empty())
+      return "part '" + part.name() + "' (" + part.stages().back().distortion + ")";
+  return {};
+}
+
+// The node moves of the reference scheme are not part of a checkpoint: such a run has none.
 void SceneCoupledRun::checkpoint(const OpenSceneStage& open) {
-  if (!p_.coupling.checkpoints || scene_->system().n_rebuilds() == 0)
+  if (!p_.coupling.checkpoints || moves_nodes_ || scene_->system().n_rebuilds() == 0)
     return;
   const dem::SceneRunState state = scene_->state();
   Checkpoint c;

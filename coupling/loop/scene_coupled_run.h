@@ -59,6 +59,9 @@ private:
   run_dem(StageRecord& r, std::optional<OpenSceneStage> open, const StopSignals& signals);
   /// Each part's stage under its loads; a part whose surface changed goes to its DEM wall.
   void run_parts(const StageRecord& r, const std::vector<dem::WallLoads>& loads);
+  /// The first part the reference scheme distorted, with where ("part 'sample' (inverted face
+  /// at ...)"), empty if none.
+  std::string distortion() const;
   /// Writes checkpoint.h5 (the one before kept); `open`: the stage in progress.
   void checkpoint(const OpenSceneStage& open);
   /// The loads a stage starts from: zero on each part's faces.
@@ -76,6 +79,7 @@ private:
   CaseParameters part_case_;
   std::string parameters_text_;
   std::vector<Scheme> plan_;
+  bool moves_nodes_ = false; ///< the reference scheme: the parts' nodes move inside the DEM
   std::vector<std::size_t> part_walls_; ///< the wearing walls' indices in the scene, with stages
   std::unique_ptr<dem::WearLaw> law_;
   std::vector<WearingPart> parts_;

@@ -129,9 +129,11 @@ meshes::SurfaceMesh WearingPart::wall_surface() const {
   return frame_ ? frame_->place_in_tester(surface()) : surface();
 }
 
+// The wall's surface may be a revision of the part's own faces (moved by the DEM's nodes in a
+// reference stage): the loads follow the faces.
 dem::WallLoads WearingPart::own_loads(const dem::WallLoads& wall_loads) const {
   if (!frame_)
-    return wall_loads;
+    return wall_loads.follow(surface(), [](const meshes::Vec3& v) { return v; });
   const meshes::SampleFrame& frame = *frame_;
   return wall_loads.follow(surface(),
                            [&frame](const meshes::Vec3& v) { return frame.vector_to_sample(v); });
@@ -195,8 +197,12 @@ WearingPart::WearingPart(const CaseParameters& p, std::size_t index, const PartC
 
 void WearingPart::run_stage(
     StageRecord r, const dem::WallLoads& loads, const CaseParameters& p, std::ostream& log,
-    const std::function<dem::PushReport(const meshes::SurfaceMesh&)>& to_wall) {
-  const bool staged = r.scheme == Scheme::staged;
+    const std::function<dem::PushReport(const meshes::SurfaceMesh&)>& to_wall,
+    const dem::ReferenceDeformation* moved) {
+  const bool staged = r.scheme == Scheme::staged, reference = r.scheme == Scheme::reference;
+  if (reference != (moved != nullptr))
+    throw std::logic_error("WearingPart::run_stage: the DEM's moved surface is a reference "
+                           "stage's, and only its");
   const meshes::Stopwatch wear_clock;
   const WearIncrement increment =
       wear_increment(sample_->surface(), loads.wear_volume, previous_stress_, p.coupling, staged);
@@ -219,16 +225,24 @@ void WearingPart::run_stage(
     r.n_pushed = pushed.n_pushed;
     r.max_push = pushed.max_distance;
   }
+  const meshes::SurfaceMesh surface =
+      reference ? reference_stage(*moved, increment.removed, r) : sample_->surface();
 
   const meshes::Stopwatch clock;
-  const auto& surface = sample_->surface();
   std::map<int, double> stage_per_label;
   for (std::size_t f = 0; f < surface.n_faces(); ++f)
     stage_per_label[surface.face_labels[f]] += applied[f];
-  std::vector<meshes::VtuArray> fields{
-      {"cumulative removed volume", 1, sample_->removed_volume().values()},
-      {"wear depth", 1, sample_->wear_depth().values()},
-      {"stage removed volume", 1, applied.values()}};
+  std::vector<double> cumulative = sample_->removed_volume().values(),
+                      depth = sample_->wear_depth().values();
+  if (reference) {
+    cumulative = moved_volume_;
+    const auto area = meshes::face_areas(surface);
+    for (std::size_t f = 0; f < depth.size(); ++f)
+      depth[f] = cumulative[f] / area[f];
+  }
+  std::vector<meshes::VtuArray> fields{{"cumulative removed volume", 1, cumulative},
+                                       {"wear depth", 1, depth},
+                                       {"stage removed volume", 1, applied.values()}};
   if (staged)
     fields.push_back({"von Mises", 1, previous_stress_.values()});
   output_->add_surface(r.stage, r.time, surface, fields);
@@ -236,14 +250,14 @@ void WearingPart::run_stage(
   r.n_tetrahedra = int(sample_->triangulation().n_active_cells());
   r.output_seconds += clock.seconds();
   if (evaluation_) { // the periods of this stage (a stage is a whole number of them)
-    if (staged)
+    if (staged || reference)
       evaluation_->set_surface(surface);
     r.first_revolution = stages_.empty() ? 1 : stages_.back().last_revolution + 1;
     r.last_revolution = int(evaluation_->history().size());
   }
   stages_.push_back(r);
   write_tables();
-  if (staged) // a dem-only stage's volume changes nothing
+  if (staged || reference) // a dem-only stage's volume changes nothing
     for (const auto& [label, v] : stage_per_label)
       removed_per_label_[label] += v;
   std::ostringstream rows;
@@ -263,6 +277,27 @@ void WearingPart::run_stage(
                 r.applied_volume * 1e9, r.cumulative_applied * 1e9, r.max_von_mises_ball * 1e-6,
                 r.n_remeshes, r.fem_solve_seconds + r.motion_seconds + r.remesh_seconds, r.n_pushed)
       << std::flush;
+}
+
+// A reference stage's figures from the DEM's node moves (cumulative over the run): the volume
+// the nodes took up on the wearing faces and the enclosed volume the surface lost; the surface
+// they moved, in the part's frame.
+meshes::SurfaceMesh WearingPart::reference_stage(const dem::ReferenceDeformation& moved,
+                                                 const meshes::FaceField<double>& removed,
+                                                 StageRecord& r) {
+  double before = 0, lost_before = 0;
+  for (const auto& s : stages_) {
+    before = s.cumulative_applied;
+    lost_before += s.geometry_volume_change;
+  }
+  r.cumulative_applied = moved.applied_volume();
+  r.applied_volume = r.cumulative_applied - before;
+  r.geometry_volume_change = moved.enclosed_volume_loss() - lost_before;
+  r.distortion = moved.distortion_text();
+  moved_volume_.resize(removed.size(), 0.0);
+  for (std::size_t f = 0; f < removed.size(); ++f)
+    moved_volume_[f] += removed[f];
+  return frame_ ? frame_->place_in_sample(moved.mesh()) : moved.mesh();
 }
 
 PartCheckpoint WearingPart::state(const dem::WallLoads& open) const {

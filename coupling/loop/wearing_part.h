@@ -13,6 +13,7 @@
 #include "coupling/parameters/case_parameters.h"
 #include "dem/scene/scene_evaluation.h"
 #include "dem/scene/scene_walls.h"
+#include "dem/wear/reference_deformation.h"
 #include "dem/wear/wall_loads.h"
 #include "fem/worn_sample.h"
 #include "meshes/sample_frame.h"
@@ -69,11 +70,13 @@ public:
   /// Stage r (its number, scheme, amplification, time and DEM figures set) under the loads
   /// the DEM summed on the part (part frame): the wear increment; for a staged stage the
   /// stress under those loads, the geometry update and the new surface handed to `to_wall`
-  /// (in the wall's frame; it says which particles it pushed out). Records the stage and
-  /// writes its output.
+  /// (in the wall's frame; it says which particles it pushed out); for a reference stage the
+  /// surface the DEM moved (`moved`, the wall's node moves; null otherwise). Records the
+  /// stage and writes its output.
   void run_stage(StageRecord r, const dem::WallLoads& loads, const CaseParameters& p,
                  std::ostream& log,
-                 const std::function<dem::PushReport(const meshes::SurfaceMesh&)>& to_wall);
+                 const std::function<dem::PushReport(const meshes::SurfaceMesh&)>& to_wall,
+                 const dem::ReferenceDeformation* moved = nullptr);
   /// The part's checkpoint part; `open`: the open stage's loads summed so far.
   PartCheckpoint state(const dem::WallLoads& open) const;
 
@@ -91,11 +94,18 @@ private:
   /// first): the stress-informed wear law's input to the next stage
   meshes::FaceField<double> previous_stress_;
   std::map<int, double> removed_per_label_;
+  /// [m^3] per face, the volume the reference stages moved the DEM's nodes by (declared,
+  /// amplified), on the faces of surface(); empty before a reference stage
+  std::vector<double> moved_volume_;
   std::string wear_rows_; ///< part_wear.csv's rows so far
 
   /// The evaluation Scene/Evaluation asks of this part (the tester's sample), on its surface
   /// in its own frame.
   void make_evaluation(const CaseParameters& p);
+  /// A reference stage's record figures from the DEM's node moves, the stage's removed
+  /// volume `removed` added to moved_volume_; returns the moved surface in the part's frame.
+  meshes::SurfaceMesh reference_stage(const dem::ReferenceDeformation& moved,
+                                      const meshes::FaceField<double>& removed, StageRecord& r);
   /// The part's tables: stages.csv, history.h5 and, evaluated, summary.csv.
   void write_tables() const;
 };

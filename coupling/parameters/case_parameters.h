@@ -5,7 +5,7 @@
 // composes them (meshes/ and dem/ have no deal.II dependency).
 #include "coupling/parameters/coupling_parameters.h"
 #include "dem/scene/scene_parameters.h"
-#include "dem/tester/reference_deformation.h"
+#include "dem/wear/reference_deformation.h"
 #include "dem/tester/tester_parameters.h"
 #include "dem/wear/wear_law.h"
 #include "fem/fem_parameters.h"

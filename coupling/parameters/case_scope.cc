@@ -32,6 +32,18 @@ std::vector<std::string> tester_dem_paths() {
   return v.paths;
 }
 
+/// The schedule has a reference (node-moving) stage; false for a schedule that does not read
+/// (its own check names it).
+bool has_reference_stage(const CaseParameters& p) {
+  try {
+    for (const auto& item : parse_schedule(p.coupling.schedule))
+      if (item.scheme == Scheme::reference)
+        return true;
+  } catch (const std::invalid_argument&) {
+  }
+  return false;
+}
+
 } // namespace
 
 std::string unused_because(const CaseParameters& p, const std::string& entry) {
@@ -48,10 +60,13 @@ std::string unused_because(const CaseParameters& p, const std::string& entry) {
     return "the built-in wear tester's own, and " + is_scene +
            ": a scene's bed is Scene/Fill, its walls' motions their own, its length Scene/End "
            "time or its stages";
+  if (entry == "Deformation/Update interval")
+    return has_reference_stage(p) ? ""
+                                  : "the node-moving reference scheme's, and Coupling/Schedule "
+                                    "has no reference stage";
   if (starts_with(entry, "Deformation/"))
-    return "the node-moving reference scheme's, which runs in the built-in wear tester only, "
-           "and " +
-           is_scene;
+    return "the built-in wear tester's `wearsim dem` switch, and " + is_scene +
+           ": its reference stages are Coupling/Schedule's, amplified by Coupling/Amplification";
   if (starts_with(entry, "Geometry/")) {
     const bool sample = has_wall_source(p, dem::WallSource::sample),
                holder = has_wall_source(p, dem::WallSource::holder);

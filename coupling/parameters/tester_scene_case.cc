@@ -17,11 +17,6 @@ CaseParameters tester_scene_case(const CaseParameters& tester) {
     throw std::invalid_argument("case file '" + tester.case_file +
                                 "' is a scene already (Scene/Walls = " + tester.scene.wall_names +
                                 "); `wearsim tester-scene` writes a wear-tester case as a scene");
-  for (const auto& item : parse_schedule(tester.coupling.schedule))
-    if (item.scheme == Scheme::reference)
-      throw std::invalid_argument("Coupling/Schedule: a reference stage moves the sample's nodes "
-                                  "inside the built-in tester's DEM; a scene's stages are staged "
-                                  "or dem-only");
   CaseParameters s = tester;
   s.scene = dem::tester_scene(tester.geometry, tester.dem, tester.coupling.revolutions_per_stage);
   s.dem = dem::TesterDemParameters{};
@@ -29,7 +24,10 @@ CaseParameters tester_scene_case(const CaseParameters& tester) {
   s.geometry.tester = meshes::TesterGeometry{};
   if (tester.geometry.tester.holder) // the scene's holder reads its rim width there
     s.geometry.tester.holder_rim_width = tester.geometry.tester.holder_rim_width;
-  s.deformation = dem::ReferenceDeformationParameters{};
+  s.deformation = dem::ReferenceDeformationParameters{}; // a scene reads only the interval
+  for (const auto& item : parse_schedule(tester.coupling.schedule))
+    if (item.scheme == Scheme::reference)
+      s.deformation.update_interval = tester.deformation.update_interval;
   s.coupling.revolutions_per_stage = CouplingParameters{}.revolutions_per_stage;
   s.output.directory = tester.output.directory + "-scene";
   return s;

@@ -132,6 +132,7 @@ std::unique_ptr<SceneRun> SceneRun::rebalanced() const {
   auto next = std::make_unique<SceneRun>(scene_, dem_, walls_);
   next->set_rank_link(link);
   next->cut_balanced_ = true;
+  next->node_moves_ = node_moves_; // walls_ hold their moved surfaces
   next->resume(whole);
   return next;
 }

@@ -447,27 +447,33 @@ SceneWindow SceneRun::advance(double t_end) {
   SceneWindow w;
   w.t_begin = time_;
   bool set_up = engine_ready();
-  if (set_up)
+  const auto begin_integrals = [this] {
     system_.reset_wear_integrals();
+    for (auto& m : node_moves_)
+      m.begin_window();
+  };
+  if (set_up)
+    begin_integrals();
   double accounted_from = time_;
   while (time_ < t_end - 1e-9 * exchange_) {
     const bool was_set_up = set_up;
     exchange();
     set_up = engine_ready();
     if (set_up && !was_set_up) {
-      system_.reset_wear_integrals();
+      begin_integrals();
       accounted_from = time_;
     }
     const double next = std::min(t_end, time_ + exchange_);
     if (set_up) {
-      const auto steps = std::max<std::uint64_t>(
-          1, std::uint64_t(std::llround((next - time_) / system_.time_step())));
-      system_.run(steps);
+      run_steps(std::max<std::uint64_t>(
+          1, std::uint64_t(std::llround((next - time_) / system_.time_step()))));
       time_ = system_.time();
     } else {
       time_ = next;
     }
   }
+  if (set_up && !node_moves_.empty() && system_.n_steps() % node_moves_.front().every() != 0)
+    move_nodes(); // the window's last wear, so that its moves add up to the window's volume
   w.t_end = time_;
   const auto& p = system_.particles;
   RankLink* link = rank_link();
@@ -527,8 +533,51 @@ WallLoads SceneRun::wall_loads(std::size_t k, const WearLaw& law, const SceneWin
                          w.integrated, load_spreading(dem_.wall_loads, dem_.psd));
 }
 
+void SceneRun::run_steps(std::uint64_t n) {
+  while (n > 0) {
+    std::uint64_t k = n;
+    for (const auto& m : node_moves_)
+      k = std::min(k, m.steps_to_move(system_.n_steps()));
+    system_.run(k);
+    n -= k;
+    if (!node_moves_.empty() && system_.n_steps() % node_moves_.front().every() == 0)
+      move_nodes();
+  }
+}
+
+void SceneRun::move_nodes() {
+  for (auto& m : node_moves_)
+    walls_[std::size_t(m.wall())].surface.mesh = m.move(system_);
+}
+
+void SceneRun::move_wall_nodes(std::size_t k, const WearLawParameters& law, std::uint64_t every,
+                               double amplification) {
+  const SceneWallParameters& wall = walls_.at(k).parameters;
+  if (!wall.wears || system_.wall_kind(int(k)) != WallKind::mesh)
+    throw std::invalid_argument(scene_wall_path(wall) + ": the node-moving method moves a "
+                                                        "wearing wall's triangles (Wears = true)");
+  if (system_.wall(int(k)).moving()) // its nodes are the body frame's, posed by the motion
+    throw std::invalid_argument(scene_wall_path(wall) +
+                                "/Motion: the node-moving method moves "
+                                "the nodes of a wall that keeps its place (fixed, or a surface "
+                                "motion), not of one that moves as a whole");
+  if (!node_moves_.empty() && every != node_moves_.front().every())
+    throw std::logic_error("SceneRun::move_wall_nodes: one update interval for every wall");
+  node_moves_.emplace_back(int(k), walls_[k].surface.mesh, law, every, amplification);
+}
+
+const WallNodeMoves* SceneRun::node_moves(std::size_t k) const {
+  for (const auto& m : node_moves_)
+    if (m.wall() == int(k))
+      return &m;
+  return nullptr;
+}
+
 PushReport SceneRun::replace_wall_surface(std::size_t k, const meshes::SurfaceMesh& mesh,
                                           double push_tolerance) {
+  if (node_moves(k))
+    throw std::logic_error("SceneRun::replace_wall_surface: wall '" + walls_.at(k).parameters.name +
+                           "' moves its own nodes");
   const PushReport pushed = system_.push_out_of_wall(int(k), mesh, push_tolerance);
   system_.replace_wall_mesh(int(k), mesh);
   walls_.at(k).surface.mesh = mesh;

@@ -9,6 +9,7 @@
 #include "dem/scene/inlet.h"
 #include "dem/scene/outlet.h"
 #include "dem/scene/scene_walls.h"
+#include "dem/scene/wall_node_moves.h"
 #include "dem/wear/wall_loads.h"
 #include "dem/wear/wear_law.h"
 
@@ -119,6 +120,17 @@ public:
   PushReport replace_wall_surface(std::size_t k, const meshes::SurfaceMesh& mesh,
                                   double push_tolerance);
 
+  /// Moves wall k's nodes inside the DEM from now on (the node-moving method, wall_node_moves.h):
+  /// every `every` engine steps and at each window's end, by `amplification` times the removed
+  /// volume of `law` since the last move. The wall must be a wearing triangle wall (Wears =
+  /// true) that keeps its place (at rest or with a surface motion); its surface stays frozen at the
+  /// last valid one after a distortion. The moved surface is the wall's (walls()[k], its loads laid
+  /// on it). Throws naming the wall otherwise.
+  void move_wall_nodes(std::size_t k, const WearLawParameters& law, std::uint64_t every,
+                       double amplification);
+  /// Wall k's node moves, or null when its nodes do not move.
+  const WallNodeMoves* node_moves(std::size_t k) const;
+
   double time() const { return time_; } ///< [s]
   /// [s] Inlet batches and outlets act this often (the shortest inlet interval).
   double exchange_interval() const { return exchange_; }
@@ -146,6 +158,7 @@ private:
   double time_ = 0;     ///< [s] scene time (the engine's clock once it is set up)
   double exchange_ = 0; ///< [s]
   std::uint64_t n_removed_ = 0;
+  std::vector<WallNodeMoves> node_moves_; ///< walls whose nodes move (move_wall_nodes)
 
   /// Over ranks: the cuts Scene/Rank slabs asks (balanced: each rank as many of the particles
   /// every rank holds before the engine's set-up), or balanced whatever it asks.
@@ -164,6 +177,10 @@ private:
   /// one face of an exact surface of revolution.
   const std::vector<int>& accounting_labels(std::size_t k) const;
   void fill(const std::function<void(const std::string&)>& progress);
+  /// Runs the engine `n` steps, moving the walls' nodes on the steps they are due.
+  void run_steps(std::uint64_t n);
+  /// Moves every moving wall's nodes now and gives the scene's wall its surface.
+  void move_nodes();
   /// Inlet batches, flux-plane samples and outlets at the current time; sets the engine up
   /// at the first particle when it started empty.
   void exchange();

@@ -354,9 +354,7 @@ const RevolutionRecord& WearTester::close_revolution(double wall) {
     r.applied_volume = deformation_->applied_volume();
     r.enclosed_volume_loss = deformation_->enclosed_volume_loss();
     r.min_angle_deg = deformation_->quality().min_angle_deg;
-    if (const auto& d = deformation_->first_distortion())
-      r.distortion = d->kind + " at face " + std::to_string(d->face) + " (" +
-                     meshes::label::name(d->label) + "), t = " + std::to_string(d->time) + " s";
+    r.distortion = deformation_->distortion_text();
   }
   ++revolution_;
   open_ = false;

@@ -7,7 +7,7 @@
 #include "dem/engine/slab_decomposition.h"
 #include "dem/engine/system.h"
 #include "dem/evaluation/tester_evaluation.h"
-#include "dem/tester/reference_deformation.h"
+#include "dem/wear/reference_deformation.h"
 #include "dem/tester/tester_parameters.h"
 #include "dem/wear/wall_loads.h"
 #include "dem/wear/wear_law.h"

@@ -208,6 +208,81 @@ TEST_CASE("scene wear loop: two wearing parts, each with its own stages, stress 
   CHECK(north.wear_face_normal_force > 0);
 }
 
+TEST_CASE("scene wear loop: the reference scheme moves a part's nodes inside the DEM",
+          "[coupling][scene]") {
+  // The plate at rest under the bed, its surface moving as a belt's: the bed slides on it.
+  write_plate("wear_plate.step");
+  const std::string dir = "scene_reference_out";
+  std::filesystem::remove_all(dir);
+  std::string text = plate_case(dir, "", "2 reference");
+  text.replace(text.find("    set Motion = translation\n"), 29,
+               "    set Motion = surface translation\n");
+  text.erase(text.find("    set Start time = 0.1\n"), 25);
+  text.insert(text.find("subsection DEM\n"),
+              "subsection Deformation\n  set Update interval = 50\nend\n");
+  const auto p = read_text(dir + ".prm", text);
+  std::ostringstream log;
+  SceneCoupledRun run(p, log);
+  REQUIRE(run.run() == 0);
+  INFO(log.str());
+  const auto& part = run.parts().at(0);
+  const dem::WallNodeMoves* moves = run.scene().node_moves(part.wall());
+  REQUIRE(moves != nullptr);
+  const auto& moved = moves->deformation();
+  REQUIRE(part.stages().size() == 2);
+  double dem_wear = 0, lost = 0;
+  for (const auto& r : part.stages()) {
+    INFO("stage " << r.stage);
+    CHECK(r.distortion.empty());
+    REQUIRE(r.dem_wear_volume > 0);
+    // The moves add up to the amplified wear-law volume of the stage's windows.
+    CHECK(r.applied_volume == Approx(100 * r.dem_wear_volume).epsilon(1e-9));
+    dem_wear += r.dem_wear_volume;
+    lost += r.geometry_volume_change;
+  }
+  CHECK(part.stages().back().cumulative_applied == Approx(100 * dem_wear).epsilon(1e-9));
+  // The area-weighted node recession removes the asked volume to first order: the plate's
+  // enclosed volume lost about that (its free sides tilt at the receding top edge).
+  CHECK(lost == Approx(part.stages().back().cumulative_applied).epsilon(0.05));
+  CHECK(lost == Approx(moved.enclosed_volume_loss()).epsilon(1e-12));
+  // Every 50 engine steps a move (and one at each window's end): 0.2 s at the plate case's
+  // step, less the settling before the first window.
+  const double steps = 0.2 / run.scene().system().time_step();
+  CHECK(double(moved.n_updates()) >= 0.9 * steps / 50);
+  CHECK(double(moved.n_updates()) <= steps / 50 + 4 + 1);
+  // The DEM's wall, the scene's wall and the node moves are one surface; the FEM sample is
+  // untouched, its nodes where they were.
+  const auto& wall = run.scene().walls()[part.wall()].surface.mesh;
+  CHECK(run.scene().system().wall(int(part.wall())).mesh().vertices == moved.mesh().vertices);
+  CHECK(wall.vertices == moved.mesh().vertices);
+  CHECK(part.surface().vertices != moved.mesh().vertices);
+  CHECK(meshes::enclosed_volume(part.surface()) == Approx(120e-3 * 60e-3 * 10e-3).epsilon(1e-9));
+  // The clamped bottom keeps its place.
+  for (std::size_t v = 0; v < wall.n_vertices(); ++v)
+    if (part.surface().vertices[v].z < 1e-9)
+      REQUIRE(wall.vertices[v] == part.surface().vertices[v]);
+  // Not checkpointed, as the built-in tester's reference scheme.
+  CHECK(!std::filesystem::exists(dir + "/checkpoint.h5"));
+  CHECK_THAT(log.str(), Catch::Contains("not checkpointed"));
+
+  // At an amplification that recedes the top through the plate the surface distorts: the
+  // surface stays the last valid one and the run stops after that stage, saying where.
+  std::filesystem::remove_all(dir + "_distorted");
+  std::string worn = text;
+  worn.replace(worn.find("set Directory = " + dir), 16 + dir.size(),
+               "set Directory = " + dir + "_distorted");
+  worn.replace(worn.find("set Amplification = 100"), 23, "set Amplification = 1e7");
+  std::ostringstream distorted_log;
+  SceneCoupledRun distorted(read_text(dir + "_distorted.prm", worn), distorted_log);
+  REQUIRE(distorted.run() == 0);
+  INFO(distorted_log.str());
+  REQUIRE(distorted.parts()[0].stages().size() == 1);
+  CHECK_THAT(distorted.parts()[0].stages()[0].distortion, Catch::Contains("at face"));
+  CHECK_THAT(distorted_log.str(), Catch::Contains("the reference method distorted part 'plate'"));
+  const auto& frozen = distorted.scene().node_moves(0)->deformation();
+  CHECK(meshes::surface_quality(frozen.mesh()).valid());
+}
+
 TEST_CASE("scene wear loop: set-ups that cannot run are refused naming the parameter",
           "[coupling][scene]") {
   write_plate("wear_plate.step");
@@ -227,9 +302,10 @@ TEST_CASE("scene wear loop: set-ups that cannot run are refused naming the param
                   "1, 2, 3, 4, 5, 6)") != std::string::npos);
   CHECK(refused("wear_both.prm", plate_case("scene_wear_bad", "    set Wearing surfaces = 5, 6\n"))
             .find("surface 5 is listed both as wearing and as clamped") != std::string::npos);
+  // The node-moving method moves the nodes of a wall that keeps its place.
   CHECK(refused("wear_reference.prm", plate_case("scene_wear_bad", "", "2 reference"))
-            .find("Coupling/Schedule: the reference (node-moving) scheme runs on the built-in "
-                  "tester only") != std::string::npos);
+            .find("Scene/Wall plate/Motion: the node-moving method moves the nodes of a wall "
+                  "that keeps its place") != std::string::npos);
   CHECK(refused("wear_word.prm", plate_case("scene_wear_bad", "    set Clamped surfaces = top\n"))
             .find("Scene/Wall plate/Clamped surfaces: 'top' is not a surface number") !=
         std::string::npos);

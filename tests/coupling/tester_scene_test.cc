@@ -124,11 +124,26 @@ TEST_CASE("a tester case written by wearsim tester-scene reads back as the same 
   CHECK(q.geometry.sample.mesh_size == p.geometry.sample.mesh_size);
   CHECK(q.geometry.placement.angle_deg == p.geometry.placement.angle_deg);
   CHECK(q.output.directory == p.output.directory + "-scene");
-  std::filesystem::remove(path);
 
+  // A reference (node-moving) case keeps its update interval as a scene, the one Deformation
+  // entry a scene reads, and only with reference stages.
   auto reference = p;
-  reference.coupling.schedule = "1 dem-only, 2 reference";
-  CHECK_THAT(error_of([&] { coupling::tester_scene_case(reference); }),
-             Contains("Coupling/Schedule"));
+  reference.coupling.schedule = "4 reference";
+  reference.deformation.update_interval = 200;
+  {
+    std::ofstream out(path);
+    out << coupling::tester_scene_text(coupling::tester_scene_case(reference), p.case_file);
+  }
+  const auto r = coupling::read_case(path, warnings);
+  CHECK(r.deformation.update_interval == 200);
+  CHECK(r.coupling.schedule == "4 reference");
+  {
+    std::ofstream out(path);
+    out << coupling::tester_scene_text(s, p.case_file)
+        << "subsection Deformation\n  set Update interval = 200\nend\n";
+  }
+  CHECK_THAT(error_of([&] { coupling::read_case(path, warnings); }),
+             Contains("Deformation/Update interval") && Contains("no reference stage"));
+  std::filesystem::remove(path);
   CHECK_THAT(error_of([&] { coupling::tester_scene_case(q); }), Contains("is a scene already"));
 }

@@ -2,7 +2,7 @@
 // edge and a vertex; mesh-size independence under a particle bed; uniform recession of a
 // flat plate; fits and statistics of the evaluation.
 #include "dem/evaluation/tester_evaluation.h"
-#include "dem/tester/reference_deformation.h"
+#include "dem/wear/reference_deformation.h"
 #include "dem/wear/wear_law.h"
 #include "meshes/structured_grid.h"
 #include "tests/dem/dem_fixtures.h"

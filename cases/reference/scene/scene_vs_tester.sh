@@ -17,7 +17,8 @@
 #         WEARSIM=<path> the binary, default build/wearsim; OUTPUT=<folder> the runs' folder,
 #         default output/reference-scene; CASES=<folder> the plain.prm and convex.prm to run,
 #         default cases/sector-30 (cases/quick: the default case); FROM=<k> the first
-#         revolution averaged, default 3)
+#         revolution averaged, default 3; SCHEDULE=<schedule> replaces the cases' Coupling/Schedule,
+#         e.g. "6 reference" for the node-moving method on both paths)
 set -euo pipefail
 cd "$(dirname "$0")/../../.."
 seeds=()
@@ -33,6 +34,7 @@ pool_init "scene vs tester" "${JOBS:-$(nproc)}" || exit 2
 root=${OUTPUT:-output/reference-scene}
 cases=${CASES:-cases/sector-30}
 from=${FROM:-3}
+schedule=${SCHEDULE:-}
 [ -f "$cases/plain.prm" ] && [ -f "$cases/convex.prm" ] ||
   { echo "scene_vs_tester.sh: $cases has no plain.prm and convex.prm (CASES)" >&2; exit 2; }
 mkdir -p "$root"
@@ -42,6 +44,7 @@ run_one() { # <path: tester|scene> <kind> <seed>
   local out="$root/$1-$2-$3"
   sed -e "s|^subsection DEM|subsection DEM\n  set Seed = $3|" \
       -e "s|set Directory = .*|set Directory = $out|" "$cases/$2.prm" > "$out.prm"
+  [ -z "$schedule" ] || sed -i -e "s|set Schedule *= .*|set Schedule = $schedule|" "$out.prm"
   if [ "$1" = tester ]; then
     "$wearsim" run --overwrite "$out.prm" > "$out.log" 2>&1
   else

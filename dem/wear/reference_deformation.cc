@@ -9,7 +9,7 @@
 // 90 degrees from the unworn one), degenerate faces and self-intersections; the first
 // distortion is kept with its time, face and label, that update is undone and the surface
 // stays frozen from then on (the reference method's validity ends there; the bed runs on).
-#include "dem/tester/reference_deformation.h"
+#include "dem/wear/reference_deformation.h"
 
 #include "meshes/recession.h"
 
@@ -36,6 +36,14 @@ ReferenceDeformation::ReferenceDeformation(const meshes::SurfaceMesh& mesh)
 
 double ReferenceDeformation::enclosed_volume_loss() const {
   return initial_volume_ - meshes::enclosed_volume(mesh_);
+}
+
+std::string ReferenceDeformation::distortion_text() const {
+  if (!distortion_)
+    return {};
+  const Distortion& d = *distortion_;
+  return d.kind + " at face " + std::to_string(d.face) + " (" + meshes::label::name(d.label) +
+         "), t = " + std::to_string(d.time) + " s";
 }
 
 const std::vector<Vec3>& ReferenceDeformation::update(const std::vector<double>& removed_volume,

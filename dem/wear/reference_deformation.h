@@ -61,6 +61,9 @@ public:
   double enclosed_volume_loss() const;
   std::uint64_t n_updates() const { return n_updates_; }
   const std::optional<Distortion>& first_distortion() const { return distortion_; }
+  /// The first distortion as a sentence ("inverted face at face 12 (C23), t = 0.41 s"), empty
+  /// while the surface holds.
+  std::string distortion_text() const;
   const meshes::SurfaceQuality& quality() const { return quality_; }
 
 private:
