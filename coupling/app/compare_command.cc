@@ -432,13 +432,14 @@ int run_compare_command(const std::vector<std::string>& args, std::ostream& out)
       continue;
     }
     const std::string stage = "stage " + std::to_string(k + 1) + " ";
-    // a stage without a stress solve (dem-only) has zeros for stress and safety: not a figure
+    // a stage without a stress solve (dem-only, reference) has zeros for stress and safety: not
+    // a figure
     const auto solved = [k](const Side& s) {
       return std::any_of(s.runs.begin(), s.runs.end(),
                          [k](const Run& r) { return r.von_mises[k] > 0; });
     };
     if (!solved(a) && !solved(b)) {
-      out << stage << "no stress solve in any run (dem-only)\n";
+      out << stage << "no stress solve in any run (dem-only or reference)\n";
       continue;
     }
     const auto at = [k](const std::vector<double> Run::*v) {

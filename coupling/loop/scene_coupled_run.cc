@@ -79,9 +79,6 @@ SceneCoupledRun::SceneCoupledRun(const CaseParameters& p, std::ostream& log,
     plan_.insert(plan_.end(), std::size_t(item.n_stages), item.scheme);
     moves_nodes_ |= item.scheme == Scheme::reference;
   }
-  if (moves_nodes_ && options_.resume)
-    throw std::invalid_argument("--resume: a reference (node-moving) run is not checkpointed; "
-                                "run it again with --overwrite");
   law_ = dem::make_wear_law(p_.wear_law);
 }
 
@@ -96,7 +93,7 @@ int SceneCoupledRun::run() {
       const int signal = ranks_.agreed_signal(signals);
       log_ << "stopped by " << StopSignals::name(signal) << " inside stage " << r.stage
            << " at t = " << scene_->time() << " s";
-      if (scene_->system().n_rebuilds() > 0 && p_.coupling.checkpoints && !moves_nodes_)
+      if (scene_->system().n_rebuilds() > 0 && p_.coupling.checkpoints)
         log_ << " after a checkpoint; continue with wearsim scene-run --resume " << p_.case_file
              << "\n";
       else // nothing was checkpointed: no particle yet, or checkpoints off
@@ -140,11 +137,9 @@ std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::setup() {
   scene_->set_rank_link(options_.ranks);
   scene_->setup([&](const std::string& text) { log_ << "scene: " << text << "\n" << std::flush; });
   if (moves_nodes_) {
-    for (const auto& part : parts_)
-      scene_->move_wall_nodes(part.wall(), p_.wear_law, p_.deformation.update_interval,
-                              p_.coupling.amplification);
+    move_part_nodes();
     log_ << "scene: the wearing parts' nodes move inside the DEM every "
-         << p_.deformation.update_interval << " steps (reference scheme; not checkpointed)\n";
+         << p_.deformation.update_interval << " steps (reference scheme)\n";
   }
   if (options_.ranks && options_.ranks->n_ranks() > 1)
     log_ << "scene: " << scene_->rank_layout() << "; rank 0 writes" << std::endl;
@@ -183,10 +178,12 @@ std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::resume() {
     open.loads.push_back(loads_of(s.parts[i].open, parts_.back().surface()));
   }
   scene_ = std::make_unique<dem::SceneRun>(p_.scene, p_.dem, std::move(walls));
-  dem::SceneRunState state{s.time,          true,          c.dem,
-                           s.n_removed,     s.inlets,      s.outlet_mass,
-                           s.outlet_counts, s.flux_planes, s.rank_bounds};
+  dem::SceneRunState state{s.time,        true,          c.dem,           s.n_removed,
+                           s.inlets,      s.outlet_mass, s.outlet_counts, s.flux_planes,
+                           s.rank_bounds, s.node_moves};
   scene_->set_rank_link(options_.ranks);
+  if (moves_nodes_) // from the unmoved surfaces, moved as the state says
+    move_part_nodes();
   scene_->resume(state);
   n_records_ = s.n_records;
   if (ranks_.writer())
@@ -305,6 +302,12 @@ void SceneCoupledRun::run_parts(const StageRecord& r, const std::vector<dem::Wal
          << std::flush;
 }
 
+void SceneCoupledRun::move_part_nodes() {
+  for (const auto& part : parts_)
+    scene_->move_wall_nodes(part.wall(), p_.wear_law, p_.deformation.update_interval,
+                            p_.coupling.amplification);
+}
+
 std::string SceneCoupledRun::distortion() const {
   for (const auto& part : parts_)
     if (!part.stages().empty() && !part.stages().back().distortion.empty())
@@ -312,9 +315,8 @@ std::string SceneCoupledRun::distortion() const {
   return {};
 }
 
-// The node moves of the reference scheme are not part of a checkpoint: such a run has none.
 void SceneCoupledRun::checkpoint(const OpenSceneStage& open) {
-  if (!p_.coupling.checkpoints || moves_nodes_ || scene_->system().n_rebuilds() == 0)
+  if (!p_.coupling.checkpoints || scene_->system().n_rebuilds() == 0)
     return;
   const dem::SceneRunState state = scene_->state();
   Checkpoint c;
@@ -331,6 +333,7 @@ void SceneCoupledRun::checkpoint(const OpenSceneStage& open) {
   s.outlet_mass = state.outlet_mass;
   s.outlet_counts = state.outlet_counts;
   s.flux_planes = state.flux_planes;
+  s.node_moves = state.node_moves;
   for (std::size_t i = 0; i < parts_.size(); ++i)
     s.parts.push_back(parts_[i].state(open.loads[i]));
   c.scene = s;

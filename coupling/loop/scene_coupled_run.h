@@ -59,6 +59,8 @@ private:
   run_dem(StageRecord& r, std::optional<OpenSceneStage> open, const StopSignals& signals);
   /// Each part's stage under its loads; a part whose surface changed goes to its DEM wall.
   void run_parts(const StageRecord& r, const std::vector<dem::WallLoads>& loads);
+  /// The reference scheme: every part's nodes move inside the DEM (SceneRun::move_wall_nodes).
+  void move_part_nodes();
   /// The first part the reference scheme distorted, with where ("part 'sample' (inverted face
   /// at ...)"), empty if none.
   std::string distortion() const;

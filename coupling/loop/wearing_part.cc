@@ -164,7 +164,7 @@ WearingPart::WearingPart(const CaseParameters& p, std::size_t index, const PartC
                          bool writes)
     : wall_(index), name_(p.scene.walls.at(index).name), directory_(part_directory(p, name_)),
       frame_(part_frame(p, p.scene.walls[index])), held_sides_(held_sides(p, p.scene.walls[index])),
-      writes_(writes), stages_(c.stages) {
+      writes_(writes), stages_(c.stages), moved_volume_(c.moved_volume) {
   if (frame_ && !c.sample_frame)
     throw std::runtime_error("--resume: the checkpoint holds the tester's sample '" + name_ +
                              "' in the scene's frame (an older engine's); run the case again "
@@ -271,12 +271,18 @@ void WearingPart::run_stage(
     meshes::write_atomically(directory_ + "/part_wear.csv",
                              [&](std::ostream& out) { out << part_wear_header << wear_rows_; });
   log << format("stage %d %s, part '%s': wear-law volume %.4g mm^3, removed %.4g mm^3 "
-                "(cumulative %.4g), max von Mises (ball) %.3g MPa, %d remeshes, FEM %.1f s, %d "
-                "particles pushed out\n",
+                "(cumulative %.4g)",
                 r.stage, scheme_name(r.scheme).c_str(), name_.c_str(), r.dem_wear_volume * 1e9,
-                r.applied_volume * 1e9, r.cumulative_applied * 1e9, r.max_von_mises_ball * 1e-6,
-                r.n_remeshes, r.fem_solve_seconds + r.motion_seconds + r.remesh_seconds, r.n_pushed)
-      << std::flush;
+                r.applied_volume * 1e9, r.cumulative_applied * 1e9);
+  if (staged)
+    log << format(", max von Mises (ball) %.3g MPa, %d remeshes, FEM %.1f s, %d particles pushed "
+                  "out",
+                  r.max_von_mises_ball * 1e-6, r.n_remeshes,
+                  r.fem_solve_seconds + r.motion_seconds + r.remesh_seconds, r.n_pushed);
+  if (reference)
+    log << format(" by the DEM's node moves, the surface's enclosed volume %.4g mm^3 less",
+                  r.geometry_volume_change * 1e9);
+  log << "\n" << std::flush;
 }
 
 // A reference stage's figures from the DEM's node moves (cumulative over the run): the volume
@@ -313,6 +319,7 @@ PartCheckpoint WearingPart::state(const dem::WallLoads& open) const {
   if (evaluation_)
     c.evaluation = evaluation_->state();
   c.sample_frame = frame_.has_value();
+  c.moved_volume = moved_volume_;
   return c;
 }
 

@@ -8,7 +8,11 @@
 //                      tester's sample (kept in its own frame), and with Scene/Evaluation
 //                      evaluation/{records/..., samples/..., sums (removed, normal_impulse,
 //                      wear_volume as n_faces x 3), scalars (windows, contact total, wall
-//                      seconds, particle-steps)}}
+//                      seconds, particle-steps)}, moved_volume (attribute moved) after reference
+//                      stages}
+//   n_node_moves (with the root's attribute scene_node_moves), node_moves_<k>/{vertices, sums
+//   (swept, applied volume, updates), with a
+//                      distortion its attributes kind, face, label, time}
 #include "coupling/output/scene_checkpoint.h"
 
 #include <stdexcept>
@@ -31,6 +35,10 @@ void write_part(Hdf5File& h5, const std::string& g, const PartCheckpoint& p) {
   h5.attribute(g + "/open_loads/impulse", "duration", p.open.duration);
   if (p.sample_frame)
     h5.attribute(g, "sample_frame", 1.0);
+  if (!p.moved_volume.empty()) {
+    write_doubles(h5, g + "/moved_volume", p.moved_volume);
+    h5.attribute(g, "moved", 1.0);
+  }
   if (!p.evaluation)
     return;
   h5.attribute(g, "evaluated", 1.0);
@@ -65,6 +73,31 @@ dem::SceneEvaluationState read_evaluation(const Hdf5Reader& h5, const std::strin
   return e;
 }
 
+void write_node_moves(Hdf5File& h5, const std::string& g, const dem::ReferenceDeformationState& m) {
+  write_vec3(h5, g + "/vertices", m.vertices);
+  write_doubles(h5, g + "/sums", {m.swept_volume, m.applied_volume, double(m.n_updates)});
+  if (!m.distortion)
+    return;
+  h5.attribute(g + "/sums", "kind", m.distortion->kind);
+  h5.attribute(g + "/sums", "face", double(m.distortion->face));
+  h5.attribute(g + "/sums", "label", double(m.distortion->label));
+  h5.attribute(g + "/sums", "time", m.distortion->time);
+}
+
+dem::ReferenceDeformationState read_node_moves(const Hdf5Reader& h5, const std::string& g) {
+  dem::ReferenceDeformationState m;
+  m.vertices = vec3s(h5.doubles(g + "/vertices"), g + "/vertices");
+  const auto x = h5.doubles(g + "/sums");
+  if (x.size() != 3 || !(x[2] >= 0))
+    throw std::runtime_error("'" + g + "/sums' does not hold the node moves' sums");
+  m.swept_volume = x[0], m.applied_volume = x[1], m.n_updates = std::uint64_t(x[2]);
+  if (h5.has_attribute(g + "/sums", "kind"))
+    m.distortion = dem::Distortion{
+        h5.text_attribute(g + "/sums", "kind"), long(h5.attribute(g + "/sums", "face")),
+        int(h5.attribute(g + "/sums", "label")), h5.attribute(g + "/sums", "time")};
+  return m;
+}
+
 PartCheckpoint read_part(const Hdf5Reader& h5, const std::string& g) {
   PartCheckpoint p;
   p.sample = read_sample_state(h5, g + "/sample");
@@ -80,6 +113,10 @@ PartCheckpoint read_part(const Hdf5Reader& h5, const std::string& g) {
   if (p.labels.size() != p.removed_per_label.size())
     throw std::runtime_error("the per-label volumes of '" + g + "' differ in length");
   p.sample_frame = h5.has_attribute(g, "sample_frame");
+  if (h5.has_attribute(g, "moved"))
+    p.moved_volume = h5.doubles(g + "/moved_volume");
+  if (!p.moved_volume.empty() && p.moved_volume.size() != nf)
+    throw std::runtime_error("the moved volume of '" + g + "' is not on its surface's faces");
   if (h5.has_attribute(g, "evaluated"))
     p.evaluation = read_evaluation(h5, g + "/evaluation");
   return p;
@@ -113,6 +150,12 @@ void write_scene(Hdf5File& h5, const SceneCheckpoint& s) {
   h5.attribute("/", "scene_parts", 1.0);
   for (std::size_t k = 0; k < s.parts.size(); ++k)
     write_part(h5, part_group(k), s.parts[k]);
+  if (s.node_moves.empty()) // a checkpoint without them reads as before
+    return;
+  h5.write("/scene/n_node_moves", std::vector<int>{int(s.node_moves.size())}, {1});
+  h5.attribute("/", "scene_node_moves", 1.0);
+  for (std::size_t k = 0; k < s.node_moves.size(); ++k)
+    write_node_moves(h5, "/scene/node_moves_" + std::to_string(k), s.node_moves[k]);
 }
 
 SceneCheckpoint read_scene(const Hdf5Reader& h5) {
@@ -156,6 +199,11 @@ SceneCheckpoint read_scene(const Hdf5Reader& h5) {
   const auto n_parts = h5.ints("/scene/n_parts");
   for (int k = 0; k < n_parts.at(0); ++k)
     s.parts.push_back(read_part(h5, part_group(std::size_t(k))));
+  if (!h5.has_attribute("/", "scene_node_moves"))
+    return s;
+  const auto n_moves = h5.ints("/scene/n_node_moves");
+  for (int k = 0; k < n_moves.at(0); ++k)
+    s.node_moves.push_back(read_node_moves(h5, "/scene/node_moves_" + std::to_string(k)));
   return s;
 }
 

@@ -6,6 +6,7 @@
 #include "dem/scene/flux_plane.h"
 #include "dem/scene/inlet.h"
 #include "dem/scene/scene_evaluation.h"
+#include "dem/wear/reference_deformation.h"
 
 #include <cstdint>
 #include <optional>
@@ -26,6 +27,9 @@ struct PartCheckpoint {
   std::optional<dem::SceneEvaluationState> evaluation;
   /// The part is the tester's sample, kept in its own frame (the sample's state and loads)
   bool sample_frame = false;
+  /// [m^3] per face, the volume the reference stages moved the DEM's nodes by (declared);
+  /// empty before a reference stage
+  std::vector<double> moved_volume;
 };
 
 struct SceneCheckpoint {
@@ -41,6 +45,8 @@ struct SceneCheckpoint {
   /// Over ranks: the slabs' cuts [m or rad] (n_ranks + 1) the DEM parts were written on;
   /// empty from one process
   std::vector<double> rank_bounds;
+  /// The node moves of the reference scheme, per wall whose nodes move (none otherwise)
+  std::vector<dem::ReferenceDeformationState> node_moves;
 };
 
 /// Writes s under /scene: /scene/progress, outlets, inlet_<k>, flux_plane_<k>, part_<k>.

@@ -9,7 +9,9 @@
 // faces (DEM/Wear field), summed, and the per-contact total. Records and samples are the
 // tester's (dem/evaluation/tester_evaluation.h): columns, elements and the bed are read in the
 // sample's own frame (Geometry/Sample, Geometry/Placement), in which the caller gives the
-// sample's surface.
+// sample's surface. When the reference scheme moves the sample's nodes, a record carries the
+// moves' figures as the tester's revolutions do (swept, applied and enclosed volume, smallest
+// angle, the first distortion; cumulative).
 #include "dem/scene/scene_evaluation.h"
 
 #include "dem/engine/rank_states.h"
@@ -69,6 +71,14 @@ void SceneEvaluation::observe(const SceneRun& scene, const SceneWindow& w, const
   r.wall_seconds = open_.wall_seconds;
   r.particle_steps_per_second =
       open_.wall_seconds > 0 ? open_.particle_steps / open_.wall_seconds : 0;
+  if (const WallNodeMoves* moves = scene.node_moves(wall_)) { // cumulative, as the tester's
+    const ReferenceDeformation& d = moves->deformation();
+    r.swept_volume = d.swept_volume();
+    r.applied_volume = d.applied_volume();
+    r.enclosed_volume_loss = d.enclosed_volume_loss();
+    r.min_angle_deg = d.quality().min_angle_deg;
+    r.distortion = d.distortion_text();
+  }
   open_period(nf);
 }
 

@@ -310,6 +310,8 @@ SceneRunState SceneRun::state() const {
     s.flux_planes.push_back(f.state(rank_link()));
   if (rank_link())
     s.rank_bounds = slabs_.cuts().bound;
+  for (const auto& m : node_moves_)
+    s.node_moves.push_back(m.state());
   return s;
 }
 
@@ -322,6 +324,14 @@ void SceneRun::resume(const SceneRunState& s) {
                                 " flux planes; the scene has " + std::to_string(inlets_.size()) +
                                 ", " + std::to_string(outlets_.size()) + " and " +
                                 std::to_string(flux_planes_.size()));
+  if (s.node_moves.size() != node_moves_.size())
+    throw std::invalid_argument("scene run: the state moves the nodes of " +
+                                std::to_string(s.node_moves.size()) + " walls, the run of " +
+                                std::to_string(node_moves_.size()));
+  for (std::size_t i = 0; i < node_moves_.size(); ++i) { // before the engine's set-up
+    node_moves_[i].resume(s.node_moves[i], system_);
+    walls_[std::size_t(node_moves_[i].wall())].surface.mesh = node_moves_[i].deformation().mesh();
+  }
   if (dem_.n_threads > 0)
     omp_set_num_threads(dem_.n_threads);
   if (s.engine_ready) {

@@ -63,6 +63,8 @@ struct SceneRunState {
   /// Over ranks: the slabs' cuts [m or rad] (n_ranks + 1), which a resume on as many ranks
   /// keeps; empty on one process
   std::vector<double> rank_bounds;
+  /// The node moves of the walls whose nodes move (SceneRun::move_wall_nodes), in that order
+  std::vector<ReferenceDeformationState> node_moves;
 };
 
 struct SceneFillShape; // the Fill region as built once (scene_fill.h)
@@ -94,7 +96,8 @@ public:
   /// and the engine's set-up; `progress` hears what happens.
   void setup(const std::function<void(const std::string&)>& progress = {});
   /// Instead of setup(): continues from a state() taken between two windows of a run of the
-  /// same scene (same walls, in particular a worn part's surface of that moment).
+  /// same scene (same walls, in particular a worn part's surface of that moment; the walls
+  /// whose nodes move given to move_wall_nodes first, unmoved, and moved here).
   void resume(const SceneRunState& state);
   /// The state between two windows (after advance()). Over ranks (every rank calls it
   /// together) `system` is this rank's part; the rest is the whole scene's.

@@ -37,6 +37,11 @@ void WallNodeMoves::begin_window() {
   std::fill(taken_.begin(), taken_.end(), 0.0);
 }
 
+void WallNodeMoves::resume(const ReferenceDeformationState& s, System& system) {
+  deformation_->resume(s);
+  system.set_wall_vertices(wall_, deformation_->mesh().vertices);
+}
+
 const meshes::SurfaceMesh& WallNodeMoves::move(System& system) {
   const std::vector<double> removed = law_->removed_volume(system.wear_integrals_over_ranks(wall_));
   std::vector<double> delta(removed.size());

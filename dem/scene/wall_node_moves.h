@@ -37,6 +37,10 @@ public:
   /// surface as it now is.
   const meshes::SurfaceMesh& move(System& system);
   const ReferenceDeformation& deformation() const { return *deformation_; }
+  /// The moves so far, between two windows (the next window starts its sums afresh).
+  ReferenceDeformationState state() const { return deformation_->state(); }
+  /// Continues from `s` (a state() of the same wall) and gives the engine the moved surface.
+  void resume(const ReferenceDeformationState& s, System& system);
 
 private:
   int wall_;

@@ -38,6 +38,24 @@ double ReferenceDeformation::enclosed_volume_loss() const {
   return initial_volume_ - meshes::enclosed_volume(mesh_);
 }
 
+ReferenceDeformationState ReferenceDeformation::state() const {
+  return {mesh_.vertices, swept_volume_, applied_volume_, n_updates_, distortion_};
+}
+
+void ReferenceDeformation::resume(const ReferenceDeformationState& s) {
+  if (s.vertices.size() != mesh_.n_vertices())
+    throw std::invalid_argument("reference deformation: a state of " +
+                                std::to_string(s.vertices.size()) + " vertices for a mesh of " +
+                                std::to_string(mesh_.n_vertices()));
+  mesh_.vertices = s.vertices;
+  mesh_.bump_revision();
+  swept_volume_ = s.swept_volume;
+  applied_volume_ = s.applied_volume;
+  n_updates_ = s.n_updates;
+  distortion_ = s.distortion;
+  quality_ = meshes::surface_quality(mesh_, &initial_normals_);
+}
+
 std::string ReferenceDeformation::distortion_text() const {
   if (!distortion_)
     return {};

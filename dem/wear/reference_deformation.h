@@ -41,6 +41,15 @@ struct Distortion {
   double time = 0;  ///< [s] simulated time of the update that produced it
 };
 
+/// What a ReferenceDeformation has done, for a checkpoint: the moved vertices and the sums.
+struct ReferenceDeformationState {
+  std::vector<meshes::Vec3> vertices; ///< [m] the surface as moved
+  double swept_volume = 0;            ///< [m^3]
+  double applied_volume = 0;          ///< [m^3]
+  std::uint64_t n_updates = 0;
+  std::optional<Distortion> distortion;
+};
+
 class ReferenceDeformation {
 public:
   /// `mesh`: the wearing wall as placed; faces whose label satisfies meshes::label::wears()
@@ -65,6 +74,10 @@ public:
   /// while the surface holds.
   std::string distortion_text() const;
   const meshes::SurfaceQuality& quality() const { return quality_; }
+
+  ReferenceDeformationState state() const;
+  /// Continues from `s`, taken of a deformation of the same unworn mesh (vertex count checked).
+  void resume(const ReferenceDeformationState& s);
 
 private:
   meshes::SurfaceMesh mesh_;

@@ -118,6 +118,19 @@ std::string two_part_case(const std::string& text) {
          text.substr(at + north.size());
 }
 
+// The plate case for the node-moving (reference) scheme: the plate at rest under the bed, its
+// surface moving as a belt's at 0.1 m/s so that the bed slides on it, its nodes moved every 50
+// engine steps.
+std::string reference_plate_case(const std::string& dir, const std::string& schedule) {
+  std::string text = plate_case(dir, "", schedule);
+  text.replace(text.find("    set Motion = translation\n"), 29,
+               "    set Motion = surface translation\n");
+  text.erase(text.find("    set Start time = 0.1\n"), 25);
+  text.insert(text.find("subsection DEM\n"),
+              "subsection Deformation\n  set Update interval = 50\nend\n");
+  return text;
+}
+
 CaseParameters read_text(const std::string& name, const std::string& text) {
   std::ofstream(name) << text;
   std::ostringstream warnings;

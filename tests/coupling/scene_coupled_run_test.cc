@@ -210,16 +210,10 @@ TEST_CASE("scene wear loop: two wearing parts, each with its own stages, stress 
 
 TEST_CASE("scene wear loop: the reference scheme moves a part's nodes inside the DEM",
           "[coupling][scene]") {
-  // The plate at rest under the bed, its surface moving as a belt's: the bed slides on it.
   write_plate("wear_plate.step");
   const std::string dir = "scene_reference_out";
   std::filesystem::remove_all(dir);
-  std::string text = plate_case(dir, "", "2 reference");
-  text.replace(text.find("    set Motion = translation\n"), 29,
-               "    set Motion = surface translation\n");
-  text.erase(text.find("    set Start time = 0.1\n"), 25);
-  text.insert(text.find("subsection DEM\n"),
-              "subsection Deformation\n  set Update interval = 50\nend\n");
+  const std::string text = reference_plate_case(dir, "2 reference");
   const auto p = read_text(dir + ".prm", text);
   std::ostringstream log;
   SceneCoupledRun run(p, log);
@@ -261,16 +255,41 @@ TEST_CASE("scene wear loop: the reference scheme moves a part's nodes inside the
   for (std::size_t v = 0; v < wall.n_vertices(); ++v)
     if (part.surface().vertices[v].z < 1e-9)
       REQUIRE(wall.vertices[v] == part.surface().vertices[v]);
-  // Not checkpointed, as the built-in tester's reference scheme.
-  CHECK(!std::filesystem::exists(dir + "/checkpoint.h5"));
-  CHECK_THAT(log.str(), Catch::Contains("not checkpointed"));
+  const auto in_folder = [&](const std::string& folder) {
+    std::filesystem::remove_all(folder);
+    std::string t = text;
+    return t.replace(t.find("set Directory = " + dir), 16 + dir.size(),
+                     "set Directory = " + folder);
+  };
+
+  // Checkpointed as any scene run: stopped after stage 1 and resumed, the nodes move as in
+  // the run without a stop, bit for bit.
+  const std::string split = dir + "_split";
+  const auto split_case = read_text(split + ".prm", in_folder(split));
+  {
+    std::ostringstream first_log;
+    SceneCoupledRun first(split_case, first_log, {false, false, 1});
+    REQUIRE(first.run() == 0);
+    REQUIRE(first.parts()[0].stages().size() == 1);
+  }
+  std::ostringstream resumed_log;
+  SceneCoupledRun resumed(split_case, resumed_log, {true, false, 0});
+  REQUIRE(resumed.run() == 0);
+  INFO(resumed_log.str());
+  REQUIRE(resumed.parts()[0].stages().size() == 2);
+  const auto& moved_again = resumed.scene().node_moves(0)->deformation();
+  CHECK(moved_again.mesh().vertices == moved.mesh().vertices);
+  CHECK(moved_again.n_updates() == moved.n_updates());
+  CHECK(moved_again.swept_volume() == moved.swept_volume());
+  CHECK(resumed.parts()[0].stages()[1].applied_volume == part.stages()[1].applied_volume);
+  CHECK(file_text(split + "/parts/plate/part_wear.csv") ==
+        file_text(dir + "/parts/plate/part_wear.csv"));
+  CHECK(physical_columns(split + "/scene_series.csv") ==
+        physical_columns(dir + "/scene_series.csv"));
 
   // At an amplification that recedes the top through the plate the surface distorts: the
   // surface stays the last valid one and the run stops after that stage, saying where.
-  std::filesystem::remove_all(dir + "_distorted");
-  std::string worn = text;
-  worn.replace(worn.find("set Directory = " + dir), 16 + dir.size(),
-               "set Directory = " + dir + "_distorted");
+  std::string worn = in_folder(dir + "_distorted");
   worn.replace(worn.find("set Amplification = 100"), 23, "set Amplification = 1e7");
   std::ostringstream distorted_log;
   SceneCoupledRun distorted(read_text(dir + "_distorted.prm", worn), distorted_log);

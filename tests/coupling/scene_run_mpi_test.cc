@@ -14,6 +14,9 @@
 //   force the DEM recorded over the ranks (window-weighted, to 1e-8: the part's load is
 //   summed face by face over the ranks, the series' force as a total, and both are read from
 //   tables of 10 digits).
+// - the node-moving (reference) scheme on the plate on 2 ranks: every rank moves the nodes on
+//   the same steps by the wear summed over the ranks, and the moves add up to the amplified
+//   wear-law volume of each stage (1e-8: tables of 10 digits).
 // The rank counts' discharges within the seeds' spread: cases/hopper/README.md (a study).
 #include "plate_scene.h"
 #include "wearsim_process.h"
@@ -186,5 +189,31 @@ TEST_CASE("wearsim scene-run over ranks: two wearing parts, each worn on every r
     CHECK(std::stod(rows[2].at(column("mean_force_z_N"))) ==
           Approx(window_weighted(dir + "/out/scene_series.csv", force, settled)).epsilon(1e-8));
     CHECK(fs::exists(dir + "/out/parts/" + std::string(name) + "/part_wear.csv"));
+  }
+}
+
+TEST_CASE("wearsim scene-run over ranks: the reference scheme moves the nodes on every rank",
+          "[coupling][mpi]") {
+  const std::string dir = "scene_mpi_reference";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  write_plate(dir + "/wear_plate.step");
+  std::string text = reference_plate_case("out", "2 reference");
+  text.insert(text.find("  set Output interval"), "  set Particle snapshots = false\n");
+  std::ofstream(dir + "/case.prm") << text;
+  REQUIRE(run_in(dir, 2, "", "case.prm", "run.log", "scene-run") == 0);
+  INFO(file_text(dir + "/run.log"));
+  const auto rows = physical_columns(dir + "/out/parts/plate/stages.csv");
+  REQUIRE(rows.size() == 3);
+  const auto column = [&](const std::string& c) {
+    const auto at = std::find(rows[0].begin(), rows[0].end(), c);
+    REQUIRE(at != rows[0].end());
+    return std::size_t(at - rows[0].begin());
+  };
+  for (std::size_t k = 1; k < rows.size(); ++k) {
+    const double dem_wear = std::stod(rows[k].at(column("dem_wear_volume_m3")));
+    CHECK(dem_wear > 0);
+    CHECK(std::stod(rows[k].at(column("applied_volume_m3"))) ==
+          Approx(100 * dem_wear).epsilon(1e-8)); // tables of 10 digits
   }
 }
