@@ -199,65 +199,133 @@ void WearingPart::run_stage(
     StageRecord r, const dem::WallLoads& loads, const CaseParameters& p, std::ostream& log,
     const std::function<dem::PushReport(const meshes::SurfaceMesh&)>& to_wall,
     const dem::ReferenceDeformation* moved) {
-  const bool staged = r.scheme == Scheme::staged, reference = r.scheme == Scheme::reference;
-  if (reference != (moved != nullptr))
+  if ((r.scheme == Scheme::reference) != (moved != nullptr))
     throw std::logic_error("WearingPart::run_stage: the DEM's moved surface is a reference "
                            "stage's, and only its");
   const meshes::Stopwatch wear_clock;
   const WearIncrement increment =
-      wear_increment(sample_->surface(), loads.wear_volume, previous_stress_, p.coupling, staged);
+      wear_increment(sample_->surface(), loads.wear_volume, previous_stress_, p.coupling,
+                     r.scheme == Scheme::staged);
   record_increment(increment, stages_.empty() ? 0.0 : stages_.back().cumulative_applied, p.coupling,
                    r);
   r.wear_seconds = wear_clock.seconds();
-  meshes::FaceField<double> applied = increment.removed;
-  if (staged) {
-    fem::ElasticityParameters ep = p.fem.elasticity;
-    ep.averaging_radius = stress_averaging_radius(p);
-    ep.holder_support = held_sides_;
-    const StageStress stress = solve_stage_stress(*sample_, loads, ep, *output_, r);
-    GeometryUpdate update = apply_stage_wear(*sample_, increment, stress, r);
-    for (const auto& refusal : update.report.remesh_refusals)
-      log << "stage " << r.stage << ", part '" << name_
-          << "': a remesh needed more than one attempt; refused:" << refusal << "\n";
-    applied = std::move(update.applied);
-    previous_stress_ = std::move(update.von_mises);
-    const dem::PushReport pushed = to_wall(wall_surface());
-    r.n_pushed = pushed.n_pushed;
-    r.max_push = pushed.max_distance;
+  StageChange change;
+  switch (r.scheme) {
+  case Scheme::dem_only:
+    change = dem_only_stage(increment);
+    break;
+  case Scheme::staged:
+    change = staged_stage(increment, loads, p, log, to_wall, r);
+    break;
+  case Scheme::reference:
+    change = reference_stage(*moved, increment, r);
+    break;
   }
-  const meshes::SurfaceMesh surface =
-      reference ? reference_stage(*moved, increment.removed, r) : sample_->surface();
+  record_stage(std::move(r), change, log);
+}
 
+// A dem-only stage leaves the part as it is; its increment is recorded, not applied.
+WearingPart::StageChange WearingPart::dem_only_stage(const WearIncrement& increment) const {
+  return {sample_->surface(),
+          increment.removed,
+          sample_->removed_volume().values(),
+          sample_->wear_depth().values(),
+          false,
+          "",
+          false};
+}
+
+// A staged stage: the stress under the stage's loads, then the geometry update (recession,
+// mesh motion, remeshing) and the new surface to the DEM wall.
+WearingPart::StageChange
+WearingPart::staged_stage(const WearIncrement& increment, const dem::WallLoads& loads,
+                          const CaseParameters& p, std::ostream& log,
+                          const std::function<dem::PushReport(const meshes::SurfaceMesh&)>& to_wall,
+                          StageRecord& r) {
+  fem::ElasticityParameters ep = p.fem.elasticity;
+  ep.averaging_radius = stress_averaging_radius(p);
+  ep.holder_support = held_sides_;
+  const StageStress stress = solve_stage_stress(*sample_, loads, ep, *output_, r);
+  GeometryUpdate update = apply_stage_wear(*sample_, increment, stress, r);
+  for (const auto& refusal : update.report.remesh_refusals)
+    log << "stage " << r.stage << ", part '" << name_
+        << "': a remesh needed more than one attempt; refused:" << refusal << "\n";
+  previous_stress_ = std::move(update.von_mises);
+  const dem::PushReport pushed = to_wall(wall_surface());
+  r.n_pushed = pushed.n_pushed;
+  r.max_push = pushed.max_distance;
+  return {sample_->surface(),
+          std::move(update.applied),
+          sample_->removed_volume().values(),
+          sample_->wear_depth().values(),
+          true,
+          format(", max von Mises (ball) %.3g MPa, %d remeshes, FEM %.1f s, %d particles pushed "
+                 "out",
+                 r.max_von_mises_ball * 1e-6, r.n_remeshes,
+                 r.fem_solve_seconds + r.motion_seconds + r.remesh_seconds, r.n_pushed),
+          true};
+}
+
+// A reference stage: the DEM moved the nodes (cumulative figures over the run): the volume the
+// nodes took up on the wearing faces, the enclosed volume the surface lost, the surface they
+// moved, in the part's frame. The part's FEM sample stays as it was.
+WearingPart::StageChange WearingPart::reference_stage(const dem::ReferenceDeformation& moved,
+                                                      const WearIncrement& increment,
+                                                      StageRecord& r) {
+  double before = 0, lost_before = 0;
+  for (const auto& s : stages_) {
+    before = s.cumulative_applied;
+    lost_before += s.geometry_volume_change;
+  }
+  r.cumulative_applied = moved.applied_volume();
+  r.applied_volume = r.cumulative_applied - before;
+  r.geometry_volume_change = moved.enclosed_volume_loss() - lost_before;
+  r.distortion = moved.distortion_text();
+  const auto& removed = increment.removed;
+  moved_volume_.resize(removed.size(), 0.0);
+  for (std::size_t f = 0; f < removed.size(); ++f)
+    moved_volume_[f] += removed[f];
+  meshes::SurfaceMesh surface = frame_ ? frame_->place_in_sample(moved.mesh()) : moved.mesh();
+  const auto area = meshes::face_areas(surface);
+  std::vector<double> depth(area.size());
+  for (std::size_t f = 0; f < depth.size(); ++f)
+    depth[f] = moved_volume_[f] / area[f];
+  return {std::move(surface),
+          removed,
+          moved_volume_,
+          std::move(depth),
+          true,
+          format(" by the DEM's node moves, the surface's enclosed volume %.4g mm^3 less",
+                 r.geometry_volume_change * 1e9),
+          false};
+}
+
+// Whatever the scheme: the surface with its fields, the stage's record, the tables, the volume
+// per label and the stage's line.
+void WearingPart::record_stage(StageRecord r, const StageChange& change, std::ostream& log) {
   const meshes::Stopwatch clock;
+  const auto& surface = change.surface;
   std::map<int, double> stage_per_label;
   for (std::size_t f = 0; f < surface.n_faces(); ++f)
-    stage_per_label[surface.face_labels[f]] += applied[f];
-  std::vector<double> cumulative = sample_->removed_volume().values(),
-                      depth = sample_->wear_depth().values();
-  if (reference) {
-    cumulative = moved_volume_;
-    const auto area = meshes::face_areas(surface);
-    for (std::size_t f = 0; f < depth.size(); ++f)
-      depth[f] = cumulative[f] / area[f];
-  }
-  std::vector<meshes::VtuArray> fields{{"cumulative removed volume", 1, cumulative},
-                                       {"wear depth", 1, depth},
-                                       {"stage removed volume", 1, applied.values()}};
-  if (staged)
+    stage_per_label[surface.face_labels[f]] += change.applied[f];
+  std::vector<meshes::VtuArray> fields{{"cumulative removed volume", 1, change.cumulative},
+                                       {"wear depth", 1, change.depth},
+                                       {"stage removed volume", 1, change.applied.values()}};
+  if (change.stress_solved)
     fields.push_back({"von Mises", 1, previous_stress_.values()});
   output_->add_surface(r.stage, r.time, surface, fields);
   r.n_surface_faces = int(surface.n_faces());
   r.n_tetrahedra = int(sample_->triangulation().n_active_cells());
   r.output_seconds += clock.seconds();
   if (evaluation_) { // the periods of this stage (a stage is a whole number of them)
-    if (staged || reference)
+    if (change.changes_geometry)
       evaluation_->set_surface(surface);
     r.first_revolution = stages_.empty() ? 1 : stages_.back().last_revolution + 1;
     r.last_revolution = int(evaluation_->history().size());
   }
   stages_.push_back(r);
   write_tables();
-  if (staged || reference) // a dem-only stage's volume changes nothing
+  if (change.changes_geometry) // a dem-only stage's volume changes nothing
     for (const auto& [label, v] : stage_per_label)
       removed_per_label_[label] += v;
   std::ostringstream rows;
@@ -273,37 +341,9 @@ void WearingPart::run_stage(
   log << format("stage %d %s, part '%s': wear-law volume %.4g mm^3, removed %.4g mm^3 "
                 "(cumulative %.4g)",
                 r.stage, scheme_name(r.scheme).c_str(), name_.c_str(), r.dem_wear_volume * 1e9,
-                r.applied_volume * 1e9, r.cumulative_applied * 1e9);
-  if (staged)
-    log << format(", max von Mises (ball) %.3g MPa, %d remeshes, FEM %.1f s, %d particles pushed "
-                  "out",
-                  r.max_von_mises_ball * 1e-6, r.n_remeshes,
-                  r.fem_solve_seconds + r.motion_seconds + r.remesh_seconds, r.n_pushed);
-  if (reference)
-    log << format(" by the DEM's node moves, the surface's enclosed volume %.4g mm^3 less",
-                  r.geometry_volume_change * 1e9);
-  log << "\n" << std::flush;
-}
-
-// A reference stage's figures from the DEM's node moves (cumulative over the run): the volume
-// the nodes took up on the wearing faces and the enclosed volume the surface lost; the surface
-// they moved, in the part's frame.
-meshes::SurfaceMesh WearingPart::reference_stage(const dem::ReferenceDeformation& moved,
-                                                 const meshes::FaceField<double>& removed,
-                                                 StageRecord& r) {
-  double before = 0, lost_before = 0;
-  for (const auto& s : stages_) {
-    before = s.cumulative_applied;
-    lost_before += s.geometry_volume_change;
-  }
-  r.cumulative_applied = moved.applied_volume();
-  r.applied_volume = r.cumulative_applied - before;
-  r.geometry_volume_change = moved.enclosed_volume_loss() - lost_before;
-  r.distortion = moved.distortion_text();
-  moved_volume_.resize(removed.size(), 0.0);
-  for (std::size_t f = 0; f < removed.size(); ++f)
-    moved_volume_[f] += removed[f];
-  return frame_ ? frame_->place_in_sample(moved.mesh()) : moved.mesh();
+                r.applied_volume * 1e9, r.cumulative_applied * 1e9)
+      << change.note << "\n"
+      << std::flush;
 }
 
 PartCheckpoint WearingPart::state(const dem::WallLoads& open) const {

@@ -8,6 +8,7 @@
 // tester's sample) is also evaluated period by period as the tester's revolutions
 // (dem/scene/scene_evaluation.h): summary.csv and history.h5's revolutions in its folder.
 #include "coupling/loop/stage_record.h"
+#include "coupling/loop/wear_increment.h"
 #include "coupling/output/run_output.h"
 #include "coupling/output/scene_checkpoint.h"
 #include "coupling/parameters/case_parameters.h"
@@ -102,10 +103,29 @@ private:
   /// The evaluation Scene/Evaluation asks of this part (the tester's sample), on its surface
   /// in its own frame.
   void make_evaluation(const CaseParameters& p);
-  /// A reference stage's record figures from the DEM's node moves, the stage's removed
-  /// volume `removed` added to moved_volume_; returns the moved surface in the part's frame.
-  meshes::SurfaceMesh reference_stage(const dem::ReferenceDeformation& moved,
-                                      const meshes::FaceField<double>& removed, StageRecord& r);
+  /// What a stage did to the part after its wear increment, whatever its scheme.
+  struct StageChange {
+    meshes::SurfaceMesh surface;       ///< the surface the stage ends on (part frame)
+    meshes::FaceField<double> applied; ///< [m^3] the stage's volume per face of `surface`
+    std::vector<double> cumulative;    ///< [m^3] per face, removed since the start
+    std::vector<double> depth;         ///< [m] per face, wear depth since the start
+    bool changes_geometry = false;     ///< the surface moved (staged, reference)
+    std::string note;                  ///< the scheme's part of the stage's line
+    bool stress_solved = false;        ///< previous_stress_ is this stage's
+  };
+  // One per scheme (Coupling/Schedule): what the stage does after the increment.
+  StageChange dem_only_stage(const WearIncrement& increment) const;
+  StageChange
+  staged_stage(const WearIncrement& increment, const dem::WallLoads& loads, const CaseParameters& p,
+               std::ostream& log,
+               const std::function<dem::PushReport(const meshes::SurfaceMesh&)>& to_wall,
+               StageRecord& r);
+  /// The record's figures from the DEM's node moves `moved`, the stage's volume added to
+  /// moved_volume_; the moved surface in the part's frame.
+  StageChange reference_stage(const dem::ReferenceDeformation& moved,
+                              const WearIncrement& increment, StageRecord& r);
+  /// The stage's output, record, tables, volume per label and line.
+  void record_stage(StageRecord r, const StageChange& change, std::ostream& log);
   /// The part's tables: stages.csv, history.h5 and, evaluated, summary.csv.
   void write_tables() const;
 };

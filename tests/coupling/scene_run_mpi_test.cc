@@ -120,6 +120,13 @@ void check_count_balance(const std::string& out) {
   CHECK(std::stol(rows.back().at(3)) > 100); // it drained
 }
 
+/// The index of column `c` in a table's header row.
+std::size_t column_index(const std::vector<std::vector<std::string>>& rows, const std::string& c) {
+  const auto at = std::find(rows.at(0).begin(), rows[0].end(), c);
+  REQUIRE(at != rows[0].end());
+  return std::size_t(at - rows[0].begin());
+}
+
 } // namespace
 
 TEST_CASE(
@@ -179,11 +186,7 @@ TEST_CASE("wearsim scene-run over ranks: two wearing parts, each worn on every r
     INFO("part " << name);
     const auto rows = physical_columns(dir + "/out/parts/" + name + "/stages.csv");
     REQUIRE(rows.size() == 3); // header, the settling stage, the staged one
-    const auto column = [&](const std::string& c) {
-      const auto at = std::find(rows[0].begin(), rows[0].end(), c);
-      REQUIRE(at != rows[0].end());
-      return std::size_t(at - rows[0].begin());
-    };
+    const auto column = [&](const std::string& c) { return column_index(rows, c); };
     const double settled = std::stod(rows[1].at(column("time_s")));
     CHECK(std::stod(rows[2].at(column("applied_volume_m3"))) > 0);
     CHECK(std::stod(rows[2].at(column("mean_force_z_N"))) ==
@@ -205,11 +208,7 @@ TEST_CASE("wearsim scene-run over ranks: the reference scheme moves the nodes on
   INFO(file_text(dir + "/run.log"));
   const auto rows = physical_columns(dir + "/out/parts/plate/stages.csv");
   REQUIRE(rows.size() == 3);
-  const auto column = [&](const std::string& c) {
-    const auto at = std::find(rows[0].begin(), rows[0].end(), c);
-    REQUIRE(at != rows[0].end());
-    return std::size_t(at - rows[0].begin());
-  };
+  const auto column = [&](const std::string& c) { return column_index(rows, c); };
   for (std::size_t k = 1; k < rows.size(); ++k) {
     const double dem_wear = std::stod(rows[k].at(column("dem_wear_volume_m3")));
     CHECK(dem_wear > 0);
