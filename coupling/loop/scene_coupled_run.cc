@@ -13,7 +13,10 @@
 //   3. Each part's new surface to its DEM wall, the particles kept (a part only recedes from
 //      them; those a remesh's chords would overlap pushed out, Coupling/Push tolerance); a
 //      checkpoint.
-// "dem-only" stages change no surface. Without stages the run is one DEM stage to End time.
+// "dem-only" stages change no surface. "reference" stages (the node-moving method) move each
+// part's nodes inside the DEM (dem::SceneRun::move_wall_nodes) instead of steps 2 and 3's FEM;
+// the part records the moved surface, and the run stops after the stage whose surface
+// distorted. Without stages the run is one DEM stage to End time.
 // The part Scene/Evaluation names is sampled after every window and evaluated per period
 // (wearing_part.h).
 // Checkpoints are taken between two windows, where the engine is between two steps: the

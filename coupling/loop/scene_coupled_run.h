@@ -30,7 +30,7 @@ namespace wear::coupling {
 class SceneCoupledRun {
 public:
   /// Checks the case: with stages, one or more wearing walls, each with a clamped surface, and
-  /// a schedule of staged and dem-only stages. Nothing runs yet.
+  /// a schedule of staged and dem-only stages, or of reference stages alone. Nothing runs yet.
   SceneCoupledRun(const CaseParameters& p, std::ostream& log, const RunOptions& options = {});
   /// Every stage (or what is left of them when resuming). Returns 0 when they ran (or the
   /// stages asked by RunOptions::stop_after), 128 + the signal when a signal stopped the run

@@ -17,6 +17,8 @@
 // shortest inlet interval, at most a tenth of the output interval), the engine stepping in between.
 // A scene that starts empty sets the engine up at its first particle, its clock starting there.
 //
+// Node moves (the reference method): scene_node_moves.cc.
+//
 // The fill region (scene_fill.h) is checked clear of the walls before any particle exists.
 // Before that, a Count above what the region holds at the densest packing of spheres is
 // refused (require_fill_count_fits): the insertion would try for minutes before giving up.
@@ -541,46 +543,6 @@ WallLoads SceneRun::wall_loads(std::size_t k, const WearLaw& law, const SceneWin
   const WearIntegrals& integrals = at->second;
   return dem::wall_loads(integrals, law.removed_volume(integrals), walls_.at(k).surface.mesh,
                          w.integrated, load_spreading(dem_.wall_loads, dem_.psd));
-}
-
-void SceneRun::run_steps(std::uint64_t n) {
-  while (n > 0) {
-    std::uint64_t k = n;
-    for (const auto& m : node_moves_)
-      k = std::min(k, m.steps_to_move(system_.n_steps()));
-    system_.run(k);
-    n -= k;
-    if (!node_moves_.empty() && system_.n_steps() % node_moves_.front().every() == 0)
-      move_nodes();
-  }
-}
-
-void SceneRun::move_nodes() {
-  for (auto& m : node_moves_)
-    walls_[std::size_t(m.wall())].surface.mesh = m.move(system_);
-}
-
-void SceneRun::move_wall_nodes(std::size_t k, const WearLawParameters& law, std::uint64_t every,
-                               double amplification) {
-  const SceneWallParameters& wall = walls_.at(k).parameters;
-  if (!wall.wears || system_.wall_kind(int(k)) != WallKind::mesh)
-    throw std::invalid_argument(scene_wall_path(wall) + ": the node-moving method moves a "
-                                                        "wearing wall's triangles (Wears = true)");
-  if (system_.wall(int(k)).moving()) // its nodes are the body frame's, posed by the motion
-    throw std::invalid_argument(scene_wall_path(wall) +
-                                "/Motion: the node-moving method moves "
-                                "the nodes of a wall that keeps its place (fixed, or a surface "
-                                "motion), not of one that moves as a whole");
-  if (!node_moves_.empty() && every != node_moves_.front().every())
-    throw std::logic_error("SceneRun::move_wall_nodes: one update interval for every wall");
-  node_moves_.emplace_back(int(k), walls_[k].surface.mesh, law, every, amplification);
-}
-
-const WallNodeMoves* SceneRun::node_moves(std::size_t k) const {
-  for (const auto& m : node_moves_)
-    if (m.wall() == int(k))
-      return &m;
-  return nullptr;
 }
 
 PushReport SceneRun::replace_wall_surface(std::size_t k, const meshes::SurfaceMesh& mesh,
