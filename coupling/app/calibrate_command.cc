@@ -7,8 +7,9 @@
 // with V_r the wear-face volume of revolution r of the run and R the revolutions after steady
 // state (docs/theory.md section 7: wear is judged on the steady flow). For a coupled run with a
 // geometry that wears, the scaled coefficient is the first-order answer: the flow changes with the
-// shape. A scene's wearing part (--part) the scene evaluates (Scene/Evaluation) has periods
-// for revolutions; another part has no steady-state judgement and is calibrated per second:
+// shape. A scene's wearing part (--part; without it, the part the scene evaluates) that the
+// scene evaluates (Scene/Evaluation) has periods for revolutions; another part has no steady-state
+// judgement and is calibrated per second:
 //   coefficient_cal = coefficient * (V_measured / t_test) / (sum_{k in K} V_k / (|K| T_stage)),
 // V_k the wear-law volume of its staged stage k (from its first staged stage, or --from).
 #include "coupling/app/calibrate_command.h"
@@ -203,7 +204,8 @@ bool per_second(const CaseParameters& p, const std::string& run, const std::stri
     return false;
   if (part.empty())
     throw std::invalid_argument("calibrate: run '" + run +
-                                "' is a scene's; name its wearing part with --part <wall name>");
+                                "' is a scene's that evaluates no part (Scene/Evaluation/Wall); "
+                                "name its wearing part with --part <wall name>");
   if (std::none_of(p.scene.walls.begin(), p.scene.walls.end(),
                    [&](const auto& w) { return w.name == part && w.wears; }))
     throw std::runtime_error("calibrate: run '" + run + "' has no wearing part '" + part +
@@ -242,13 +244,14 @@ void calibrate_per_second(const std::string& run, const std::string& part, const
 } // namespace
 
 Calibration calibrate(const std::string& run, double measured_volume, double revolutions,
-                      int from_revolution, const std::string& part) {
+                      int from_revolution, const std::string& named) {
   if (!(revolutions > 0) || !std::isfinite(revolutions))
     throw std::invalid_argument(std::string("calibrate: ") +
-                                (part.empty() ? "--revolutions" : "--revolutions or --time") +
+                                (named.empty() ? "--revolutions" : "--revolutions or --time") +
                                 " must be a positive number");
   const CaseParameters p = read_case(run + "/parameters.prm");
   const bool scene = !p.scene.walls.empty();
+  const std::string part = run_part(p, named);
   const bool by_time = per_second(p, run, part);
   Calibration c;
   c.model = p.wear_law.model;
@@ -301,8 +304,10 @@ Calibration calibrate(const std::string& run, double measured_volume, double rev
 }
 
 int run_calibrate_command(const std::vector<std::string>& args, std::ostream& out) {
-  const CalibrateArguments a = calibrate_arguments(args);
-  const bool by_time = per_second(read_case(a.run + "/parameters.prm"), a.run, a.part);
+  CalibrateArguments a = calibrate_arguments(args);
+  const CaseParameters p = read_case(a.run + "/parameters.prm");
+  a.part = run_part(p, a.part);
+  const bool by_time = per_second(p, a.run, a.part);
   if (by_time && a.time == 0)
     throw std::invalid_argument("wearsim calibrate: part '" + a.part +
                                 "' has no revolutions (Scene/Evaluation); give the time the "

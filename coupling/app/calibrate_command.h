@@ -30,7 +30,8 @@ struct Calibration {
 /// Reads <run>/summary.csv and <run>/parameters.prm. The revolutions averaged are those
 /// after the run's steady revolution, or from `from_revolution` when > 0; a run that never
 /// reached steady state is refused unless `from_revolution` is given.
-/// `part` names a scene's wearing part (empty: the tester's run): the part the scene evaluates
+/// `part` names a scene's wearing part (empty: the tester's run, or the part the scene
+/// evaluates, Scene/Evaluation/Wall): the part the scene evaluates
 /// reads its parts/<part>/summary.csv alike (periods for revolutions); another part reads its
 /// stages.csv: the wear-law volume of its staged stages (from its first staged stage, or
 /// `from_revolution` as a stage) per second of Scene/Stage duration, and `revolutions` is then

@@ -11,13 +11,15 @@
 // (totals, per stage) get an interval across runs, and none from a single run.
 //
 // `--part <name>`: the runs are scenes (`wearsim scene-run`) and the figures those of their
-// wearing part <name> (parts/<name>/). A part the scene evaluates (Scene/Evaluation, the
-// tester's sample) has its revolutions (periods) with their steady state, compared as a
-// tester's run, and a built-in tester's run on either side is read as its sample (the tester
-// against the tester as a scene). Another part has the wear per stage (the wear-law volume of the
-// stage's DEM windows, unamplified) from the first staged stage on, or from --from, in place of the
-// wear per revolution after steady state; it has no steady-state judgement of its own, so its first
-// staged stage (after the dem-only stages that fill the equipment) stands for it.
+// wearing part <name> (parts/<name>/); without it a scene's run is read by the part it evaluates
+// (Scene/Evaluation/Wall), so the tester as a scene compares as the built-in tester does. A part
+// the scene evaluates (Scene/Evaluation, the tester's sample) has its revolutions (periods) with
+// their steady state, compared as a tester's run, and a built-in tester's run on either side is
+// read as its sample (the tester against the tester as a scene). Another part has the wear per
+// stage (the wear-law volume of the stage's DEM windows, unamplified) from the first staged stage
+// on, or from --from, in place of the wear per revolution after steady state; it has no
+// steady-state judgement of its own, so its first staged stage (after the dem-only stages that fill
+// the equipment) stands for it.
 #include "coupling/app/compare_command.h"
 
 #include "coupling/analysis/interval.h"
@@ -126,16 +128,18 @@ Run load_part(const std::string& dir, const std::string& side, int from, const s
   return r;
 }
 
-Run load(const std::string& dir, const std::string& side, int from, const std::string& part) {
+Run load(const std::string& dir, const std::string& side, int from, const std::string& named) {
   std::ostringstream warnings;
   const CaseParameters p = read_case(dir + "/parameters.prm", warnings);
   const bool tester = p.scene.walls.empty(); // the built-in tester's run: its sample
+  const std::string part = run_part(p, named);
   if (!tester && !part.empty() && p.scene.evaluation.wall != part)
     return load_part(dir, side, from, part, p);
   if (!tester && part.empty())
     throw std::runtime_error("side " + side + ": run '" + dir +
-                             "' is a scene's (`wearsim scene-run`); name its wearing part with "
-                             "--part <wall name>");
+                             "' is a scene's (`wearsim scene-run`) that evaluates no part "
+                             "(Scene/Evaluation/Wall); name its wearing part with --part <wall "
+                             "name>");
   // the tester's run, or the part a scene evaluates as the tester's sample
   const std::string folder = tester ? dir : dir + "/parts/" + part;
   if (!tester && !std::filesystem::exists(folder + "/summary.csv"))

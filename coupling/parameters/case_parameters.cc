@@ -437,6 +437,12 @@ void print_parameters(std::ostream& out) {
   prm.print_parameters(out, ParameterHandler::Text);
 }
 
+std::string run_part(const CaseParameters& p, const std::string& part) {
+  if (!part.empty() || p.scene.walls.empty())
+    return part;
+  return p.scene.evaluation.wall;
+}
+
 void require_no_scene(const CaseParameters& p, const std::string& command) {
   if (!p.scene.walls.empty())
     throw std::invalid_argument(

@@ -5,8 +5,8 @@
 // composes them (meshes/ and dem/ have no deal.II dependency).
 #include "coupling/parameters/coupling_parameters.h"
 #include "dem/scene/scene_parameters.h"
-#include "dem/wear/reference_deformation.h"
 #include "dem/tester/tester_parameters.h"
+#include "dem/wear/reference_deformation.h"
 #include "dem/wear/wear_law.h"
 #include "fem/fem_parameters.h"
 #include "meshes/geometry_parameters.h"
@@ -82,6 +82,12 @@ void write_resolved_parameters(const CaseParameters& p, const std::string& path)
 /// Prints every parameter with its default and documentation (for --print-parameters); the
 /// Scene's wall, inlet, outlet and flux-plane subsections as for one of each named `example`.
 void print_parameters(std::ostream& out);
+
+/// The wearing part whose figures a run's tables hold for `wearsim compare` and `calibrate`:
+/// `part` when named (--part), else the part the scene evaluates as the tester's sample
+/// (Scene/Evaluation/Wall); empty for the built-in tester's run and for a scene that
+/// evaluates none.
+std::string run_part(const CaseParameters& p, const std::string& part);
 
 /// Throws std::invalid_argument for a case with scene walls: `command` runs the built-in
 /// wear tester; a scene is built and checked by `wearsim scene` and run by

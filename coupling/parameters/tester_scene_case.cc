@@ -19,7 +19,8 @@ CaseParameters tester_scene_case(const CaseParameters& tester) {
                                 "); `wearsim tester-scene` writes a wear-tester case as a scene");
   CaseParameters s = tester;
   s.scene = dem::tester_scene(tester.geometry, tester.dem, tester.coupling.revolutions_per_stage);
-  s.dem = dem::TesterDemParameters{};
+  const dem::TesterDemParameters tester_defaults; // the tester's own entries back to them
+  s.dem = tester_defaults;
   static_cast<dem::DemParameters&>(s.dem) = tester.dem;
   s.geometry.tester = meshes::TesterGeometry{};
   if (tester.geometry.tester.holder) // the scene's holder reads its rim width there

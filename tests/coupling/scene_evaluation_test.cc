@@ -105,8 +105,10 @@ TEST_CASE("a tester case through its scene: the sample evaluated per revolution,
           Approx(part.stages[st].dem_wear_volume).epsilon(1e-10));
   }
   CHECK(physical_columns(run_a + "/parts/sample/summary.csv").size() == 5); // header + 4
-  // `wearsim calibrate --part sample` averages the same records: revolutions 2 to 4
+  // `wearsim calibrate` averages the same records of the evaluated part (--part sample, or
+  // without it): revolutions 2 to 4
   const Calibration cal = calibrate(run_a, 1e-9, 1, 2, "sample");
+  CHECK(calibrate(run_a, 1e-9, 1, 2).simulated_per_rev == cal.simulated_per_rev);
   CHECK(cal.unit == "revolution");
   CHECK(cal.n_revolutions == 3);
   CHECK(cal.simulated_per_rev ==
@@ -144,11 +146,13 @@ TEST_CASE("a tester case through its scene: the sample evaluated per revolution,
     INFO(table);
     CHECK(physical_columns(run_b + table) == physical_columns(run_a + table));
   }
-  // `wearsim compare --part sample` reads the evaluated sample as a tester's run: the same
-  // records on both sides, no reduction.
-  std::ostringstream table;
-  REQUIRE(run_compare_command({"--part", "sample", "--from", "2", run_a, "--", run_b}, table) == 0);
+  // `wearsim compare` reads the evaluated sample as a tester's run: the same records on both
+  // sides, no reduction; without --part the scene's evaluated part, as with it.
+  std::ostringstream table, named;
+  REQUIRE(run_compare_command({"--from", "2", run_a, "--", run_b}, table) == 0);
   INFO(table.str());
   CHECK_THAT(table.str(), Catch::Contains("A (convex)") && Catch::Contains("B (convex)") &&
                               Catch::Contains("+0.0"));
+  REQUIRE(run_compare_command({"--part", "sample", "--from", "2", run_a, "--", run_b}, named) == 0);
+  CHECK(named.str() == table.str());
 }
