@@ -82,6 +82,13 @@ SceneCoupledRun::SceneCoupledRun(const CaseParameters& p, std::ostream& log,
     plan_.insert(plan_.end(), std::size_t(item.n_stages), item.scheme);
     moves_nodes_ |= item.scheme == Scheme::reference;
   }
+  if (moves_nodes_) // known from the case: refused before the scene fills
+    for (const std::size_t k : part_walls_)
+      if (dem::wall_motion_of(p_.scene.walls[k]).rigid)
+        throw std::invalid_argument(dem::scene_wall_path(p_.scene.walls[k]) +
+                                    "/Motion: the node-moving method moves the nodes of a wall "
+                                    "that keeps its place (fixed, or a surface motion), not of "
+                                    "one that moves as a whole");
   law_ = dem::make_wear_law(p_.wear_law);
 }
 

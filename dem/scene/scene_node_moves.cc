@@ -16,9 +16,9 @@ namespace wear::dem {
 
 void SceneRun::run_steps(std::uint64_t n) {
   while (n > 0) {
-    std::uint64_t k = n;
-    for (const auto& m : node_moves_)
-      k = std::min(k, m.steps_to_move(system_.n_steps()));
+    // one update interval for every moving wall (move_wall_nodes)
+    const std::uint64_t k =
+        node_moves_.empty() ? n : std::min(n, node_moves_.front().steps_to_move(system_.n_steps()));
     system_.run(k);
     n -= k;
     if (!node_moves_.empty() && system_.n_steps() % node_moves_.front().every() == 0)
