@@ -106,6 +106,7 @@ public:
   /// Accumulated wear depth per face [m] (intensive: sum of stage volume / face area).
   const meshes::FaceField<double>& wear_depth() const { return depth_; }
   int n_remeshes() const { return n_remeshes_; }
+  const WornSampleParameters& parameters() const { return p_; }
 
   /// Applies one stage of removed volume per face (extensive, on the current surface):
   /// recession, mesh motion, and remeshing when the moved mesh holds an inverted or poor

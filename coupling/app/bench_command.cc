@@ -304,7 +304,7 @@ int run_bench_command(const std::vector<std::string>& args, std::ostream& out_to
   const BenchDemArguments a = bench_dem_arguments(args);
   const int threads = *std::max_element(a.thread_counts.begin(), a.thread_counts.end());
   omp_set_num_threads(threads);
-  std::unique_ptr<dem::WearTester> tester;
+  TesterWorkload tester;
   dem::System workload;
   double settle_seconds = 0;
   dem::SlabDecomposition slabs;
@@ -321,11 +321,11 @@ int run_bench_command(const std::vector<std::string>& args, std::ostream& out_to
     }
     settle_seconds = settle(workload, a.options, threads, out);
   }
-  dem::System& s = tester ? tester->system() : workload;
+  dem::System& s = tester.scene ? tester.scene->engine_for_timing() : workload;
   auto runs = timed_runs(s, a, ranks && ranks->n_ranks() > 1 ? ranks : nullptr, out);
   const auto medians = report(s, settle_seconds, runs, out);
-  if (tester)
-    report_tester(*tester, medians, out);
+  if (tester.scene)
+    report_tester(tester, medians, out);
   out << format("particle_steps_per_second %.6e\n", medians.at(a.thread_counts.back()));
   return 0;
 }

@@ -1,9 +1,9 @@
 #pragma once
 // The `tester` workload of `wearsim bench dem`: the wear tester of a case (by default the
-// reference of cases/reference, built in code) filled and settled as `wearsim dem` does it,
-// then timed with the walls rotating and the sample accumulating wear.
+// reference of cases/reference, built in code) as the scene `wearsim run` runs it, filled and
+// settled as a run does, then timed with the walls turning and the sample accumulating wear.
 #include "coupling/parameters/case_parameters.h"
-#include "dem/tester/wear_tester.h"
+#include "dem/scene/scene_run.h"
 
 #include <cstdint>
 #include <iosfwd>
@@ -37,19 +37,26 @@ CaseParameters reference_tester_case(bool convex, double scale);
 /// --sample replacing its values when given.
 CaseParameters tester_bench_case(const TesterBenchOptions& o);
 
-/// Generates the case's sample surface, builds the tester, fills it and settles it as
-/// `wearsim dem` does on `threads` threads (`settle` false: the shortest settling the fill
-/// allows, one 0.02 s check), then starts the walls' rotation and the sample's wear window as
-/// a revolution does and runs o.flow_steps of it. With o.state_file, an existing file is the
-/// state to continue instead (it must come from the same case and thread count; the
-/// continuation is exact, System::resume_state), and a missing one receives the state reached.
-/// Logs the bed; `seconds` receives the wall time of all this [s].
-std::unique_ptr<dem::WearTester> tester_workload(const TesterBenchOptions& o, bool settle,
-                                                 int threads, double& seconds, std::ostream& out);
+/// The tester as a scene, ready to be timed.
+struct TesterWorkload {
+  std::unique_ptr<dem::SceneRun> scene;
+  double revolution_time = 0;             ///< [s] one pass of the bed through the sector
+  std::uint64_t steps_per_revolution = 0; ///< round(revolution_time / dt)
+};
+
+/// Writes the case as the scene `wearsim run` runs (tester_scene_case), builds its walls,
+/// fills and settles it as a run does on `threads` threads (`settle` false: the shortest
+/// settling the fill allows, one 0.02 s check), then runs o.flow_steps steps with the walls
+/// turning and the sample's wear integrals open, as a run's first window does. With
+/// o.state_file, an existing file is the state to continue instead (it must come from the same
+/// case and thread count; the continuation is exact, System::resume_state), and a missing one
+/// receives the state reached. Logs the bed; `seconds` receives the wall time of all this [s].
+TesterWorkload tester_workload(const TesterBenchOptions& o, bool settle, int threads,
+                               double& seconds, std::ostream& out);
 
 /// Steps per revolution and, per thread count, the minutes one revolution takes at the
 /// median rate [particle-steps/s] given for it.
-void report_tester(const dem::WearTester& tester, const std::map<int, double>& median_rates,
+void report_tester(const TesterWorkload& tester, const std::map<int, double>& median_rates,
                    std::ostream& out);
 
 } // namespace wear::coupling

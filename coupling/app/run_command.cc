@@ -1,9 +1,9 @@
-// `wearsim run`: reads the options and the case file and hands them to the run of its kind: a
-// scene (Scene/Walls names walls) to SceneCoupledRun, the built-in wear tester to CoupledRun.
+// `wearsim run` and `wearsim dem`: read the options and the case file and hand the case, as a
+// scene (a wear-tester case written as one, coupling/parameters/tester_scene_case.h), to the
+// one coupled loop, SceneCoupledRun.
 #include "coupling/app/run_command.h"
 
-#include "coupling/loop/coupled_run.h"
-#include "coupling/loop/scene_coupled_run.h"
+#include "coupling/parameters/tester_scene_case.h"
 
 #include <deal.II/base/multithread_info.h>
 
@@ -36,19 +36,27 @@ std::string parse_run_arguments(const std::vector<std::string>& args, const std:
   return case_file;
 }
 
+int run_scene_case(const CaseParameters& scene_case, std::ostream& log,
+                   const RunOptions& options) {
+  // Over ranks each rank's FEM stage keeps to the rank's own threads (DEM/Threads), not all of
+  // the node's cores.
+  if (options.ranks && scene_case.dem.n_threads > 0)
+    dealii::MultithreadInfo::set_thread_limit(unsigned(scene_case.dem.n_threads));
+  return SceneCoupledRun(scene_case, log, options).run();
+}
+
 int run_run_command(const std::vector<std::string>& args, std::ostream& log, dem::RankLink* ranks) {
   RunOptions options;
   options.ranks = ranks;
   const std::string case_file = parse_run_arguments(args, "run", options);
-  CaseParameters p = read_case(case_file);
-  if (!p.scene.walls.empty())
-    return SceneCoupledRun(p, log, options).run();
-  // Over ranks each rank's FEM stage keeps to the rank's own threads (DEM/Threads), not all of
-  // the node's cores.
-  if (ranks && p.dem.n_threads > 0)
-    dealii::MultithreadInfo::set_thread_limit(unsigned(p.dem.n_threads));
-  CoupledRun run(p, log, options);
-  return run.run();
+  return run_scene_case(run_case_of(read_case(case_file)), log, options);
+}
+
+int run_dem_command(const std::vector<std::string>& args, std::ostream& log, dem::RankLink* ranks) {
+  RunOptions options;
+  options.ranks = ranks;
+  const std::string case_file = parse_run_arguments(args, "dem", options);
+  return run_scene_case(dem_case_of(read_case(case_file)), log, options);
 }
 
 } // namespace wear::coupling

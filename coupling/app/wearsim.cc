@@ -3,7 +3,6 @@
 #include "coupling/app/bench_command.h"
 #include "coupling/app/calibrate_command.h"
 #include "coupling/app/compare_command.h"
-#include "coupling/app/dem_command.h"
 #include "coupling/app/mesh_command.h"
 #include "coupling/app/run_command.h"
 #include "coupling/app/scene_command.h"
@@ -37,18 +36,21 @@ void usage(std::ostream& out) {
          "                           Scene/Stage duration the staged wear loop on it; writes\n"
          "                           scene_series.csv, particles_<k>.vtu, walls/ (stages.csv,\n"
          "                           part_wear.csv, surface.xdmf); checkpoints for --resume\n"
-         "  dem <case.prm>           the wear tester in DEM: fill, settle, revolutions with wear\n"
-         "                           evaluations; writes history.h5/.xdmf and summary.csv\n"
          "  run [--resume | --overwrite] <case.prm>\n"
          "                           the coupled DEM-FEM wear run of the case's Coupling/Schedule\n"
-         "                           (staged, reference or dem-only stages); a scene's case runs\n"
-         "                           as by scene-run; the tester's writes summary.csv,\n"
-         "                           stages.csv, history.h5/.xdmf, checkpoint.h5; --resume\n"
+         "                           (staged, reference or dem-only stages) on its scene; a wear-\n"
+         "                           tester case runs as the scene tester-scene writes, its\n"
+         "                           sample's tables in parts/sample/ (summary.csv, stages.csv,\n"
+         "                           history.h5/.xdmf); checkpoint.h5 beside them; --resume\n"
          "                           continues a stopped run from its last checkpoint (between\n"
          "                           or inside stages); a folder holding a run is refused unless\n"
          "                           --overwrite (the old run is deleted after the new run's\n"
          "                           first checkpoint). SIGINT, SIGTERM and SIGUSR1 stop the\n"
          "                           run with a checkpoint (exit status 128 + signal)\n"
+         "  dem [--resume | --overwrite] <case.prm>\n"
+         "                           a wear-tester case in DEM alone: its DEM/Revolutions as\n"
+         "                           dem-only stages of one revolution, stopping DEM/Revolutions\n"
+         "                           after steady after the first steady one; as run\n"
          "  compare [--from <k>] [--part <wall>] <A1> [<A2> ...] -- <B1> [<B2> ...]\n"
          "  compare <runA> <runB>    runs of two sides (several seeds each, or one) side by\n"
          "                           side: wear per revolution after steady state and its\n"
@@ -93,28 +95,22 @@ int main(int argc, char** argv) {
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &n_ranks);
   try {
-    if (n_ranks > 1 && (cmd == "scene-run" || cmd == "run")) {
-      // A scene's slabs are a ring along a period or an angle, a line otherwise; the built-in
-      // tester's a ring of angular slabs.
+    if (n_ranks > 1 && (cmd == "scene-run" || cmd == "run" || cmd == "dem")) {
+      // A scene's slabs are a ring along a period or an angle (the tester's sector), a line
+      // otherwise.
       const std::vector<std::string> args(argv + 2, argv + argc);
       RunOptions options;
-      const CaseParameters p = read_case(parse_run_arguments(args, cmd, options));
-      const bool scene = !p.scene.walls.empty();
-      wear::dem::MpiRankLink ranks(MPI_COMM_WORLD, !scene || wear::dem::rank_ring(p.scene));
+      const CaseParameters c = read_case(parse_run_arguments(args, cmd, options));
+      const CaseParameters p = cmd == "dem" ? dem_case_of(c) : run_case_of(c);
+      wear::dem::MpiRankLink ranks(MPI_COMM_WORLD, wear::dem::rank_ring(p.scene));
+      if (cmd == "dem")
+        return run_dem_command(args, std::cout, &ranks);
       return cmd == "run" ? run_run_command(args, std::cout, &ranks)
                           : run_scene_run_command(args, std::cout, &ranks);
     }
     if (n_ranks > 1) {
-      // The tester and the benchmark's sectors and annulus are rings of angular slabs.
+      // The benchmark's tester, sectors and annulus are rings of angular slabs.
       wear::dem::MpiRankLink ranks(MPI_COMM_WORLD, true);
-      if (cmd == "dem" && argc == 3) {
-        const CaseParameters p = read_case(argv[2]);
-        require_no_scene(p, "dem");
-        DemCommandOptions options;
-        options.ranks = &ranks;
-        run_dem_command(p, std::cout, options);
-        return 0;
-      }
       if (cmd == "bench" && argc >= 3 && std::string(argv[2]) == "dem")
         return run_bench_command({argv + 2, argv + argc}, std::cout, &ranks);
       throw std::invalid_argument(
@@ -145,16 +141,6 @@ int main(int argc, char** argv) {
       run_mesh_command(p, std::cout);
       return 0;
     }
-    if (cmd == "dem") {
-      if (argc != 3) {
-        std::cerr << "wearsim dem: expected one case file\n";
-        return 2;
-      }
-      const CaseParameters p = read_case(argv[2]);
-      require_no_scene(p, "dem");
-      run_dem_command(p, std::cout);
-      return 0;
-    }
     if (cmd == "scene") {
       if (argc != 3) {
         std::cerr << "wearsim scene: expected one case file\n";
@@ -168,14 +154,17 @@ int main(int argc, char** argv) {
         std::cerr << "wearsim tester-scene: expected one case file (the scene goes to stdout)\n";
         return 2;
       }
-      const CaseParameters p = read_case(argv[2]);
-      std::cout << tester_scene_text(tester_scene_case(p), argv[2]);
+      CaseParameters s = tester_scene_case(read_case(argv[2]));
+      s.output.directory += "-scene"; // beside the tester case's own run
+      std::cout << tester_scene_text(s, argv[2]);
       return 0;
     }
     if (cmd == "scene-run")
       return run_scene_run_command({argv + 2, argv + argc}, std::cout);
     if (cmd == "run")
       return run_run_command({argv + 2, argv + argc}, std::cout);
+    if (cmd == "dem")
+      return run_dem_command({argv + 2, argv + argc}, std::cout);
     if (cmd == "compare")
       return run_compare_command({argv + 2, argv + argc}, std::cout);
     if (cmd == "calibrate")

@@ -34,6 +34,7 @@
 
 #include "coupling/output/progress_line.h"
 #include "dem/scene/wall_catalogue.h"
+#include "meshes/stopwatch.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -95,16 +96,20 @@ SceneCoupledRun::SceneCoupledRun(const CaseParameters& p, std::ostream& log,
 int SceneCoupledRun::run() {
   const StopSignals signals;
   std::optional<OpenSceneStage> open = setup();
+  if (const std::string steady = steady_stop(); !steady.empty()) { // resumed after the stop
+    log_ << steady << "; nothing is left to run\n";
+    return 0;
+  }
   int n_run = 0;
   for (std::size_t k = std::size_t(n_stages_done_); k < plan_.size(); ++k) {
     StageRecord r = begin_stage(k);
     const auto loads = run_dem(r, std::exchange(open, {}), signals);
     if (!loads) {
       const int signal = ranks_.agreed_signal(signals);
-      log_ << "stopped by " << StopSignals::name(signal) << " inside stage " << r.stage
-           << " at t = " << scene_->time() << " s";
+      log_ << "stopped by " << StopSignals::name(signal) << " in stage " << r.stage << " of "
+           << plan_.size() << " at t = " << scene_->time() << " s";
       if (scene_->system().n_rebuilds() > 0 && p_.coupling.checkpoints)
-        log_ << " after a checkpoint; continue with wearsim scene-run --resume " << p_.case_file
+        log_ << " after a checkpoint; continue with wearsim run --resume " << p_.case_file
              << "\n";
       else // nothing was checkpointed: no particle yet, or checkpoints off
         log_ << " without a checkpoint (no particle yet, or Coupling/Checkpoints off); run it "
@@ -119,11 +124,17 @@ int SceneCoupledRun::run() {
       break;
     }
     checkpoint({zero_loads(), scene_->time() + p_.scene.stage_duration});
+    if (const std::string steady = steady_stop(); !steady.empty()) {
+      log_ << steady << "\n";
+      break;
+    }
     if (options_.stop_after > 0 && ++n_run >= options_.stop_after && k + 1 < plan_.size()) {
       log_ << "stopped after stage " << r.stage << " as asked; continue with --resume\n";
       return 0;
     }
   }
+  for (const auto& part : parts_)
+    log_ << part.summary_text();
   log_ << "written to " << p_.output.directory << "/ (scene_series.csv, scene_wear.csv, "
        << "particles_<k>.vtu, walls/"
        << (parts_.empty() ? "" : ", parts/<part>/ with stages.csv, part_wear.csv, history.xdmf")
@@ -164,6 +175,9 @@ std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::setup() {
     series_ =
         std::make_unique<SceneSeries>(p_.output.directory, *scene_, p_.scene.particle_snapshots);
   replaced_ = replaced;
+  // The settled bed, before any stage: a run stopped in its first stage does not fill again.
+  checkpoint({zero_loads(),
+              parts_.empty() ? p_.scene.end_time : scene_->time() + p_.scene.stage_duration});
   return std::nullopt;
 }
 
@@ -171,10 +185,7 @@ std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::resume() {
   const DemPart part = ranks_.dem_part();
   const Checkpoint c = read_latest_checkpoint(checkpoint_path(), log_, part);
   require_same_case(c, parameters_text_, checkpoint_path());
-  if (!c.scene)
-    throw std::runtime_error("--resume: checkpoint '" + checkpoint_path() +
-                             "' is not a scene run's (a `wearsim run` checkpoint?)");
-  const auto& s = *c.scene;
+  const auto& s = c.scene;
   if (s.parts.size() != part_walls_.size())
     throw std::runtime_error("--resume: checkpoint '" + checkpoint_path() + "' holds " +
                              std::to_string(s.parts.size()) + " wearing parts, the case " +
@@ -188,9 +199,7 @@ std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::resume() {
     open.loads.push_back(loads_of(s.parts[i].open, parts_.back().surface()));
   }
   scene_ = std::make_unique<dem::SceneRun>(p_.scene, p_.dem, std::move(walls));
-  dem::SceneRunState state{s.time,        true,          c.dem,           s.n_removed,
-                           s.inlets,      s.outlet_mass, s.outlet_counts, s.flux_planes,
-                           s.rank_bounds, s.node_moves};
+  const dem::SceneRunState state = scene_run_state(s, c.dem);
   scene_->set_rank_link(options_.ranks);
   if (moves_nodes_) // from the unmoved surfaces, moved as the state says
     move_part_nodes();
@@ -205,8 +214,11 @@ std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::resume() {
          << "on " << c.dem_ranks << ")" << std::endl;
   if (part.n_ranks > 1)
     log_ << "scene: " << scene_->rank_layout() << "; rank 0 writes" << std::endl;
-  log_ << "resumed after stage " << n_stages_done_ << " of " << plan_.size() << " at t = " << s.time
-       << " s (" << s.n_records << " records)" << std::endl;
+  const bool inside = std::any_of(s.parts.begin(), s.parts.end(),
+                                  [](const PartCheckpoint& k) { return k.open.duration > 0; });
+  log_ << "resumed after stage " << n_stages_done_ << " of " << plan_.size()
+       << (inside ? ", inside stage " + std::to_string(n_stages_done_ + 1) : std::string())
+       << " at t = " << s.time << " s (" << s.n_records << " records)" << std::endl;
   return open;
 }
 
@@ -325,6 +337,22 @@ std::string SceneCoupledRun::distortion() const {
   return {};
 }
 
+std::string SceneCoupledRun::steady_stop() const {
+  const int after = p_.scene.evaluation.periods_after_steady;
+  for (const auto& part : parts_) {
+    const dem::SceneEvaluation* e = part.evaluation();
+    if (after == 0 || !e || e->history().empty())
+      continue;
+    const int steady = e->history().back().steady_revolution;
+    const int n_periods = int(e->history().size());
+    if (steady > 0 && n_periods - steady >= after)
+      return "stopped " + std::to_string(n_periods - steady) + " period(s) after the first " +
+             "steady one (period " + std::to_string(steady) + " of part '" + part.name() +
+             "'), Scene/Evaluation/Periods after steady";
+  }
+  return {};
+}
+
 void SceneCoupledRun::checkpoint(const OpenSceneStage& open) {
   if (!p_.coupling.checkpoints || scene_->system().n_rebuilds() == 0)
     return;
@@ -333,20 +361,9 @@ void SceneCoupledRun::checkpoint(const OpenSceneStage& open) {
   c.stages_done = n_stages_done_;
   c.parameters = parameters_text_;
   c.dem = state.system;
-  SceneCheckpoint s;
-  s.time = state.time;
-  s.stage_end = open.end;
-  s.n_records = n_records_;
-  s.rank_bounds = state.rank_bounds;
-  s.n_removed = state.n_removed;
-  s.inlets = state.inlets;
-  s.outlet_mass = state.outlet_mass;
-  s.outlet_counts = state.outlet_counts;
-  s.flux_planes = state.flux_planes;
-  s.node_moves = state.node_moves;
+  c.scene = scene_checkpoint(state, open.end, n_records_);
   for (std::size_t i = 0; i < parts_.size(); ++i)
-    s.parts.push_back(parts_[i].state(open.loads[i]));
-  c.scene = s;
+    c.scene.parts.push_back(parts_[i].state(open.loads[i]));
   ranks_.write(checkpoint_path(), c);
   if (!replaced_.empty()) { // the run --overwrite replaced goes once this one can be resumed
     std::filesystem::remove_all(replaced_);

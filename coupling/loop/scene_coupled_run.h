@@ -10,8 +10,9 @@
 // Over MPI ranks (RunOptions::ranks) every rank runs this same loop: the scene's DEM
 // decomposed into slabs (dem::SceneRun::set_rank_link), each wearing part worn on every rank's
 // own copy (checked the same bit for bit), output and messages on rank 0.
-#include "coupling/loop/coupled_run.h"
+#include "coupling/loop/run_folder.h"
 #include "coupling/loop/run_ranks.h"
+#include "coupling/loop/stage_record.h"
 #include "coupling/loop/stop_signals.h"
 #include "coupling/loop/wearing_part.h"
 #include "coupling/output/checkpoint.h"
@@ -64,6 +65,9 @@ private:
   /// The first part the reference scheme distorted, with where ("part 'sample' (inverted face
   /// at ...)"), empty if none.
   std::string distortion() const;
+  /// Says why the run stops after this stage when the evaluated part is steady for
+  /// Scene/Evaluation/Periods after steady periods; empty otherwise.
+  std::string steady_stop() const;
   /// Writes checkpoint.h5 (the one before kept); `open`: the stage in progress.
   void checkpoint(const OpenSceneStage& open);
   /// The loads a stage starts from: zero on each part's faces.

@@ -15,9 +15,8 @@
 // frame as the built-in tester's (its loads' vectors turned into it, its surface placed in the
 // scene for the DEM wall), clamped at its bottom and, in a scene with the holder, its sides held
 // normal to themselves (u . n = 0) as the holder holds them.
-// Assumption: the tester's worn-through check (a clamped bottom below the wear face) does not
-// apply to a part; a part worn through folds its surface and the stage stops with the fold
-// message.
+// A part whose wearing faces come within FEM/Worn-through thickness of its clamped surface is
+// worn through there: the wear asked of those faces is recorded, not removed, and said once.
 #include "coupling/loop/wearing_part.h"
 
 #include "coupling/loop/stage_steps.h"
@@ -206,6 +205,15 @@ void WearingPart::run_stage(
   const WearIncrement increment =
       wear_increment(sample_->surface(), loads.wear_volume, previous_stress_, p.coupling,
                      r.scheme == Scheme::staged);
+  if (increment.lowered) {
+    const auto& d = increment.declared_depth;
+    log << format("stage %d, part '%s': amplification %g -> %.4g: at %g it would recede vertex "
+                  "%ld (%s) by %.3g mm, %.3g of its longest edge (Maximum depth fraction %g)\n",
+                  r.stage, name_.c_str(), increment.declared_amplification,
+                  increment.amplification, increment.declared_amplification, d.vertex,
+                  meshes::label::name(d.label).c_str(), 1e3 * d.depth_there, d.max_fraction,
+                  p.coupling.max_depth_fraction);
+  }
   record_increment(increment, stages_.empty() ? 0.0 : stages_.back().cumulative_applied, p.coupling,
                    r);
   r.wear_seconds = wear_clock.seconds();
@@ -247,9 +255,7 @@ WearingPart::staged_stage(const WearIncrement& increment, const dem::WallLoads& 
   ep.holder_support = held_sides_;
   const StageStress stress = solve_stage_stress(*sample_, loads, ep, *output_, r);
   GeometryUpdate update = apply_stage_wear(*sample_, increment, stress, r);
-  for (const auto& refusal : update.report.remesh_refusals)
-    log << "stage " << r.stage << ", part '" << name_
-        << "': a remesh needed more than one attempt; refused:" << refusal << "\n";
+  log_geometry_notes(r, update.report, log);
   previous_stress_ = std::move(update.von_mises);
   const dem::PushReport pushed = to_wall(wall_surface());
   r.n_pushed = pushed.n_pushed;
@@ -264,6 +270,26 @@ WearingPart::staged_stage(const WearIncrement& increment, const dem::WallLoads& 
                  r.max_von_mises_ball * 1e-6, r.n_remeshes,
                  r.fem_solve_seconds + r.motion_seconds + r.remesh_seconds, r.n_pushed),
           true};
+}
+
+// What the geometry update had to do beyond the plain recession, said once per stage.
+void WearingPart::log_geometry_notes(const StageRecord& r, const fem::WearStageReport& report,
+                                     std::ostream& log) const {
+  const std::string where = "stage " + std::to_string(r.stage) + ", part '" + name_ + "': ";
+  if (report.n_relaxation_halvings > 0)
+    log << where << "the surface relaxation was halved " << report.n_relaxation_halvings
+        << " time(s) (alone it folded the surface or removed the whole increment)\n";
+  if (report.n_held_restorations > 0)
+    log << where << "after " << report.n_held_restorations
+        << " remesh(es) the volume-restoring offset would have folded the surface and was held "
+           "still around the fold\n";
+  if (report.volume_not_restored != 0)
+    log << where
+        << format("%.3g mm^3 of chord volume not given back after remeshing (the restoring "
+                  "offset folded or fell short)\n",
+                  report.volume_not_restored * 1e9);
+  for (const auto& refusal : report.remesh_refusals)
+    log << where << "a remesh needed more than one attempt; refused:" << refusal << "\n";
 }
 
 // A reference stage: the DEM moved the nodes (cumulative figures over the run): the volume the
@@ -323,6 +349,10 @@ void WearingPart::record_stage(StageRecord r, const StageChange& change, std::os
     r.first_revolution = stages_.empty() ? 1 : stages_.back().last_revolution + 1;
     r.last_revolution = int(evaluation_->history().size());
   }
+  const bool first_worn_through =
+      r.worn_through_volume > 0 &&
+      std::none_of(stages_.begin(), stages_.end(),
+                   [](const StageRecord& s) { return s.worn_through_volume > 0; });
   stages_.push_back(r);
   write_tables();
   if (change.changes_geometry) // a dem-only stage's volume changes nothing
@@ -344,6 +374,41 @@ void WearingPart::record_stage(StageRecord r, const StageChange& change, std::os
                 r.applied_volume * 1e9, r.cumulative_applied * 1e9)
       << change.note << "\n"
       << std::flush;
+  if (first_worn_through)
+    log << format("stage %d, part '%s': worn through: %d wear faces are within %g mm of the "
+                  "clamped bottom (FEM/Worn-through thickness); the %.4g mm^3 asked of them is "
+                  "not removed (stages.csv: worn_through_volume_m3)\n",
+                  r.stage, name_.c_str(), r.n_worn_through,
+                  sample_->parameters().worn_through_thickness * 1e3,
+                  r.worn_through_volume * 1e9);
+}
+
+std::string WearingPart::summary_text() const {
+  double t[6] = {0, 0, 0, 0, 0, 0};
+  int n_remeshes = 0, n_first = 0;
+  double worn_through = 0;
+  for (const auto& r : stages_) {
+    t[0] += r.dem_seconds, t[1] += r.wear_seconds, t[2] += r.fem_solve_seconds;
+    t[3] += r.motion_seconds, t[4] += r.remesh_seconds, t[5] += r.output_seconds;
+    n_remeshes += r.n_remeshes, n_first += r.n_first_attempt_remeshes;
+    worn_through += r.worn_through_volume;
+  }
+  const char* names[6] = {"DEM", "wear", "FEM solve", "mesh motion", "remesh", "output"};
+  double total = 0;
+  for (double x : t)
+    total += x;
+  std::string text = "part '" + name_ + "', time per phase over its stages:\n";
+  for (int k = 0; k < 6; ++k)
+    text += format("  %-12s %10.1f s  %5.1f %%\n", names[k], t[k],
+                   total > 0 ? 100 * t[k] / total : 0.0);
+  text += format("  %-12s %10.1f s\n", "total", total);
+  if (n_remeshes > 0)
+    text += format("  remeshes: %d, %d of them (%.0f %%) at gmsh's first attempt\n", n_remeshes,
+                   n_first, 100.0 * n_first / n_remeshes);
+  if (worn_through > 0)
+    text += format("  worn through: %.4g mm^3 of the %.4g mm^3 asked was not removed\n",
+                   worn_through * 1e9, stages_.empty() ? 0.0 : stages_.back().cumulative_applied * 1e9);
+  return text;
 }
 
 PartCheckpoint WearingPart::state(const dem::WallLoads& open) const {
@@ -355,7 +420,7 @@ PartCheckpoint WearingPart::state(const dem::WallLoads& open) const {
     c.labels.push_back(label);
     c.removed_per_label.push_back(v);
   }
-  c.open = open_stage(open, 0, 0, {});
+  c.open = open_stage(open);
   if (evaluation_)
     c.evaluation = evaluation_->state();
   c.sample_frame = frame_.has_value();

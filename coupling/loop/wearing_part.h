@@ -61,6 +61,8 @@ public:
   const std::map<int, double>& removed_per_label() const { return removed_per_label_; }
   /// Where the part writes: Output/Directory/parts/<name>.
   const std::string& directory() const { return directory_; }
+  /// The evaluation Scene/Evaluation asks of this part (the tester's sample), or null.
+  const dem::SceneEvaluation* evaluation() const { return evaluation_.get(); }
 
   /// After window w of the scene, its loads on the part (`window`) and its
   /// wall time [s]: the evaluation's sample and, at a period's end, its record (every rank
@@ -78,6 +80,9 @@ public:
                  std::ostream& log,
                  const std::function<dem::PushReport(const meshes::SurfaceMesh&)>& to_wall,
                  const dem::ReferenceDeformation* moved = nullptr);
+  /// What the part's stages cost per phase, its remeshes and its worn-through volume, for the
+  /// end of a run.
+  std::string summary_text() const;
   /// The part's checkpoint part; `open`: the open stage's loads summed so far.
   PartCheckpoint state(const dem::WallLoads& open) const;
 
@@ -120,6 +125,10 @@ private:
                std::ostream& log,
                const std::function<dem::PushReport(const meshes::SurfaceMesh&)>& to_wall,
                StageRecord& r);
+  /// Says what the geometry update of stage r did beyond the recession (relaxation halved,
+  /// restoring offset held or short, remesh attempts refused).
+  void log_geometry_notes(const StageRecord& r, const fem::WearStageReport& report,
+                          std::ostream& log) const;
   /// The record's figures from the DEM's node moves `moved`, the stage's volume added to
   /// moved_volume_; the moved surface in the part's frame.
   StageChange reference_stage(const dem::ReferenceDeformation& moved,

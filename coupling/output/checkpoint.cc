@@ -1,28 +1,18 @@
 // Checkpoints of a coupled run in HDF5.
 //
 // Layout of checkpoint.h5:
-//   attributes on /: stages_done, revolutions_done, has_sample, parameters (text)
+//   attributes on /: stages_done, has_scene = 1, parameters (text)
 //   /dem/...        every array of dem::SystemState (Vec3 arrays as n x 3), attributes time,
-//                   n_steps, n_rebuilds, next_id; written over N ranks instead: attribute
+//                   n_steps, n_rebuilds, next_id, and its continuation part
+//                   (/dem/continuation/...: reference positions with the attribute
+//                   wall_reference_time, wall candidates, cost estimate, the threads' wear
+//                   window; attribute n_threads); written over N ranks instead: attribute
 //                   n_ranks = N on /dem and each rank's part in /dem/rank_<r>/... (its rank
-//                   fields as attributes, rank_ghosts, rank_sent_up, and always its
-//                   continuation), gathered to rank 0 and written by it. A reader on N ranks
-//                   takes its own part; on another count all parts, merged into the bed of one
-//                   process (dem::merge_rank_states), which it decomposes again
-//   /revolutions/data, /revolutions/offsets   the records packed as numbers (pack()), one
-//                   after another; distortions as the text attribute /revolutions:distortions
-//   /stages/data, /stages/offsets             the same for the stage records
-//   /sample/...     the worn sample: mesh arrays, surface (vertices, triangles, labels,
-//                   attribute revision), removed_volume, wear_depth
-//   /face_von_mises, /dem/cumulative_removed   per face of the current sample surface
-//   in-stage checkpoints (attribute has_open_stage = 1 on /) and a scene run's (has_scene = 1,
-//   always between two steps; no /open_stage):
-//   /dem/continuation/...  the DEM state's continuation part (reference positions with the
-//                   attribute wall_reference_time, wall candidates, cost estimate, the threads'
-//                   wear window; attribute n_threads)
-//   /open_stage/... the stage's summed loads per face and its open revolution (steps done,
-//                   the evaluation's samples; column forces as n_columns x n_samples)
-//   /scene/...      a scene run's own part and its wearing parts (scene_checkpoint.cc)
+//                   fields as attributes, rank_ghosts, rank_sent_up, its continuation),
+//                   gathered to rank 0 and written by it. A reader on N ranks takes its own
+//                   part; on another count all parts, merged into the bed of one process
+//                   (dem::merge_rank_states), which it decomposes again
+//   /scene/...      the scene run's own part and its wearing parts (scene_checkpoint.cc)
 // The checkpoint a write replaces is kept as checkpoint.previous.h5 (a hard link taken
 // before the rename), and a resume falls back to it when the latest one does not read.
 // Every value is stored in its binary form, so a read gives back the same bits. The file is
@@ -370,26 +360,6 @@ dem::RevolutionSamples read_samples(const Hdf5Reader& h5, const std::string& g) 
   return s;
 }
 
-void write_open_stage(Hdf5File& h5, const OpenStage& o) {
-  write_load_arrays(h5, "/open_stage", o);
-  write_doubles(h5, "/open_stage/progress",
-                {double(o.revolutions_done), o.dem_seconds, o.duration,
-                 double(o.revolution.steps_done), o.revolution.wall_seconds});
-  write_samples(h5, "/open_stage/samples", o.revolution.samples);
-}
-
-OpenStage read_open_stage(const Hdf5Reader& h5) {
-  OpenStage o;
-  read_load_arrays(h5, "/open_stage", o);
-  const auto x = h5.doubles("/open_stage/progress");
-  if (x.size() != 5 || !(x[0] >= 0) || !(x[3] >= 0))
-    throw std::runtime_error("'/open_stage/progress' does not hold the stage's progress");
-  o.revolutions_done = int(x[0]), o.dem_seconds = x[1], o.duration = x[2];
-  o.revolution.steps_done = std::uint64_t(x[3]), o.revolution.wall_seconds = x[4];
-  o.revolution.samples = read_samples(h5, "/open_stage/samples");
-  return o;
-}
-
 } // namespace
 
 void write_stage_records(Hdf5File& h5, const std::string& g, const std::vector<StageRecord>& r) {
@@ -447,33 +417,18 @@ void write_checkpoint(const std::string& path, const Checkpoint& c,
   Hdf5File h5(path);
   if (dem_parts.empty()) {
     write_dem(h5, "/dem", c.dem);
-    if (c.open_stage || c.scene) // a scene's checkpoint always lies between two steps
-      write_continuation(h5, "/dem", c.dem);
+    write_continuation(h5, "/dem", c.dem);
   } else {
-    // Every part with its continuation: a part taken back on as many ranks is added where its
-    // last rebuild had it (WearTester::restore), at a stage's end too.
     for (std::size_t r = 0; r < dem_parts.size(); ++r) {
       write_dem(h5, rank_group(int(r)), dem_parts[r]);
       write_continuation(h5, rank_group(int(r)), dem_parts[r]);
     }
     h5.attribute("/dem", "n_ranks", double(dem_parts.size()));
   }
-  h5.write("/dem/cumulative_removed", c.dem_cumulative, {c.dem_cumulative.size()});
-  h5.write("/face_von_mises", c.face_von_mises, {c.face_von_mises.size()});
-  write_records(h5, "/revolutions", c.revolutions);
-  write_records(h5, "/stages", c.stages);
-  if (c.has_sample)
-    write_sample_state(h5, "/sample", c.sample);
   h5.attribute("/", "stages_done", double(c.stages_done));
-  h5.attribute("/", "revolutions_done", double(c.revolutions_done));
-  h5.attribute("/", "has_sample", c.has_sample ? 1.0 : 0.0);
   h5.attribute("/", "parameters", c.parameters);
-  h5.attribute("/", "has_open_stage", c.open_stage ? 1.0 : 0.0);
-  if (c.open_stage)
-    write_open_stage(h5, *c.open_stage);
-  h5.attribute("/", "has_scene", c.scene ? 1.0 : 0.0);
-  if (c.scene)
-    write_scene(h5, *c.scene);
+  h5.attribute("/", "has_scene", 1.0);
+  write_scene(h5, c.scene);
   h5.commit(previous_checkpoint_path(path));
 }
 
@@ -502,31 +457,29 @@ Checkpoint read_latest_checkpoint(const std::string& path, std::ostream& warning
       throw;
     Checkpoint c = read_checkpoint(previous, part);
     warnings << "warning: " << e.what() << "; resuming from the checkpoint before it, '" << previous
-             << "' (after stage " << c.stages_done
-             << (c.open_stage ? ", inside the next stage" : "") << ")" << std::endl;
+             << "' (after stage " << c.stages_done << ")" << std::endl;
     return c;
   }
 }
 
 Checkpoint read_checkpoint(const std::string& path, const DemPart& part) {
   const Hdf5Reader h5(path);
+  if (!h5.has_attribute("/", "has_scene") || h5.attribute("/", "has_scene") == 0)
+    throw std::runtime_error("checkpoint '" + path +
+                             "' was written by the built-in wear tester of an older engine, "
+                             "which the tester as a scene cannot continue; run the case again "
+                             "with --overwrite");
   Checkpoint c;
   try {
     c.stages_done = int(h5.attribute("/", "stages_done"));
-    c.revolutions_done = int(h5.attribute("/", "revolutions_done"));
-    c.has_sample = h5.attribute("/", "has_sample") != 0;
     c.parameters = h5.text_attribute("/", "parameters");
-    const bool open =
-        h5.has_attribute("/", "has_open_stage") && h5.attribute("/", "has_open_stage") != 0;
-    const bool scene = h5.has_attribute("/", "has_scene") && h5.attribute("/", "has_scene") != 0;
     c.dem_ranks = h5.has_attribute("/dem", "n_ranks") ? int(h5.attribute("/dem", "n_ranks")) : 1;
     if (c.dem_ranks < 1)
       throw std::runtime_error("/dem: n_ranks below 1");
     const auto part_of = [&](int r) {
       const std::string g = c.dem_ranks == 1 ? "/dem" : rank_group(r);
       dem::SystemState d = read_dem(h5, g);
-      if (c.dem_ranks > 1 || open || scene)
-        read_continuation(h5, g, d);
+      read_continuation(h5, g, d);
       return d;
     };
     if (c.dem_ranks == part.n_ranks) {
@@ -537,19 +490,7 @@ Checkpoint read_checkpoint(const std::string& path, const DemPart& part) {
         parts.push_back(part_of(r));
       c.dem = dem::merge_rank_states(parts);
     }
-    c.dem_cumulative = h5.doubles("/dem/cumulative_removed");
-    c.face_von_mises = h5.doubles("/face_von_mises");
-    c.revolutions = read_records<dem::RevolutionRecord>(h5, "/revolutions");
-    c.stages = read_records<StageRecord>(h5, "/stages");
-    if (c.has_sample)
-      c.sample = read_sample_state(h5, "/sample");
-    if (open)
-      c.open_stage = read_open_stage(h5);
-    if (scene)
-      c.scene = read_scene(h5);
-    if ((!c.scene && int(c.stages.size()) != c.stages_done) ||
-        int(c.revolutions.size()) != c.revolutions_done)
-      throw std::runtime_error("the record counts do not match the stage and revolution counts");
+    c.scene = read_scene(h5);
   } catch (const std::exception& e) {
     throw std::runtime_error("checkpoint '" + path + "' is damaged or incomplete: " + e.what());
   }

@@ -1,16 +1,15 @@
 #pragma once
-// What a coupled run needs to continue after a kill: the DEM state with its contact
-// histories, the evaluation records, the worn sample (volume mesh, surface, accumulated
-// fields), the per-face stress of the last stage and the stage records; inside a stage also
-// the open stage (its summed loads, the open revolution). Written to HDF5 atomically after
-// every stage and at in-stage checkpoints, the one before kept beside it; read back with
-// every size checked.
+// What a run needs to continue after a kill, between two of its windows: the DEM state with
+// its contact histories and continuation, and the scene's own part (its inlets, outlets, node
+// moves and each wearing part's worn sample, stress, records and open stage:
+// scene_checkpoint.h); each stateful type writes its own part, this file composes them.
+// Written to HDF5 atomically after every stage and at in-stage checkpoints, the one before
+// kept beside it; read back with every size checked.
 #include "coupling/loop/stage_record.h"
 #include "coupling/output/checkpoint_arrays.h"
 #include "coupling/output/scene_checkpoint.h"
 #include "dem/engine/system.h"
 #include "dem/evaluation/tester_evaluation.h"
-#include "dem/tester/wear_tester.h"
 
 #include <optional>
 #include <ostream>
@@ -31,19 +30,8 @@ struct Checkpoint {
   /// merged into the bed of one process (dem::merge_rank_states).
   int dem_ranks = 1;
   std::string parameters; ///< fully resolved case of the run (resume refuses another)
-  dem::SystemState dem;
-  int revolutions_done = 0;
-  std::vector<dem::RevolutionRecord> revolutions;
-  bool has_sample = false; ///< a worn FEM sample exists (staged runs)
-  fem::WornSampleState sample;
-  std::vector<double> face_von_mises; ///< [Pa] per face of the sample surface (last stage)
-  std::vector<double> dem_cumulative; ///< [m^3] per face, wear-law volume (no FEM sample)
-  std::vector<StageRecord> stages;
-  /// Present in an in-stage checkpoint (the DEM state then carries its continuation part).
-  std::optional<OpenStage> open_stage;
-  /// Present in a scene run's checkpoint (which always carries the DEM's continuation); its
-  /// wearing parts carry their own samples and stage records (`sample` and `stages` unused).
-  std::optional<SceneCheckpoint> scene;
+  dem::SystemState dem;   ///< with its continuation (a checkpoint lies between two steps)
+  SceneCheckpoint scene;  ///< the scene's own part and its wearing parts
 };
 
 /// Where the checkpoint before the latest one is kept: "<path without .h5>.previous.h5".

@@ -7,11 +7,8 @@
 
 namespace wear::coupling {
 
-OpenStage open_stage(const dem::WallLoads& loads, int revolutions_done, double dem_seconds,
-                     const dem::OpenRevolution& revolution) {
+OpenStage open_stage(const dem::WallLoads& loads) {
   OpenStage o;
-  o.revolutions_done = revolutions_done;
-  o.dem_seconds = dem_seconds;
   o.impulse = loads.impulse.values();
   o.traction_impulse = loads.traction_impulse.values();
   o.normal_impulse = loads.normal_impulse.values();
@@ -20,7 +17,6 @@ OpenStage open_stage(const dem::WallLoads& loads, int revolutions_done, double d
   o.contact_steps = loads.contact_steps.values();
   o.wear_volume = loads.wear_volume.values();
   o.duration = loads.duration;
-  o.revolution = revolution;
   return o;
 }
 

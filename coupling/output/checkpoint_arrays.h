@@ -5,7 +5,7 @@
 // scene_checkpoint.h) composes them under its own group.
 #include "coupling/loop/stage_record.h"
 #include "coupling/output/hdf5_file.h"
-#include "dem/tester/wear_tester.h"
+#include "dem/evaluation/tester_evaluation.h"
 #include "dem/wear/wall_loads.h"
 #include "fem/worn_sample.h"
 #include "meshes/vec3.h"
@@ -16,22 +16,18 @@
 
 namespace wear::coupling {
 
-/// A stage stopped inside its DEM part: what it had summed and where its revolution stands.
-/// The loads are dem::WallLoads's fields on the current part surface, in the part's frame.
+/// A stage stopped inside its DEM part: the loads it had summed so far, dem::WallLoads's
+/// fields on the current part surface, in the part's frame.
 struct OpenStage {
-  int revolutions_done = 0;                   ///< completed revolutions of the stage
-  double dem_seconds = 0;                     ///< [s] wall time of its DEM so far (reporting only)
   std::vector<meshes::Vec3> impulse;          ///< [N s] per face
   std::vector<meshes::Vec3> traction_impulse; ///< [N s] per face, as the FEM receives it
   std::vector<double> normal_impulse, archard, sliding_work; ///< [N s], [N m], [J] per face
   std::vector<double> contact_steps, wear_volume;            ///< [-], [m^3] per face
   double duration = 0;                                       ///< [s] of the summed windows
-  dem::OpenRevolution revolution;
 };
 
-/// An open stage holding `loads` (sample frame) after `revolutions_done` revolutions.
-OpenStage open_stage(const dem::WallLoads& loads, int revolutions_done, double dem_seconds,
-                     const dem::OpenRevolution& revolution);
+/// An open stage holding `loads` (part frame).
+OpenStage open_stage(const dem::WallLoads& loads);
 /// The open stage's loads on `surface` (the current part surface); throws when the face
 /// counts differ.
 dem::WallLoads loads_of(const OpenStage& o, const meshes::SurfaceMesh& surface);

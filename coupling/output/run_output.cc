@@ -1,6 +1,6 @@
 // Output of a coupled run.
 //
-// summary.csv: the wear tester's per-revolution columns (tester_output.h), then the columns
+// summary.csv: the wear tester's per-revolution columns (summary_columns.h), then the columns
 // of the stage the revolution belongs to: stage, scheme, amplification, the volume the stage
 // asked of the geometry and the change the geometry made, remeshes so far, the smallest
 // scaled Jacobian handed on, the peak von Mises stress (ball-averaged, then at a quadrature
@@ -10,7 +10,7 @@
 #include "coupling/output/run_output.h"
 
 #include "coupling/output/hdf5_file.h"
-#include "coupling/output/tester_output.h"
+#include "coupling/output/summary_columns.h"
 #include "coupling/parameters/coupling_parameters.h"
 #include "meshes/atomic_file.h"
 

@@ -124,6 +124,27 @@ PartCheckpoint read_part(const Hdf5Reader& h5, const std::string& g) {
 
 } // namespace
 
+SceneCheckpoint scene_checkpoint(const dem::SceneRunState& state, double stage_end,
+                                 int n_records) {
+  SceneCheckpoint s;
+  s.time = state.time;
+  s.stage_end = stage_end;
+  s.n_records = n_records;
+  s.rank_bounds = state.rank_bounds;
+  s.n_removed = state.n_removed;
+  s.inlets = state.inlets;
+  s.outlet_mass = state.outlet_mass;
+  s.outlet_counts = state.outlet_counts;
+  s.flux_planes = state.flux_planes;
+  s.node_moves = state.node_moves;
+  return s;
+}
+
+dem::SceneRunState scene_run_state(const SceneCheckpoint& s, const dem::SystemState& system) {
+  return {s.time,          true,           system,        s.n_removed,   s.inlets,
+          s.outlet_mass,   s.outlet_counts, s.flux_planes, s.rank_bounds, s.node_moves};
+}
+
 void write_scene(Hdf5File& h5, const SceneCheckpoint& s) {
   write_doubles(h5, "/scene/progress",
                 {s.time, s.stage_end, double(s.n_records), double(s.n_removed)});

@@ -6,6 +6,7 @@
 #include "dem/scene/flux_plane.h"
 #include "dem/scene/inlet.h"
 #include "dem/scene/scene_evaluation.h"
+#include "dem/scene/scene_run.h"
 #include "dem/wear/reference_deformation.h"
 
 #include <cstdint>
@@ -48,6 +49,12 @@ struct SceneCheckpoint {
   /// The node moves of the reference scheme, per wall whose nodes move (none otherwise)
   std::vector<dem::ReferenceDeformationState> node_moves;
 };
+
+/// The scene's own part of a checkpoint from the scene run's state `s` at the open stage's
+/// end `stage_end` [s] after `n_records` records (no wearing part: the caller adds them).
+SceneCheckpoint scene_checkpoint(const dem::SceneRunState& s, double stage_end, int n_records);
+/// The scene run's state that checkpoint part `s` with the engine state `system` holds.
+dem::SceneRunState scene_run_state(const SceneCheckpoint& s, const dem::SystemState& system);
 
 /// Writes s under /scene: /scene/progress, outlets, inlet_<k>, flux_plane_<k>, part_<k>.
 void write_scene(Hdf5File& h5, const SceneCheckpoint& s);

@@ -15,7 +15,7 @@
 #include "coupling/parameters/case_file_lines.h"
 #include "coupling/parameters/case_scope.h"
 #include "coupling/parameters/engine_version.h"
-#include "dem/tester/wear_tester.h"
+#include "dem/tester/tester_parameters.h"
 #include "meshes/atomic_file.h"
 
 #include <deal.II/base/utilities.h>

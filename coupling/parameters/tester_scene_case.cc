@@ -17,6 +17,12 @@ CaseParameters tester_scene_case(const CaseParameters& tester) {
     throw std::invalid_argument("case file '" + tester.case_file +
                                 "' is a scene already (Scene/Walls = " + tester.scene.wall_names +
                                 "); `wearsim tester-scene` writes a wear-tester case as a scene");
+  const dem::ReferenceDeformationParameters deformation_defaults;
+  if (tester.deformation.enabled || tester.deformation.amplification != deformation_defaults.amplification)
+    throw std::invalid_argument("Deformation/Reference method and Deformation/Amplification: "
+                                "`wearsim dem`'s switch to the node-moving method; a run's "
+                                "reference stages are Coupling/Schedule's (for example "
+                                "\"6 reference\"), amplified by Coupling/Amplification");
   CaseParameters s = tester;
   s.scene = dem::tester_scene(tester.geometry, tester.dem, tester.coupling.revolutions_per_stage);
   const dem::TesterDemParameters tester_defaults; // the tester's own entries back to them
@@ -30,8 +36,29 @@ CaseParameters tester_scene_case(const CaseParameters& tester) {
     if (item.scheme == Scheme::reference)
       s.deformation.update_interval = tester.deformation.update_interval;
   s.coupling.revolutions_per_stage = CouplingParameters{}.revolutions_per_stage;
-  s.output.directory = tester.output.directory + "-scene";
   return s;
+}
+
+CaseParameters run_case_of(const CaseParameters& p) {
+  return p.scene.walls.empty() ? tester_scene_case(p) : p;
+}
+
+CaseParameters dem_case_of(const CaseParameters& p) {
+  if (!p.scene.walls.empty())
+    throw std::invalid_argument("wearsim dem runs a wear-tester case; case file '" + p.case_file +
+                                "' is a scene (Scene/Walls = " + p.scene.wall_names +
+                                "): run it with `wearsim run` and a dem-only Coupling/Schedule");
+  // The node-moving method (Deformation/Reference method) as reference stages, amplified as
+  // its Deformation/Amplification says.
+  CaseParameters d = p;
+  const bool moves = p.deformation.enabled;
+  d.coupling.schedule = std::to_string(p.dem.revolutions) + (moves ? " reference" : " dem-only");
+  d.coupling.revolutions_per_stage = 1;
+  if (moves)
+    d.coupling.amplification = p.deformation.amplification;
+  d.deformation.enabled = false;
+  d.deformation.amplification = dem::ReferenceDeformationParameters{}.amplification;
+  return tester_scene_case(d);
 }
 
 std::string tester_scene_text(const CaseParameters& scene, const std::string& tester_file) {

@@ -167,7 +167,8 @@ void validate_evaluation(const SceneParameters& s) {
   const SceneEvaluationParameters defaults;
   if (e.wall.empty()) {
     if (e.period != defaults.period || e.steady_threshold != defaults.steady_threshold ||
-        e.steady_periods != defaults.steady_periods)
+        e.steady_periods != defaults.steady_periods ||
+        e.periods_after_steady != defaults.periods_after_steady)
       throw std::invalid_argument("Scene/Evaluation: Period and the steady-state entries "
                                   "evaluate a wall; name it in Scene/Evaluation/Wall (or leave "
                                   "them out)");

@@ -100,6 +100,8 @@ struct SceneEvaluationParameters {
   double period = 0;             ///< [s] of one record (a revolution of the tester)
   double steady_threshold = 0.1; ///< [-] coefficient of variation below which a period is steady
   int steady_periods = 2;        ///< consecutive steady periods that judge the run steady
+  /// the run stops this many periods after the first steady one (0: runs every stage)
+  int periods_after_steady = 0;
 };
 
 /// A grid of boxes on which the run bins the particles' solid fraction and velocity.
@@ -279,6 +281,10 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
          "sample, the bed height and the wear rate below which a period counts as steady.");
   v.integer("Steady periods", s.evaluation.steady_periods, 1, 1000,
             "Consecutive steady periods that judge the run steady.");
+  v.integer("Periods after steady", s.evaluation.periods_after_steady, 0, 100000,
+            "The run stops after the stage holding the period this many periods after the "
+            "first steady one (0: runs every stage of Coupling/Schedule, which stay the "
+            "maximum).");
   v.leave();
   v.enter("Fields");
   v.int_list("Cells", s.fields.cells,

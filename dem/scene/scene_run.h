@@ -138,6 +138,9 @@ public:
   /// [s] Inlet batches and outlets act this often (the shortest inlet interval).
   double exchange_interval() const { return exchange_; }
   const System& system() const { return system_; }
+  /// The engine itself, to be stepped directly by a benchmark (System::run): what a window
+  /// runs between two exchanges in a scene without inlets, outlets or moving nodes.
+  System& engine_for_timing() { return system_; }
   const std::vector<SceneWall>& walls() const { return walls_; }
   const std::vector<Outlet>& outlets() const { return outlets_; }
   const std::vector<Inlet>& inlets() const { return inlets_; }

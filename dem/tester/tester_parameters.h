@@ -2,7 +2,7 @@
 // The DEM part of a wear-tester case: the DEM parameters every scene uses
 // (dem/scene/dem_parameters.h) and what only the tester adds, its fill height, rotation, run
 // length, evaluation and steady state; and the DEM subsection of a case file that fills it
-// (visit_parameters, meshes/parameter_visitor.h). validate() is in wear_tester.h.
+// (visit_parameters, meshes/parameter_visitor.h).
 #include "dem/scene/dem_parameters.h"
 
 #include <vector>
@@ -24,6 +24,9 @@ struct TesterDemParameters : DemParameters {
   int steady_revolutions = 2;               ///< consecutive revolutions below the threshold
   std::vector<int> snapshot_revolutions{1}; ///< particle snapshots after these (plus the last)
 };
+
+/// Throws std::invalid_argument naming the DEM entry that is out of range.
+void validate(const TesterDemParameters& p);
 
 /// The DEM subsection's entries that only the wear tester uses (inside the subsection): a
 /// scene's case may not set them (coupling/parameters/case_scope.h).

@@ -11,7 +11,7 @@
 // steady state judged by DEM/Steady threshold and Steady revolutions).
 #include "dem/tester/tester_scene.h"
 
-#include "dem/tester/wear_tester.h"
+#include "dem/tester/tester_parameters.h"
 #include "meshes/constants.h"
 
 #include <algorithm>
@@ -109,6 +109,7 @@ SceneParameters tester_scene(const meshes::GeometryParameters& geometry,
   s.evaluation.period = revolution;
   s.evaluation.steady_threshold = dem.steady_threshold;
   s.evaluation.steady_periods = dem.steady_revolutions;
+  s.evaluation.periods_after_steady = dem.revolutions_after_steady;
 
   auto& fill = s.fill;
   fill.region = "cylinder";

@@ -3,7 +3,8 @@
 // in its coefficient and does not act on the flow of a fixed geometry). Bad input is refused
 // naming the option or the file.
 #include "coupling/app/calibrate_command.h"
-#include "coupling/app/dem_command.h"
+#include "coupling/app/run_command.h"
+#include "coupling/parameters/tester_scene_case.h"
 #include "error_of.h"
 #include "small_tester.h"
 
@@ -18,7 +19,7 @@ using namespace wear::coupling;
 namespace {
 
 double wear_of_first_revolution(const std::string& dir) {
-  std::ifstream in(dir + "/summary.csv");
+  std::ifstream in(dir + "/parts/sample/summary.csv");
   std::string header, row;
   std::getline(in, header);
   std::getline(in, row);
@@ -51,7 +52,7 @@ TEST_CASE("wearsim calibrate: the calibrated coefficient reproduces the measured
   p.dem.revolutions = 1;
   std::filesystem::remove_all(p.output.directory);
   std::ostringstream log;
-  run_dem_command(p, log, {false});
+  run_scene_case(dem_case_of(p), log, {false, false, 0});
   const double simulated = wear_of_first_revolution(p.output.directory);
   REQUIRE(simulated > 0);
 
@@ -99,6 +100,6 @@ TEST_CASE("wearsim calibrate: the calibrated coefficient reproduces the measured
   q.wear_law.archard_coefficient = c.calibrated;
   std::filesystem::remove_all(q.output.directory);
   std::ostringstream log2;
-  run_dem_command(q, log2, {false});
+  run_scene_case(dem_case_of(q), log2, {false, false, 0});
   CHECK(wear_of_first_revolution(q.output.directory) == Approx(measured / 40).epsilon(1e-9));
 }

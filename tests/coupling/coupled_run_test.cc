@@ -1,5 +1,6 @@
 // `wearsim run` on a small tester (30-degree sector, s = 4, shallow bed, coarse convex
-// sample, one revolution per stage, wear amplified 20 times so the geometry visibly changes):
+// sample, one revolution per stage, wear amplified 20 times so the geometry visibly changes),
+// run as the scene `wearsim run` writes it (run_case_of):
 // - the FEM mesh update removes what the amplified wear law asks, within 0.5 % every stage;
 // - the stage-averaged load presses the wear faces down (frame transform of the impulses);
 // - a run killed after a staged stage and resumed equals the uninterrupted run bit for bit;
@@ -8,7 +9,8 @@
 // The [long] test drives a large amplification past the node-moving method's distortion
 // limit and checks that the staged scheme goes on to three times that wear depth.
 #include "coupling/app/compare_command.h"
-#include "coupling/loop/coupled_run.h"
+#include "coupling/loop/scene_coupled_run.h"
+#include "coupling/parameters/tester_scene_case.h"
 #include "coupling/output/checkpoint.h"
 #include "coupling/output/hdf5_file.h"
 #include "small_tester.h"
@@ -36,9 +38,15 @@ CaseParameters small_case(const std::string& dir, const std::string& schedule,
 
 std::string run_case(const CaseParameters& p, const RunOptions& o = {false, false, 0}) {
   std::ostringstream log;
-  CoupledRun run(p, log, o);
+  SceneCoupledRun run(run_case_of(p), log, o);
   run.run();
   return log.str();
+}
+
+/// The sample's part of a tester run's checkpoint.
+const PartCheckpoint& sample_part(const Checkpoint& c) {
+  REQUIRE(c.scene.parts.size() == 1);
+  return c.scene.parts[0];
 }
 
 std::string error_of(const CaseParameters& p, const RunOptions& o = {false, false, 0}) {
@@ -72,13 +80,16 @@ TEST_CASE("wearsim run: staged stages remove the amplified wear and resume bit f
   const auto pa = with_stress_law(a);
   const std::string log = run_case(pa);
   INFO(log);
-  for (const char* f : {"summary.csv", "stages.csv", "history.h5", "history.xdmf", "checkpoint.h5",
-                        "parameters.prm", "surface/stage_0003.vtu", "volume/stage_0003.h5",
-                        "volume/stage_0003.vtu"})
+  for (const char* f : {"parts/sample/summary.csv", "parts/sample/stages.csv",
+                        "parts/sample/history.h5", "parts/sample/history.xdmf", "checkpoint.h5",
+                        "parameters.prm", "parts/sample/surface/stage_0003.vtu",
+                        "parts/sample/volume/stage_0003.h5", "parts/sample/volume/stage_0003.vtu"})
     CHECK(std::filesystem::file_size(a + "/" + f) > 0);
-  const auto ca = read_checkpoint(a + "/checkpoint.h5");
+  const auto ca_all = read_checkpoint(a + "/checkpoint.h5");
+  const auto& ca = sample_part(ca_all);
   REQUIRE(ca.stages.size() == 3);
-  REQUIRE(ca.revolutions.size() == 3);
+  REQUIRE(ca.evaluation);
+  REQUIRE(ca.evaluation->history.size() == 3);
   CHECK(ca.stages[0].applied_volume == 0);
   for (const auto& s : ca.stages) {
     INFO("stage " << s.stage);
@@ -129,12 +140,13 @@ TEST_CASE("wearsim run: staged stages remove the amplified wear and resume bit f
   CHECK(read_checkpoint(b + "/checkpoint.h5").stages_done == 2);
   const std::string resumed = run_case(pb, {true, false, 0});
   CHECK(resumed.find("resumed after stage 2") != std::string::npos);
-  const auto cb = read_checkpoint(b + "/checkpoint.h5");
-  REQUIRE(cb.stages_done == 3);
-  CHECK(cb.dem.position == ca.dem.position);
-  CHECK(cb.dem.velocity == ca.dem.velocity);
-  CHECK(cb.dem.angular_velocity == ca.dem.angular_velocity);
-  CHECK(cb.dem.pair_history == ca.dem.pair_history);
+  const auto cb_all = read_checkpoint(b + "/checkpoint.h5");
+  REQUIRE(cb_all.stages_done == 3);
+  CHECK(cb_all.dem.position == ca_all.dem.position);
+  CHECK(cb_all.dem.velocity == ca_all.dem.velocity);
+  CHECK(cb_all.dem.angular_velocity == ca_all.dem.angular_velocity);
+  CHECK(cb_all.dem.pair_history == ca_all.dem.pair_history);
+  const auto& cb = sample_part(cb_all);
   CHECK(cb.sample.vertices == ca.sample.vertices);
   CHECK(cb.sample.removed_volume == ca.sample.removed_volume);
   CHECK(cb.face_von_mises == ca.face_von_mises);
@@ -143,9 +155,9 @@ TEST_CASE("wearsim run: staged stages remove the amplified wear and resume bit f
     CHECK(cb.stages[k].geometry_volume_change == ca.stages[k].geometry_volume_change);
     CHECK(cb.stages[k].max_von_mises_qp == ca.stages[k].max_von_mises_qp);
     CHECK(cb.stages[k].max_von_mises_ball == ca.stages[k].max_von_mises_ball);
-    CHECK(cb.revolutions[k].wear_volume == ca.revolutions[k].wear_volume);
+    CHECK(cb.evaluation->history[k].wear_volume == ca.evaluation->history[k].wear_volume);
   }
-  CHECK(file_text(b + "/summary.csv").size() > 0);
+  CHECK(file_text(b + "/parts/sample/summary.csv").size() > 0);
 
   // wearsim compare on real run folders: two identical runs, no reduction anywhere (three
   // revolutions, not steady: averaged from revolution 1).
@@ -211,10 +223,10 @@ TEST_CASE("wearsim run: adaptive amplification brings the deepest vertex to the 
   p.coupling.adaptive_amplification = true;
   const std::string log = run_case(p);
   INFO(log);
-  CHECK(log.find("stage 1: amplification 100000 -> ") != std::string::npos);
+  CHECK(log.find("stage 1, part 'sample': amplification 100000 -> ") != std::string::npos);
   const auto c = read_checkpoint(dir + "/checkpoint.h5");
-  REQUIRE(c.stages.size() == 1);
-  const auto& s = c.stages[0];
+  REQUIRE(sample_part(c).stages.size() == 1);
+  const auto& s = sample_part(c).stages[0];
   CHECK(s.amplification < 1e5);
   CHECK(s.amplification >= p.coupling.min_amplification);
   // The asked volume is the stage's amplification times the wear law's (no stress factor yet),
@@ -254,9 +266,9 @@ TEST_CASE("wearsim run: past the node-moving method's distortion limit the stage
   std::filesystem::remove_all(ref.output.directory);
   const std::string ref_log = run_case(ref);
   INFO(ref_log);
-  REQUIRE(ref_log.find("distorted the surface in stage") != std::string::npos);
-  const auto ref_applied =
-      Hdf5Reader(ref.output.directory + "/history.h5").doubles("/stages/cumulative_applied_m3");
+  REQUIRE(ref_log.find("the reference method distorted part 'sample'") != std::string::npos);
+  const auto ref_applied = Hdf5Reader(ref.output.directory + "/parts/sample/history.h5")
+                               .doubles("/stages/cumulative_applied_m3");
   const double distorted_at = ref_applied.back(); // [m^3] applied when it distorted
   // Both schemes remove about the same volume per stage at the same amplification; the staged
   // stages that the depth cap slows (below) remove less, so 5 times the reference's stages
@@ -280,7 +292,7 @@ TEST_CASE("wearsim run: past the node-moving method's distortion limit the stage
   staged.coupling.min_amplification = 5.0;
   std::filesystem::remove_all(staged.output.directory);
   std::ostringstream log;
-  CoupledRun run(staged, log, {false, false, 0});
+  SceneCoupledRun run(run_case_of(staged), log, {false, false, 0});
   // The criterion is the volume reached with valid meshes; a stop after it (the schedule has a
   // margin) is reported, not hidden.
   std::string stopped = "no: the whole schedule ran";
@@ -289,7 +301,8 @@ TEST_CASE("wearsim run: past the node-moving method's distortion limit the stage
   } catch (const std::exception& e) {
     stopped = e.what();
   }
-  const auto& stages = run.stages();
+  REQUIRE(run.parts().size() == 1);
+  const auto& stages = run.parts()[0].stages();
   REQUIRE(!stages.empty());
   // Where the wear face reaches the clamped bottom (the sample has no holder; wear gathers
   // at its exposed leading corner) the sample is worn through and that wear is recorded, not
@@ -327,7 +340,7 @@ TEST_CASE("the quick case, shortened, gives a complete summary with finite posit
     p.output.directory = "quick_" + kind;
     std::filesystem::remove_all(p.output.directory);
     INFO(kind << "\n" << run_case(p));
-    std::ifstream in(p.output.directory + "/summary.csv");
+    std::ifstream in(p.output.directory + "/parts/sample/summary.csv");
     std::string header, row;
     std::getline(in, header);
     int n_rows = 0;

@@ -1,7 +1,9 @@
 // `wearsim dem` end to end on a small tester (30-degree sector, s = 4, shallow bed, coarse
-// plain sample, one pass of the sector): the output files exist, every summary column is
-// there and finite, wear is positive, and the face sets add up to the per-contact total.
-#include "coupling/app/dem_command.h"
+// convex sample, one pass of the sector, the node-moving method), run as the scene
+// `wearsim dem` runs it (dem_case_of): the output files exist, every summary column is there
+// and finite, wear is positive, and the face sets add up to the per-contact total.
+#include "coupling/app/run_command.h"
+#include "coupling/parameters/tester_scene_case.h"
 #include "small_tester.h"
 
 #include <catch2/catch.hpp>
@@ -53,11 +55,12 @@ TEST_CASE("wearsim dem: a short run writes complete, consistent results", "[coup
   const std::string dir = "dem_command_out";
   std::filesystem::remove_all(dir);
   std::ostringstream log;
-  run_dem_command(small_case(dir, true), log, {false});
+  CHECK(run_scene_case(dem_case_of(small_case(dir, true)), log, {false, false, 0}) == 0);
   INFO(log.str());
-  for (const char* f : {"history.h5", "history.xdmf", "summary.csv", "parameters.prm"})
+  for (const char* f : {"parts/sample/history.h5", "parts/sample/history.xdmf",
+                        "parts/sample/summary.csv", "parameters.prm"})
     CHECK(std::filesystem::file_size(dir + "/" + f) > 0);
-  const auto rows = read_csv(dir + "/summary.csv");
+  const auto rows = read_csv(dir + "/parts/sample/summary.csv");
   REQUIRE(rows.size() == 1);
   const auto& r = rows[0];
   for (const char* column :
@@ -92,11 +95,10 @@ TEST_CASE("wearsim dem: a short run writes complete, consistent results", "[coup
   CHECK(std::stod(r.at("enclosed_volume_loss_m3")) == Approx(applied).epsilon(0.1));
   CHECK(std::stod(r.at("swept_volume_m3")) == Approx(applied).epsilon(0.1));
   CHECK(r.at("distortion") == "\"\"");
-  std::ifstream xdmf(dir + "/history.xdmf");
+  std::ifstream xdmf(dir + "/parts/sample/history.xdmf");
   std::stringstream text;
   text << xdmf.rdbuf();
-  CHECK(text.str().find("history.h5:/revolution_0001/removed_volume") != std::string::npos);
-  CHECK(text.str().find("history.h5:/particles/revolution_0001/position") != std::string::npos);
+  CHECK(text.str().find("stage removed volume") != std::string::npos);
 }
 
 TEST_CASE("wearsim dem: the reference convex case, one revolution", "[coupling][dem][long]") {
@@ -104,8 +106,9 @@ TEST_CASE("wearsim dem: the reference convex case, one revolution", "[coupling][
   p.dem.revolutions = 1;
   p.output.directory = "dem_reference_out";
   std::ostringstream log;
-  run_dem_command(p, log, {false});
-  const auto rows = read_csv(p.output.directory + "/summary.csv");
+  std::filesystem::remove_all(p.output.directory);
+  run_scene_case(dem_case_of(p), log, {false, false, 0});
+  const auto rows = read_csv(p.output.directory + "/parts/sample/summary.csv");
   REQUIRE(rows.size() == 1);
   CHECK(std::stod(rows[0].at("wear_volume_m3")) > 0);
   CHECK(std::stod(rows[0].at("wear_volume_m3")) + std::stod(rows[0].at("wear_volume_other_m3")) ==

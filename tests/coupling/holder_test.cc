@@ -1,8 +1,8 @@
 // The sample holder in the DEM tester (issue 32): with Geometry/Tester/Holder = frame the
 // sample's sides and underside see no particle over a window of the settled, turning bed;
-// with Holder = none they do. The small tester (small_tester.h, plain sample, s = 4) is
-// filled, settled and turned for one revolution; the window's contact-steps per face of the
-// sample wall are summed by label.
+// with Holder = none they do. The small tester (small_tester.h, plain sample, s = 4), as the
+// scene `wearsim run` runs it, is filled, settled and turned for one revolution; the window's
+// contact-steps per face of the sample wall are summed by label.
 //
 // With the frame, what could fail: a particle reaching a side or the bottom (a gap in the
 // frame, the frame misplaced, the fill inserting particles inside it) gives face contacts
@@ -13,9 +13,11 @@
 // contact-steps on sides and bottom (no contact is a count, not a measurement); no sphere
 // overlapping the frame's outer box by more than 10 % of its radius (settled Hertz overlaps at
 // this load are below 1 %).
-#include "dem/tester/wear_tester.h"
+#include "coupling/parameters/tester_scene_case.h"
+#include "dem/scene/scene_run.h"
+#include "dem/scene/scene_walls.h"
+#include "meshes/constants.h"
 #include "meshes/sample_frame.h"
-#include "meshes/sample_generator.h"
 #include "small_tester.h"
 
 #include <catch2/catch.hpp>
@@ -34,18 +36,28 @@ struct Window {
   int holder_wall = -1;       ///< the holder's wall number
 };
 
+/// The index of the scene's wall named `name`, -1 if none.
+int wall_index(const dem::SceneParameters& scene, const std::string& name) {
+  for (std::size_t k = 0; k < scene.walls.size(); ++k)
+    if (scene.walls[k].name == name)
+      return int(k);
+  return -1;
+}
+
 Window settled_window(bool holder) {
   auto p = small_tester_case("holder_test", false);
   p.geometry.tester.holder = holder;
-  p.geometry.sample.volume_mesh = false;
-  const auto sample = meshes::generate_sample(p.geometry.sample).surface;
-  dem::WearTester tester(p.geometry, p.dem, p.wear_law, p.deformation, sample);
-  tester.fill_and_settle();
-  tester.run_revolution();
+  const auto c = coupling::tester_scene_case(p);
+  dem::SceneRun scene(c.scene, c.dem, dem::build_scene_walls(c.scene, c.geometry));
+  scene.setup();
+  const double revolution = p.geometry.tester.sector_angle_deg / p.dem.rotation_rate_deg; // [s]
+  const dem::SceneWindow turned = scene.advance(scene.time() + revolution);
   Window w;
-  w.holder_wall = tester.holder_wall();
-  const auto& loads = tester.last_loads();
-  const auto& labels = tester.sample_mesh().face_labels;
+  w.holder_wall = wall_index(c.scene, "holder");
+  const auto sample_wall = std::size_t(wall_index(c.scene, "sample"));
+  const auto law = dem::make_wear_law(c.wear_law);
+  const auto loads = scene.wall_loads(sample_wall, *law, turned);
+  const auto& labels = scene.walls()[sample_wall].surface.mesh.face_labels;
   for (std::size_t f = 0; f < labels.size(); ++f) {
     const double n = loads.contact_steps[f];
     if (meshes::label::wears(labels[f]))
@@ -61,7 +73,7 @@ Window settled_window(bool holder) {
   const meshes::Vec3 lo{-g.width / 2 - rim, -g.length / 2 - rim, -rim},
       hi{g.width / 2 + rim, g.length / 2 + rim, g.thickness};
   const meshes::SampleFrame frame(g, p.geometry.placement);
-  const auto& particles = tester.system().particles;
+  const auto& particles = scene.system().particles;
   for (std::size_t i = 0; i < particles.n_real; ++i) {
     const auto q = frame.point_to_sample(particles.position[i]);
     // Distance from the centre to the box (0 inside); inside counts as a full overlap.

@@ -3,7 +3,8 @@
 // P1) meshed at h = 3 mm and h/2 = 1.5 mm (bottom 5 and 2.5 mm), in the DEM wall and the FEM
 // both.
 //
-// One bed is filled, settled and run into the flow once (the quick case's two dem-only
+// The tester runs as the scene `wearsim run` runs it (tester_scene_case). One bed is filled,
+// settled and run into the flow once (the quick case's two dem-only
 // revolutions), on the h wall. Its state is continued for two consecutive windows of one
 // revolution (one stage of the quick case) on the h/2 wall, and, as a second draw, on the h
 // wall. The flow is chaotic: the two runs part within a few steps, and the stress maxima of
@@ -28,7 +29,9 @@
 // draws and the window-to-window noise are printed, not checked. [long]: 159 s on 2 idle cores (7
 // to 17 min on a host loaded by other builds).
 #include "coupling/parameters/case_parameters.h"
-#include "dem/tester/wear_tester.h"
+#include "coupling/parameters/tester_scene_case.h"
+#include "dem/scene/scene_run.h"
+#include "dem/scene/scene_walls.h"
 #include "fem/elasticity.h"
 #include "fem/worn_sample.h"
 #include "meshes/sample_frame.h"
@@ -95,47 +98,65 @@ std::function<meshes::Vec3(const meshes::Vec3&)> to_sample(const coupling::CaseP
   return [frame = frame_of(p)](const meshes::Vec3& v) { return frame.vector_to_sample(v); };
 }
 
+/// The tester of case p as a scene, and its sample wall's index.
+struct TesterScene {
+  coupling::CaseParameters c;
+  std::size_t sample = 0;
+  double revolution = 0; ///< [s]
+  explicit TesterScene(const coupling::CaseParameters& p)
+      : c(coupling::tester_scene_case(p)),
+        revolution(p.geometry.tester.sector_angle_deg / p.dem.rotation_rate_deg) {
+    while (c.scene.walls.at(sample).name != "sample")
+      ++sample;
+  }
+  std::unique_ptr<dem::SceneRun> build() const {
+    return std::make_unique<dem::SceneRun>(c.scene, c.dem,
+                                           dem::build_scene_walls(c.scene, c.geometry));
+  }
+};
+
 /// A bed in the flow: the DEM state the windows continue from.
 struct Bed {
-  dem::SystemState state;
-  int revolutions_done = 0;
-  std::vector<dem::RevolutionRecord> records;
+  dem::SceneRunState state;
 };
 
 /// The bed filled, settled and run into the flow (the quick case's dem-only revolutions) on
-/// the sample wall of `m`.
-Bed bed_in_flow(const coupling::CaseParameters& p, const MeshLevel& m) {
+/// the sample wall of case p (the coarse mesh).
+Bed bed_in_flow(const coupling::CaseParameters& p) {
   const meshes::Stopwatch clock;
-  dem::WearTester tester(p.geometry, p.dem, p.wear_law, p.deformation, m.surface);
-  tester.fill_and_settle();
+  const TesterScene t(p);
+  const auto scene = t.build();
+  scene->setup();
   for (int k = 0; k < spin_up_revolutions; ++k)
-    tester.run_revolution();
+    scene->advance(scene->time() + t.revolution);
   std::printf("%zu particles, revolution %.4g s, bed in the flow after %.0f s\n",
-              tester.system().particles.n_real, tester.revolution_time(), clock.seconds());
-  return {tester.system().export_state(), tester.n_revolutions_done(),
-          tester.evaluation().history()};
+              scene->system().particles.n_real, t.revolution, clock.seconds());
+  return {scene->state()};
 }
 
 /// Continues `bed` with the sample wall of `m` for n revolutions; each revolution's loads,
-/// turned into the sample frame, go to m.revolutions, and the tester goes to `each` after
-/// every revolution (its window's integrals still in the engine).
+/// turned into the sample frame, go to m.revolutions, and the scene goes to `each` after
+/// every revolution with the window and the sample's wall.
 void run_revolutions(const coupling::CaseParameters& p, const Bed& bed, int n, MeshLevel& m,
-                     const std::function<void(const dem::WearTester&)>& each = {}) {
+                     const std::function<void(const dem::SceneRun&, const dem::SceneWindow&,
+                                              std::size_t)>& each = {}) {
   const meshes::Stopwatch clock;
-  coupling::CaseParameters q = p;
-  q.geometry.sample = m.geometry;
-  dem::WearTester tester(q.geometry, q.dem, q.wear_law, q.deformation, m.surface);
-  tester.restore(bed.state, bed.revolutions_done, bed.records);
+  const TesterScene t(p);
+  const auto scene = t.build();
+  scene->resume(bed.state);
   // The bed settled against the h surface; the h/2 one lies off it by the chord error of the
   // curved elements: particles it overlaps are moved out first, as after a remesh.
-  const auto pushed = tester.set_sample_surface(m.surface);
+  const auto pushed = scene->replace_wall_surface(
+      t.sample, frame_of(p).place_in_tester(m.surface), t.c.coupling.push_tolerance);
   std::printf("DEM on the %.2g mm wall: %d particles pushed out, at most %.3g mm\n", m.h * 1e3,
               pushed.n_pushed, pushed.max_distance * 1e3);
+  const auto law = dem::make_wear_law(t.c.wear_law);
   for (int k = 0; k < n; ++k) {
-    tester.run_revolution();
-    m.revolutions.push_back(tester.last_loads().follow(m.sample->surface(), to_sample(q)));
+    const dem::SceneWindow w = scene->advance(scene->time() + t.revolution);
+    m.revolutions.push_back(
+        scene->wall_loads(t.sample, *law, w).follow(m.sample->surface(), to_sample(p)));
     if (each)
-      each(tester);
+      each(*scene, w, t.sample);
   }
   m.dem_seconds = clock.seconds();
 }
@@ -177,13 +198,16 @@ double run_fine_on_both(const coupling::CaseParameters& p, const Bed& bed, int n
   const meshes::SurfaceMesh coarse_placed = frame_of(p).place_in_tester(coarse.surface);
   const meshes::SurfaceLocator locator(coarse_placed);
   double fine_impulse = 0, summed_impulse = 0; // [N s]
-  run_revolutions(p, bed, n, fine, [&](const dem::WearTester& t) {
-    const auto fine_sums = t.system().wear_integrals(t.sample_wall());
-    const auto sums = summed_on(fine_sums, t.sample_mesh(), coarse_placed, locator);
-    coarse.same_contacts.push_back(dem::wall_loads(sums, t.wear_law().removed_volume(sums),
-                                                   coarse_placed, t.revolution_time(),
-                                                   t.load_spreading())
-                                       .follow(coarse.sample->surface(), to_sample(p)));
+  const TesterScene t(p);
+  const auto law = dem::make_wear_law(t.c.wear_law);
+  const auto spreading = dem::load_spreading(t.c.dem.wall_loads, t.c.dem.psd);
+  run_revolutions(p, bed, n, fine,
+                  [&](const dem::SceneRun& s, const dem::SceneWindow& w, std::size_t k) {
+    const auto& fine_sums = w.wearing.at(k);
+    const auto sums = summed_on(fine_sums, s.walls()[k].surface.mesh, coarse_placed, locator);
+    coarse.same_contacts.push_back(
+        dem::wall_loads(sums, law->removed_volume(sums), coarse_placed, w.integrated, spreading)
+            .follow(coarse.sample->surface(), to_sample(p)));
     meshes::Vec3 a, b;
     for (const auto& v : fine_sums.impulse)
       a += v;
@@ -301,7 +325,7 @@ TEST_CASE("one DEM window's loads on the convex sample at h and h/2: the coarse-
   // One bed, settled and run into the flow once, on the h wall; continued on the h wall
   // (a draw) and on the h/2 wall, whose contacts are also summed over the h wall's faces
   // (the same window on both).
-  const Bed bed = bed_in_flow(p, coarse);
+  const Bed bed = bed_in_flow(p);
   const int n = n_windows * window_revolutions;
   run_revolutions(p, bed, n, coarse);
   const double summation_error = run_fine_on_both(p, bed, n, fine, coarse);

@@ -8,7 +8,7 @@
 //   ranks: the tables' physical columns, the worn surface and the bed equal the
 //   uninterrupted 2-rank run's, bit for bit;
 // - the stopped 2-rank run resumed as one process, and a stopped one-process run resumed on 2
-//   ranks: they finish, say the bed is decomposed again, hold every particle, and the stage
+//   ranks: they finish, say the scene is decomposed again, hold every particle, and the stage
 //   they continue wears within 50 % of the uninterrupted run's: the stage's first part is the
 //   same, the rest another realisation of the flow, and in this small bed one revolution's
 //   wear differs by up to 70 % between realisations (a one-process run against a 2-rank run:
@@ -65,7 +65,7 @@ bool wait_inside_stage_2(pid_t pid, const std::string& out) {
       return false;
     try {
       const Checkpoint c = read_checkpoint(out + "/checkpoint.h5");
-      if (c.open_stage && c.stages_done == 1)
+      if (c.stages_done == 1 && !c.scene.parts.empty() && c.scene.parts[0].open.duration > 0)
         return true;
     } catch (const std::exception&) { // not written yet
     }
@@ -83,9 +83,9 @@ int stop_inside_stage_2(const std::string& dir, int n_ranks, int signal) {
   return wait_for(pid);
 }
 
-/// The wear of each stage (stages.csv, dem_wear_volume_m3).
+/// The wear of each stage (the sample's stages.csv, dem_wear_volume_m3).
 std::vector<double> stage_wear(const std::string& out) {
-  const auto rows = physical_columns(out + "/stages.csv");
+  const auto rows = physical_columns(out + "/parts/sample/stages.csv");
   std::size_t column = 0;
   while (column < rows.at(0).size() && rows[0][column] != "dem_wear_volume_m3")
     ++column;
@@ -100,7 +100,7 @@ std::vector<double> stage_wear(const std::string& out) {
 void check_resumed_elsewhere(const std::string& a, const std::string& dir) {
   const std::string log = file_text(dir + "/resume.log");
   INFO(log);
-  CHECK_THAT(log, Catch::Contains("the bed is decomposed again") &&
+  CHECK_THAT(log, Catch::Contains("decomposed again") &&
                       Catch::Contains("resumed after stage 1 of 3, inside stage 2"));
   const auto ca = read_checkpoint(a + "/checkpoint.h5");
   const auto cb = read_checkpoint(dir + "/out/checkpoint.h5");
@@ -121,7 +121,7 @@ TEST_CASE("wearsim run over 2 ranks: stopped or killed inside a stage and resume
   const std::string a = fresh("run_mpi_a");
   REQUIRE(run_in(a, 2, "", "case.prm", "run.log") == 0);
   INFO(file_text(a + "/run.log"));
-  CHECK_THAT(file_text(a + "/run.log"), Catch::Contains("over 2 MPI rank(s)"));
+  CHECK_THAT(file_text(a + "/run.log"), Catch::Contains("over 2 MPI ranks"));
 
   // SIGTERM: every rank writes its part of a checkpoint and stops; resumed on 2 ranks and, from
   // a copy, as one process.
@@ -132,7 +132,7 @@ TEST_CASE("wearsim run over 2 ranks: stopped or killed inside a stage and resume
   REQUIRE(status > 0);
   CHECK_THAT(stop_log, Catch::Contains("stopped by SIGTERM in stage 2 of 3"));
   const Checkpoint stopped = read_checkpoint(b + "/out/checkpoint.h5", {1, 2});
-  CHECK(stopped.open_stage);
+  CHECK(stopped.scene.parts.at(0).open.duration > 0);
   CHECK(stopped.dem_ranks == 2);
   CHECK(stopped.dem.rank == 1);
   const std::string b1 = "run_mpi_term_on_1";

@@ -356,7 +356,7 @@ TEST_CASE("scene wear loop: stopped by a signal or killed inside a stage, resume
     while (!inside && waitpid(pid, nullptr, WNOHANG) == 0) {
       try {
         const Checkpoint c = read_checkpoint(b + "/checkpoint.h5");
-        inside = c.stages_done == 1 && c.scene && c.scene->n_records > 5;
+        inside = c.stages_done == 1 && c.scene.n_records > 5;
       } catch (const std::exception&) {
       }
       std::this_thread::sleep_for(std::chrono::milliseconds(10));
@@ -383,10 +383,10 @@ TEST_CASE("scene wear loop: stopped by a signal or killed inside a stage, resume
     const auto ca = read_checkpoint(a + "/checkpoint.h5"),
                cb = read_checkpoint(b + "/checkpoint.h5");
     CHECK(cb.stages_done == 3);
-    REQUIRE(ca.scene->parts.size() == 2);
-    REQUIRE(cb.scene->parts.size() == 2);
+    REQUIRE(ca.scene.parts.size() == 2);
+    REQUIRE(cb.scene.parts.size() == 2);
     for (std::size_t i = 0; i < 2; ++i) {
-      const auto &pa = ca.scene->parts[i], &pb = cb.scene->parts[i];
+      const auto &pa = ca.scene.parts[i], &pb = cb.scene.parts[i];
       CHECK(pb.sample.surface.vertices == pa.sample.surface.vertices);
       CHECK(pb.sample.removed_volume == pa.sample.removed_volume);
       CHECK(pb.face_von_mises == pa.face_von_mises);

@@ -53,9 +53,6 @@ TEST_CASE("a tester case through its scene: the sample evaluated per revolution,
     p.coupling.schedule = "1 dem-only, 1 staged";
     p.coupling.revolutions_per_stage = 2;
     p.output.checkpoint_interval = 1e-6;
-    // the scene leaves out the holder's bounding box across the sector from the loose fill,
-    // the built-in tester the frame's own box: the loose bed needs more height
-    p.dem.loose_factor = 3;
     const CaseParameters s = tester_scene_case(p);
     std::ofstream(dir + ".prm") << tester_scene_text(s, "small_tester.h");
     return s;
@@ -67,16 +64,15 @@ TEST_CASE("a tester case through its scene: the sample evaluated per revolution,
   REQUIRE(run_wearsim(a + ".prm", "", a + ".log") == 0);
   INFO(file_text(a + ".log"));
   const Checkpoint ca = read_checkpoint(run_a + "/checkpoint.h5");
-  REQUIRE(ca.scene);
-  REQUIRE(ca.scene->parts.size() == 1);
-  const auto& part = ca.scene->parts[0];
+  REQUIRE(ca.scene.parts.size() == 1);
+  const auto& part = ca.scene.parts[0];
   REQUIRE(part.evaluation);
   const auto& records = part.evaluation->history;
   const double revolution = s.scene.evaluation.period; // 30 deg at 90 deg/s
   CHECK(revolution == Approx(1.0 / 3).epsilon(1e-12));
   REQUIRE(records.size() == 4);
   REQUIRE(part.stages.size() == 2);
-  const double t0 = ca.scene->time - 4 * revolution; // the stages begin after the settling
+  const double t0 = ca.scene.time - 4 * revolution; // the stages begin after the settling
   for (std::size_t k = 0; k < records.size(); ++k) {
     INFO("revolution " << k + 1);
     CHECK(records[k].revolution == int(k) + 1);
@@ -124,7 +120,7 @@ TEST_CASE("a tester case through its scene: the sample evaluated per revolution,
   while (!inside && waitpid(pid, nullptr, WNOHANG) == 0) {
     try {
       const Checkpoint c = read_checkpoint(run_b + "/checkpoint.h5");
-      inside = c.stages_done == 1 && c.scene && c.scene->n_records % 5 == 2;
+      inside = c.stages_done == 1 && c.scene.n_records % 5 == 2;
     } catch (const std::exception&) {
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
@@ -135,13 +131,13 @@ TEST_CASE("a tester case through its scene: the sample evaluated per revolution,
   INFO(file_text(b + ".log"));
   REQUIRE(status == 128 + SIGTERM);
   const Checkpoint stopped = read_checkpoint(run_b + "/checkpoint.h5");
-  REQUIRE(stopped.scene->parts[0].evaluation);
-  if (stopped.scene->parts[0].evaluation->n_windows == 0)
+  REQUIRE(stopped.scene.parts[0].evaluation);
+  if (stopped.scene.parts[0].evaluation->n_windows == 0)
     WARN("the signal came at a revolution's end; the resume below continues from there");
   REQUIRE(run_wearsim(b + ".prm", "--resume", b + ".resumed.log") == 0);
   INFO(file_text(b + ".resumed.log"));
   const Checkpoint cb = read_checkpoint(run_b + "/checkpoint.h5");
-  CHECK(physical(cb.scene->parts[0].evaluation->history) == physical(records));
+  CHECK(physical(cb.scene.parts[0].evaluation->history) == physical(records));
   for (const char* table : {"/parts/sample/summary.csv", "/parts/sample/stages.csv"}) {
     INFO(table);
     CHECK(physical_columns(run_b + table) == physical_columns(run_a + table));

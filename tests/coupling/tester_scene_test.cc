@@ -123,7 +123,7 @@ TEST_CASE("a tester case written by wearsim tester-scene reads back as the same 
   CHECK(q.coupling.amplification == p.coupling.amplification);
   CHECK(q.geometry.sample.mesh_size == p.geometry.sample.mesh_size);
   CHECK(q.geometry.placement.angle_deg == p.geometry.placement.angle_deg);
-  CHECK(q.output.directory == p.output.directory + "-scene");
+  CHECK(q.output.directory == p.output.directory); // `wearsim tester-scene` appends "-scene"
 
   // A reference (node-moving) case keeps its update interval as a scene, the one Deformation
   // entry a scene reads, and only with reference stages.
@@ -146,4 +146,34 @@ TEST_CASE("a tester case written by wearsim tester-scene reads back as the same 
              Contains("Deformation/Update interval") && Contains("no reference stage"));
   std::filesystem::remove(path);
   CHECK_THAT(error_of([&] { coupling::tester_scene_case(q); }), Contains("is a scene already"));
+}
+
+TEST_CASE("wearsim run and wearsim dem run a tester case as its scene", "[tester-scene]") {
+  auto p = coupling::read_case(WEAR_SOURCE_DIR "/cases/sector-30/convex.prm");
+  // run: the tester's schedule and stages, its evaluation, the scene's own walls
+  const auto r = coupling::run_case_of(p);
+  CHECK(r.scene.wall_names == "floor, inner, outer, sample");
+  CHECK(r.coupling.schedule == p.coupling.schedule);
+  CHECK(r.scene.evaluation.wall == "sample");
+  CHECK(coupling::run_case_of(r).scene.wall_names == r.scene.wall_names); // a scene as it is
+  // dem: DEM/Revolutions dem-only stages of one revolution, stopped after steady
+  p.dem.revolutions = 7;
+  p.dem.revolutions_after_steady = 2;
+  const auto d = coupling::dem_case_of(p);
+  CHECK(d.coupling.schedule == "7 dem-only");
+  CHECK(d.scene.stage_duration == Approx(d.scene.evaluation.period).epsilon(1e-15));
+  CHECK(d.scene.evaluation.periods_after_steady == 2);
+  // dem with the node-moving method: reference stages at its amplification
+  p.deformation.enabled = true;
+  p.deformation.amplification = 3;
+  p.deformation.update_interval = 250;
+  const auto m = coupling::dem_case_of(p);
+  CHECK(m.coupling.schedule == "7 reference");
+  CHECK(m.coupling.amplification == 3);
+  CHECK(m.deformation.update_interval == 250);
+  CHECK_FALSE(m.deformation.enabled);
+  // run refuses dem's switch, naming it and where a run's reference stages are
+  CHECK_THAT(error_of([&] { coupling::run_case_of(p); }),
+             Contains("Deformation/Reference method") && Contains("Coupling/Schedule"));
+  CHECK_THAT(error_of([&] { coupling::dem_case_of(r); }), Contains("is a scene"));
 }

@@ -8,7 +8,8 @@
 // in CHANGELOG.md (issue 36 part 4: the 2026-11-24 ensemble; plain 1.88 to 3.34, convex 1.24
 // to 1.70 mm^3 per revolution);
 // the same thread count must agree bit for bit.
-#include "coupling/loop/coupled_run.h"
+#include "coupling/loop/scene_coupled_run.h"
+#include "coupling/parameters/tester_scene_case.h"
 
 #include <catch2/catch.hpp>
 
@@ -34,9 +35,9 @@ QuickRun run_quick(const std::string& kind, int threads) {
   p.output.directory = "threads_" + kind + "_" + std::to_string(threads);
   std::filesystem::remove_all(p.output.directory);
   std::ostringstream log;
-  CoupledRun(p, log, {false, false, 0}).run();
+  SceneCoupledRun(run_case_of(p), log, {false, false, 0}).run();
   QuickRun r;
-  std::ifstream in(p.output.directory + "/summary.csv");
+  std::ifstream in(p.output.directory + "/parts/sample/summary.csv");
   for (std::string row; std::getline(in, row);)
     r.rows.push_back(row);
   REQUIRE(r.rows.size() == 3);

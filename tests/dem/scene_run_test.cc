@@ -3,7 +3,7 @@
 // box through a wall is refused before any particle exists, and a fill to a bed height
 // follows the DEM subsection's Loose factor and Settle time.
 #include "dem/scene/scene_run.h"
-#include "dem/tester/wear_tester.h"
+#include "dem/tester/tester_parameters.h"
 #include "meshes/constants.h"
 #include "meshes/gmsh_session.h"
 #include "scene_fixtures.h"

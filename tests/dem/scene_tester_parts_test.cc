@@ -3,7 +3,7 @@
 // says, with its labels, exact areas and volume; the holder's pocket is the sample's sides
 // and bottom; the fill leaves a submerged part's box and volume out.
 #include "dem/scene/scene_run.h"
-#include "dem/tester/wear_tester.h"
+#include "dem/tester/tester_parameters.h"
 #include "meshes/constants.h"
 #include "meshes/sample_frame.h"
 #include "scene_fixtures.h"
