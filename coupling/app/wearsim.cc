@@ -100,7 +100,8 @@ int main(int argc, char** argv) {
       // otherwise.
       const std::vector<std::string> args(argv + 2, argv + argc);
       RunOptions options;
-      const CaseParameters c = read_case(parse_run_arguments(args, cmd, options));
+      std::ostream unheard(nullptr); // the command reads the case again and warns then
+      const CaseParameters c = read_case(parse_run_arguments(args, cmd, options), unheard);
       const CaseParameters p = cmd == "dem" ? dem_case_of(c) : run_case_of(c);
       wear::dem::MpiRankLink ranks(MPI_COMM_WORLD, wear::dem::rank_ring(p.scene));
       if (cmd == "dem")
