@@ -18,5 +18,5 @@ bash scripts/build.sh
 bash cases/quick/run.sh "$@"
 echo
 echo "report: output/quick/report.md; comparison plot: output/quick/compare.png"
-echo "plots of each run: output/quick/plain/plots/, output/quick/convex/plots/"
-echo "ParaView: output/quick/convex/history.xdmf (sample surface and volume per stage)"
+echo "plots of each run: output/quick/plain/parts/sample/plots/, output/quick/convex/parts/sample/plots/"
+echo "ParaView: output/quick/convex/parts/sample/history.xdmf (sample surface and volume per stage)"

@@ -31,6 +31,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.normpath(os.path.join(HERE, "../.."))
 sys.path.insert(0, os.path.join(REPO, "docs/results"))
 from dem_reference_report import read as read_summary  # noqa: E402
+from dem_reference_report import tables_of as study_tables  # noqa: E402
 import reference_study_report as study  # noqa: E402
 
 STUDY = os.path.join(REPO, "cases/reference-study/results")
@@ -168,7 +169,7 @@ def main():
 
     runs = {k: os.path.join(args.root, k) for k in ("plain", "convex")}
     for d in runs.values():
-        if not os.path.isfile(os.path.join(d, "summary.csv")):
+        if not os.path.isfile(os.path.join(study_tables(d), "summary.csv")):
             fail(f"run folder {d} is missing or holds no summary.csv")
     versions = {engine_version(d) for d in runs.values()}
     if len(versions) != 1:
@@ -178,7 +179,7 @@ def main():
     text, within, off = block(versions.pop(), args.seconds, args.first, plain, convex, compare)
     with open(os.path.join(args.root, "report.md.tmp"), "w") as f:
         f.write("# The default case: plain vs convex in the study's set-up at s = 7\n\n" + text +
-                "\nPlot: compare.png. Each run: plain/, convex/ (summary.csv, stages.csv, "
+                "\nPlot: compare.png. Each run: plain/, convex/ (parts/sample/: summary.csv, stages.csv, "
                 "history.xdmf, plots/).\n")
     os.replace(os.path.join(args.root, "report.md.tmp"), os.path.join(args.root, "report.md"))
     print(text)

@@ -448,6 +448,15 @@ def plot_compare(side_a, side_b, out, first=0):
     save(fig, os.path.join(out, "compare.png"))
 
 
+def tables_of(run):
+    """Where a run's tables are: the run folder itself, or, for the wear tester as a scene
+    (`wearsim run` on a tester case), the folder of the one part it evaluates, parts/<part>/."""
+    if os.path.isfile(os.path.join(run, "summary.csv")):
+        return run
+    parts = sorted(glob.glob(os.path.join(run, "parts", "*", "summary.csv")))
+    return os.path.dirname(parts[0]) if len(parts) == 1 else run
+
+
 def main():
     # "--" separates the sides of --compare; argparse would swallow it, so it becomes "::".
     argv = ["::" if a == "--" else a for a in sys.argv[1:]]
@@ -463,6 +472,7 @@ def main():
                     help="test hours one simulated revolution stands for (wear_out.png); "
                          "the reference study's alpha: 2 revolutions = 56 h")
     args = ap.parse_intermixed_args(argv)
+    args.runs = [a if a == "::" else tables_of(a) for a in args.runs]
     side_b = []
     if "::" in args.runs:
         k = args.runs.index("::")

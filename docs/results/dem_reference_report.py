@@ -9,6 +9,7 @@ run's own judgement; when a run never judged itself steady, from its 'steady_fro
 (the revolution after which the fits start, reported in the table).
 """
 import csv
+import glob
 import math
 import os
 import sys
@@ -19,10 +20,19 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 
+def tables_of(run):
+    """Where a run's tables are: the run folder itself, or, for the wear tester as a scene
+    (`wearsim run` on a tester case), the folder of the one part it evaluates, parts/<part>/."""
+    if os.path.isfile(os.path.join(run, "summary.csv")):
+        return run
+    parts = sorted(glob.glob(os.path.join(run, "parts", "*", "summary.csv")))
+    return os.path.dirname(parts[0]) if len(parts) == 1 else run
+
+
 def read(run):
     """The revolutions of a run's summary.csv, numbers as floats; stops the calling report
     with a message when the file is missing or holds no revolution yet."""
-    path = os.path.join(run, "summary.csv")
+    path = os.path.join(tables_of(run), "summary.csv")
     prog = os.path.basename(sys.argv[0])
     if not os.path.isfile(path):
         sys.exit(f"{prog}: '{path}' does not exist (is '{run}' a finished run?)")
