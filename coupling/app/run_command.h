@@ -15,8 +15,9 @@ namespace wear::coupling {
 std::string parse_run_arguments(const std::vector<std::string>& args, const std::string& command,
                                 RunOptions& options);
 
-/// Runs (or resumes) scene case `scene_case` (run_case_of, dem_case_of) through the one loop,
-/// SceneCoupledRun; returns the exit code. Over ranks each rank's FEM keeps to DEM/Threads.
+/// Runs (or resumes) scene case `scene_case` (run_case_of, dem_case_of, scene-run's) through the
+/// one loop, SceneCoupledRun; returns the exit code. Over ranks each rank's FEM keeps to
+/// DEM/Threads.
 int run_scene_case(const CaseParameters& scene_case, std::ostream& log, const RunOptions& options);
 
 /// `wearsim run`: the case as a scene (a wear-tester case written as one by tester_scene_case);

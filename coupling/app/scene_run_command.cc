@@ -5,7 +5,6 @@
 #include "coupling/app/scene_run_command.h"
 
 #include "coupling/app/run_command.h"
-#include "coupling/loop/scene_coupled_run.h"
 
 #include <ostream>
 #include <stdexcept>
@@ -21,7 +20,7 @@ int run_scene_run_command(const std::vector<std::string>& args, std::ostream& lo
   if (p.scene.walls.empty())
     throw std::invalid_argument("case file '" + p.case_file +
                                 "': Scene/Walls is empty: there is no scene to run");
-  return SceneCoupledRun(p, log, options).run();
+  return run_scene_case(p, log, options);
 }
 
 } // namespace wear::coupling

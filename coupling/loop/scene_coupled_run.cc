@@ -109,8 +109,7 @@ int SceneCoupledRun::run() {
       log_ << "stopped by " << StopSignals::name(signal) << " in stage " << r.stage << " of "
            << plan_.size() << " at t = " << scene_->time() << " s";
       if (scene_->system().n_rebuilds() > 0 && p_.coupling.checkpoints)
-        log_ << " after a checkpoint; continue with wearsim run --resume " << p_.case_file
-             << "\n";
+        log_ << " after a checkpoint; continue with wearsim run --resume " << p_.case_file << "\n";
       else // nothing was checkpointed: no particle yet, or checkpoints off
         log_ << " without a checkpoint (no particle yet, or Coupling/Checkpoints off); run it "
                 "again with --overwrite\n";
@@ -123,7 +122,7 @@ int SceneCoupledRun::run() {
            << "; the run stops here, as the reference study's did\n";
       break;
     }
-    checkpoint({zero_loads(), scene_->time() + p_.scene.stage_duration});
+    checkpoint(next_stage());
     if (const std::string steady = steady_stop(); !steady.empty()) {
       log_ << steady << "\n";
       break;
@@ -176,8 +175,7 @@ std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::setup() {
         std::make_unique<SceneSeries>(p_.output.directory, *scene_, p_.scene.particle_snapshots);
   replaced_ = replaced;
   // The settled bed, before any stage: a run stopped in its first stage does not fill again.
-  checkpoint({zero_loads(),
-              parts_.empty() ? p_.scene.end_time : scene_->time() + p_.scene.stage_duration});
+  checkpoint(next_stage());
   return std::nullopt;
 }
 
@@ -234,6 +232,11 @@ void SceneCoupledRun::record(const dem::SceneWindow& w) {
     series_->add(w, *scene_, all);
 }
 
+SceneCoupledRun::OpenSceneStage SceneCoupledRun::next_stage() const {
+  return {zero_loads(),
+          parts_.empty() ? p_.scene.end_time : scene_->time() + p_.scene.stage_duration};
+}
+
 std::vector<dem::WallLoads> SceneCoupledRun::zero_loads() const {
   std::vector<dem::WallLoads> loads;
   for (const auto& part : parts_)
@@ -253,11 +256,7 @@ std::optional<std::vector<dem::WallLoads>>
 SceneCoupledRun::run_dem(StageRecord& r, std::optional<OpenSceneStage> open,
                          const StopSignals& signals) {
   const meshes::Stopwatch clock;
-  OpenSceneStage stage =
-      open
-          ? std::move(*open)
-          : OpenSceneStage{zero_loads(), parts_.empty() ? p_.scene.end_time
-                                                        : scene_->time() + p_.scene.stage_duration};
+  OpenSceneStage stage = open ? std::move(*open) : next_stage();
   const double every = p_.scene.output_interval;
   const double interval = p_.output.checkpoint_interval;
   meshes::Stopwatch since_checkpoint;

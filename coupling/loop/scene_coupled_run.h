@@ -70,6 +70,9 @@ private:
   std::string steady_stop() const;
   /// Writes checkpoint.h5 (the one before kept); `open`: the stage in progress.
   void checkpoint(const OpenSceneStage& open);
+  /// The stage that begins now: no loads yet, ending a stage duration on (without wearing
+  /// parts: the run's one stage, ending at End time).
+  OpenSceneStage next_stage() const;
   /// The loads a stage starts from: zero on each part's faces.
   std::vector<dem::WallLoads> zero_loads() const;
   /// The window's record on rank 0 (over ranks the particles of a snapshot gathered there).

@@ -21,6 +21,13 @@ std::string scene_wall_path(const SceneWallParameters& w) {
   return "Scene/Wall " + w.name;
 }
 
+std::optional<std::size_t> scene_wall_index(const SceneParameters& s, const std::string& name) {
+  for (std::size_t k = 0; k < s.walls.size(); ++k)
+    if (s.walls[k].name == name)
+      return k;
+  return std::nullopt;
+}
+
 meshes::Vec3 scene_vector(const std::vector<double>& v) {
   return {v.at(0), v.at(1), v.at(2)};
 }
@@ -174,12 +181,12 @@ void validate_evaluation(const SceneParameters& s) {
                                   "them out)");
     return;
   }
-  const auto w = std::find_if(s.walls.begin(), s.walls.end(),
-                              [&](const SceneWallParameters& x) { return x.name == e.wall; });
-  if (w == s.walls.end())
+  const auto k = scene_wall_index(s, e.wall);
+  if (!k)
     throw std::invalid_argument("Scene/Evaluation/Wall: '" + e.wall +
                                 "' is not a wall of Scene/Walls");
-  if (wall_source_of(*w).source != WallSource::sample || !w->wears)
+  const SceneWallParameters& w = s.walls[*k];
+  if (wall_source_of(w).source != WallSource::sample || !w.wears)
     throw std::invalid_argument("Scene/Evaluation/Wall: '" + e.wall +
                                 "' is not the tester's sample; the evaluation's columns and "
                                 "elements are the sample's (Source = sample, Wears = true)");
@@ -363,8 +370,7 @@ void validate(const SceneParameters& s) {
       throw std::invalid_argument("Scene/Fill/Mesh size must be positive [m]");
   }
   for (const auto& name : scene_names(s.fill.clear_above, "Scene/Fill/Clear above"))
-    if (std::none_of(s.walls.begin(), s.walls.end(),
-                     [&](const SceneWallParameters& w) { return w.name == name; }))
+    if (!scene_wall_index(s, name))
       throw std::invalid_argument("Scene/Fill/Clear above: '" + name +
                                   "' is not a wall of Scene/Walls");
   if (s.fill.region != "none" && s.fill.count == 0 && !(s.fill.bed_height > 0))

@@ -12,6 +12,7 @@
 #include "meshes/parameter_visitor.h"
 #include "meshes/vec3.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -395,6 +396,8 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
 
 /// "Scene/Wall <name>": how messages name a wall's parameters.
 std::string scene_wall_path(const SceneWallParameters& w);
+/// The index of the wall named `name` in s.walls, or none.
+std::optional<std::size_t> scene_wall_index(const SceneParameters& s, const std::string& name);
 /// The three values of a checked list (x, y, z) as a vector.
 meshes::Vec3 scene_vector(const std::vector<double>& v);
 

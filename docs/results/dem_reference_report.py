@@ -3,13 +3,12 @@
 
 Usage: /usr/bin/python3 docs/results/dem_reference_report.py <plain_run> <convex_run> [out_dir]
 
-Reads summary.csv of both `wearsim dem` runs and writes, into out_dir (default docs/results):
+Reads summary.csv of both `wearsim dem` runs (their sample's, parts/sample/) and writes, into out_dir (default docs/results):
 dem-reference.md (tables) and dem_reference_*.png (plots). Steady state is taken from each
 run's own judgement; when a run never judged itself steady, from its 'steady_from' fallback
 (the revolution after which the fits start, reported in the table).
 """
 import csv
-import glob
 import math
 import os
 import sys
@@ -19,14 +18,9 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-
-def tables_of(run):
-    """Where a run's tables are: the run folder itself, or, for the wear tester as a scene
-    (`wearsim run` on a tester case), the folder of the one part it evaluates, parts/<part>/."""
-    if os.path.isfile(os.path.join(run, "summary.csv")):
-        return run
-    parts = sorted(glob.glob(os.path.join(run, "parts", "*", "summary.csv")))
-    return os.path.dirname(parts[0]) if len(parts) == 1 else run
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
+                                "coupling", "output"))
+from plot_run import tables_of  # noqa: E402  (where a run's tables are)
 
 
 def read(run):

@@ -36,14 +36,6 @@ struct Window {
   int holder_wall = -1;       ///< the holder's wall number
 };
 
-/// The index of the scene's wall named `name`, -1 if none.
-int wall_index(const dem::SceneParameters& scene, const std::string& name) {
-  for (std::size_t k = 0; k < scene.walls.size(); ++k)
-    if (scene.walls[k].name == name)
-      return int(k);
-  return -1;
-}
-
 Window settled_window(bool holder) {
   auto p = small_tester_case("holder_test", false);
   p.geometry.tester.holder = holder;
@@ -53,8 +45,9 @@ Window settled_window(bool holder) {
   const double revolution = p.geometry.tester.sector_angle_deg / p.dem.rotation_rate_deg; // [s]
   const dem::SceneWindow turned = scene.advance(scene.time() + revolution);
   Window w;
-  w.holder_wall = wall_index(c.scene, "holder");
-  const auto sample_wall = std::size_t(wall_index(c.scene, "sample"));
+  const auto holder_wall = dem::scene_wall_index(c.scene, "holder");
+  w.holder_wall = holder_wall ? int(*holder_wall) : -1;
+  const std::size_t sample_wall = dem::scene_wall_index(c.scene, "sample").value();
   const auto law = dem::make_wear_law(c.wear_law);
   const auto loads = scene.wall_loads(sample_wall, *law, turned);
   const auto& labels = scene.walls()[sample_wall].surface.mesh.face_labels;

@@ -104,11 +104,8 @@ struct TesterScene {
   std::size_t sample = 0;
   double revolution = 0; ///< [s]
   explicit TesterScene(const coupling::CaseParameters& p)
-      : c(coupling::tester_scene_case(p)),
-        revolution(p.geometry.tester.sector_angle_deg / p.dem.rotation_rate_deg) {
-    while (c.scene.walls.at(sample).name != "sample")
-      ++sample;
-  }
+      : c(coupling::tester_scene_case(p)), sample(dem::scene_wall_index(c.scene, "sample").value()),
+        revolution(p.geometry.tester.sector_angle_deg / p.dem.rotation_rate_deg) {}
   std::unique_ptr<dem::SceneRun> build() const {
     return std::make_unique<dem::SceneRun>(c.scene, c.dem,
                                            dem::build_scene_walls(c.scene, c.geometry));
@@ -146,8 +143,8 @@ void run_revolutions(const coupling::CaseParameters& p, const Bed& bed, int n, M
   scene->resume(bed.state);
   // The bed settled against the h surface; the h/2 one lies off it by the chord error of the
   // curved elements: particles it overlaps are moved out first, as after a remesh.
-  const auto pushed = scene->replace_wall_surface(
-      t.sample, frame_of(p).place_in_tester(m.surface), t.c.coupling.push_tolerance);
+  const auto pushed = scene->replace_wall_surface(t.sample, frame_of(p).place_in_tester(m.surface),
+                                                  t.c.coupling.push_tolerance);
   std::printf("DEM on the %.2g mm wall: %d particles pushed out, at most %.3g mm\n", m.h * 1e3,
               pushed.n_pushed, pushed.max_distance * 1e3);
   const auto law = dem::make_wear_law(t.c.wear_law);
@@ -201,21 +198,21 @@ double run_fine_on_both(const coupling::CaseParameters& p, const Bed& bed, int n
   const TesterScene t(p);
   const auto law = dem::make_wear_law(t.c.wear_law);
   const auto spreading = dem::load_spreading(t.c.dem.wall_loads, t.c.dem.psd);
-  run_revolutions(p, bed, n, fine,
-                  [&](const dem::SceneRun& s, const dem::SceneWindow& w, std::size_t k) {
-    const auto& fine_sums = w.wearing.at(k);
-    const auto sums = summed_on(fine_sums, s.walls()[k].surface.mesh, coarse_placed, locator);
-    coarse.same_contacts.push_back(
-        dem::wall_loads(sums, law->removed_volume(sums), coarse_placed, w.integrated, spreading)
-            .follow(coarse.sample->surface(), to_sample(p)));
-    meshes::Vec3 a, b;
-    for (const auto& v : fine_sums.impulse)
-      a += v;
-    for (const auto& v : sums.impulse)
-      b += v;
-    fine_impulse += norm(a);
-    summed_impulse += norm(b);
-  });
+  run_revolutions(
+      p, bed, n, fine, [&](const dem::SceneRun& s, const dem::SceneWindow& w, std::size_t k) {
+        const auto& fine_sums = w.wearing.at(k);
+        const auto sums = summed_on(fine_sums, s.walls()[k].surface.mesh, coarse_placed, locator);
+        coarse.same_contacts.push_back(
+            dem::wall_loads(sums, law->removed_volume(sums), coarse_placed, w.integrated, spreading)
+                .follow(coarse.sample->surface(), to_sample(p)));
+        meshes::Vec3 a, b;
+        for (const auto& v : fine_sums.impulse)
+          a += v;
+        for (const auto& v : sums.impulse)
+          b += v;
+        fine_impulse += norm(a);
+        summed_impulse += norm(b);
+      });
   return summed_impulse / fine_impulse - 1;
 }
 

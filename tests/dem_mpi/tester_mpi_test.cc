@@ -41,14 +41,13 @@ struct SmallTester {
     geometry.tester.consolidator = false;
     geometry.tester.wall_height = 0.2;
     dem.fill_height = 0.055;
-    dem.loose_factor = 3; // the scene fill leaves the holder's bounding box out (small_tester.h)
+    dem.loose_factor = 3;   // the scene fill leaves the holder's bounding box out (small_tester.h)
     dem.settle_time = 0.05; // the settling stops at its first check past it, t = 0.06 s
     dem.time_step_fraction = 0.35;
     dem.samples_per_revolution = 5;
     dem.n_threads = 1;
     scene = tester_scene(geometry, dem, 1);
-    while (scene.walls.at(sample_wall).name != "sample")
-      ++sample_wall;
+    sample_wall = scene_wall_index(scene, "sample").value();
   }
   std::unique_ptr<SceneRun> start(RankLink* link) const {
     auto run = std::make_unique<SceneRun>(scene, dem, build_scene_walls(scene, geometry));
