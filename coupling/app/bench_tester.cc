@@ -63,8 +63,8 @@ TesterWorkload tester_workload(const TesterBenchOptions& o, bool settle, int thr
     p.dem.settle_time = 1e-12;
   const CaseParameters c = tester_scene_case(p);
   TesterWorkload w;
-  w.revolution_time = p.geometry.tester.sector_angle_deg * pi / 180 /
-                      (p.dem.rotation_rate_deg * pi / 180);
+  w.revolution_time =
+      p.geometry.tester.sector_angle_deg * pi / 180 / (p.dem.rotation_rate_deg * pi / 180);
   std::vector<dem::SceneWall> walls = dem::build_scene_walls(c.scene, c.geometry);
   out << format("workload tester: %s, as a scene of %zu walls\n", case_name(o, p).c_str(),
                 walls.size())

@@ -36,8 +36,7 @@ std::string parse_run_arguments(const std::vector<std::string>& args, const std:
   return case_file;
 }
 
-int run_scene_case(const CaseParameters& scene_case, std::ostream& log,
-                   const RunOptions& options) {
+int run_scene_case(const CaseParameters& scene_case, std::ostream& log, const RunOptions& options) {
   // Over ranks each rank's FEM stage keeps to the rank's own threads (DEM/Threads), not all of
   // the node's cores.
   if (options.ranks && scene_case.dem.n_threads > 0)

@@ -14,8 +14,8 @@ namespace wear::coupling {
 namespace {
 
 bool holds_run(const std::string& dir) {
-  for (const char* f : {"scene_series.csv", "stages.csv", "summary.csv", "checkpoint.h5",
-                        "checkpoint.previous.h5"})
+  for (const char* f :
+       {"scene_series.csv", "stages.csv", "summary.csv", "checkpoint.h5", "checkpoint.previous.h5"})
     if (std::filesystem::exists(dir + "/" + f))
       return true;
   return false;

@@ -209,10 +209,9 @@ void WearingPart::run_stage(
     const auto& d = increment.declared_depth;
     log << format("stage %d, part '%s': amplification %g -> %.4g: at %g it would recede vertex "
                   "%ld (%s) by %.3g mm, %.3g of its longest edge (Maximum depth fraction %g)\n",
-                  r.stage, name_.c_str(), increment.declared_amplification,
-                  increment.amplification, increment.declared_amplification, d.vertex,
-                  meshes::label::name(d.label).c_str(), 1e3 * d.depth_there, d.max_fraction,
-                  p.coupling.max_depth_fraction);
+                  r.stage, name_.c_str(), increment.declared_amplification, increment.amplification,
+                  increment.declared_amplification, d.vertex, meshes::label::name(d.label).c_str(),
+                  1e3 * d.depth_there, d.max_fraction, p.coupling.max_depth_fraction);
   }
   record_increment(increment, stages_.empty() ? 0.0 : stages_.back().cumulative_applied, p.coupling,
                    r);
@@ -379,8 +378,7 @@ void WearingPart::record_stage(StageRecord r, const StageChange& change, std::os
                   "clamped bottom (FEM/Worn-through thickness); the %.4g mm^3 asked of them is "
                   "not removed (stages.csv: worn_through_volume_m3)\n",
                   r.stage, name_.c_str(), r.n_worn_through,
-                  sample_->parameters().worn_through_thickness * 1e3,
-                  r.worn_through_volume * 1e9);
+                  sample_->parameters().worn_through_thickness * 1e3, r.worn_through_volume * 1e9);
 }
 
 std::string WearingPart::summary_text() const {
@@ -406,8 +404,9 @@ std::string WearingPart::summary_text() const {
     text += format("  remeshes: %d, %d of them (%.0f %%) at gmsh's first attempt\n", n_remeshes,
                    n_first, 100.0 * n_first / n_remeshes);
   if (worn_through > 0)
-    text += format("  worn through: %.4g mm^3 of the %.4g mm^3 asked was not removed\n",
-                   worn_through * 1e9, stages_.empty() ? 0.0 : stages_.back().cumulative_applied * 1e9);
+    text +=
+        format("  worn through: %.4g mm^3 of the %.4g mm^3 asked was not removed\n",
+               worn_through * 1e9, stages_.empty() ? 0.0 : stages_.back().cumulative_applied * 1e9);
   return text;
 }
 

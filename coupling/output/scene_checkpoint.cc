@@ -124,8 +124,7 @@ PartCheckpoint read_part(const Hdf5Reader& h5, const std::string& g) {
 
 } // namespace
 
-SceneCheckpoint scene_checkpoint(const dem::SceneRunState& state, double stage_end,
-                                 int n_records) {
+SceneCheckpoint scene_checkpoint(const dem::SceneRunState& state, double stage_end, int n_records) {
   SceneCheckpoint s;
   s.time = state.time;
   s.stage_end = stage_end;
@@ -141,8 +140,8 @@ SceneCheckpoint scene_checkpoint(const dem::SceneRunState& state, double stage_e
 }
 
 dem::SceneRunState scene_run_state(const SceneCheckpoint& s, const dem::SystemState& system) {
-  return {s.time,          true,           system,        s.n_removed,   s.inlets,
-          s.outlet_mass,   s.outlet_counts, s.flux_planes, s.rank_bounds, s.node_moves};
+  return {s.time,          true,          system,        s.n_removed, s.inlets, s.outlet_mass,
+          s.outlet_counts, s.flux_planes, s.rank_bounds, s.node_moves};
 }
 
 void write_scene(Hdf5File& h5, const SceneCheckpoint& s) {

@@ -18,7 +18,8 @@ CaseParameters tester_scene_case(const CaseParameters& tester) {
                                 "' is a scene already (Scene/Walls = " + tester.scene.wall_names +
                                 "); `wearsim tester-scene` writes a wear-tester case as a scene");
   const dem::ReferenceDeformationParameters deformation_defaults;
-  if (tester.deformation.enabled || tester.deformation.amplification != deformation_defaults.amplification)
+  if (tester.deformation.enabled ||
+      tester.deformation.amplification != deformation_defaults.amplification)
     throw std::invalid_argument("Deformation/Reference method and Deformation/Amplification: "
                                 "`wearsim dem`'s switch to the node-moving method; a run's "
                                 "reference stages are Coupling/Schedule's (for example "

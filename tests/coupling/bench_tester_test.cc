@@ -1,8 +1,8 @@
 // The tester workload of `wearsim bench dem` builds its reference case in code; it must be
 // the case of cases/reference (all but the run length and the output folder), so the bench
-// times what `wearsim run cases/reference/convex.prm` runs (the tester as a scene). Its options replace the case's
-// values, and bad values stop the command naming the option before anything is built. A bed
-// state written with --state is continued from the file instead of being filled again.
+// times what `wearsim run cases/reference/convex.prm` runs (the tester as a scene). Its options
+// replace the case's values, and bad values stop the command naming the option before anything is
+// built. A bed state written with --state is continued from the file instead of being filled again.
 #include "coupling/app/bench_command.h"
 #include "coupling/app/bench_tester.h"
 #include "small_tester.h"

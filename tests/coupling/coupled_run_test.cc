@@ -10,9 +10,9 @@
 // limit and checks that the staged scheme goes on to three times that wear depth.
 #include "coupling/app/compare_command.h"
 #include "coupling/loop/scene_coupled_run.h"
-#include "coupling/parameters/tester_scene_case.h"
 #include "coupling/output/checkpoint.h"
 #include "coupling/output/hdf5_file.h"
+#include "coupling/parameters/tester_scene_case.h"
 #include "small_tester.h"
 
 #include <catch2/catch.hpp>

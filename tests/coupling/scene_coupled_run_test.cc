@@ -367,8 +367,7 @@ TEST_CASE("scene wear loop: stopped by a signal or killed inside a stage, resume
     const int status = wait_for(pid);
     INFO(file_text(b + ".log"));
     if (signal == SIGTERM && status == 128 + SIGTERM)
-      CHECK_THAT(file_text(b + ".log"),
-                 Catch::Contains("continue with wearsim run --resume"));
+      CHECK_THAT(file_text(b + ".log"), Catch::Contains("continue with wearsim run --resume"));
     else if (status == 0)
       WARN("the run ended before the signal came; its resume below has nothing left to do");
     REQUIRE(run_wearsim(b + ".prm", "--resume", b + ".resumed.log", "scene-run") == 0);

@@ -4,8 +4,8 @@
 // - stopped by SIGTERM at a random moment inside the DEM part of stage 2: it writes a
 //   checkpoint, says how to resume and exits with 128 + 15;
 // - killed by SIGKILL at a random moment inside stage 2 (after an in-stage checkpoint);
-// and each, resumed with --resume, ends with the sample's stages.csv and summary.csv identical to the
-// uninterrupted run in every physical column (wall-clock columns left out) and the same final
+// and each, resumed with --resume, ends with the sample's stages.csv and summary.csv identical to
+// the uninterrupted run in every physical column (wall-clock columns left out) and the same final
 // surface and volume mesh, bit for bit. The random moment is printed (Catch's seed decides it).
 // Also: the checkpoint a write replaces is kept, and a damaged latest checkpoint falls back to
 // it with a warning; a folder holding a run is refused without --resume or --overwrite, and
