@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
-"""Compares two run folders' summary.csv and stages.csv column by column, as text, leaving
-out the wall-clock columns (which differ between any two runs). Exits 1 on any difference.
+"""Compares two run folders' tables column by column, as text, leaving out the wall-clock
+columns (which differ between any two runs): summary.csv and stages.csv (a tester case's are
+its part's, parts/sample/) and, when both runs have it, scene_series.csv. Exits 1 on any
+difference.
 
     python3 scripts/compare_physical_columns.py RUN_A RUN_B
 
@@ -9,7 +11,11 @@ print 10 significant digits; the DEM is chaotic, so a change of rounding anywher
 loop shows up in them within a revolution).
 """
 import csv
+import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "coupling", "output"))
+from run_tables import tables_of  # noqa: E402  (where a run's tables are)
 
 WALL_CLOCK = {"wall_seconds", "particle_steps_per_s", "dem_s", "wear_s", "fem_solve_s",
               "mesh_motion_s", "remesh_s", "output_s"}
@@ -49,9 +55,13 @@ def compare(a, b):
 def main():
     if len(sys.argv) != 3:
         sys.exit(__doc__)
+    a, b = sys.argv[1:]
     status = 0
     for name in ("summary.csv", "stages.csv"):
-        status |= compare(f"{sys.argv[1]}/{name}", f"{sys.argv[2]}/{name}")
+        status |= compare(os.path.join(tables_of(a), name), os.path.join(tables_of(b), name))
+    series = [os.path.join(run, "scene_series.csv") for run in (a, b)]
+    if all(os.path.isfile(f) for f in series):
+        status |= compare(*series)
     return status
 
 

@@ -3,7 +3,7 @@
 
 Usage: /usr/bin/python3 cases/mesh-size/mesh_size_report.py <run> [<run> ...]
 
-Reads each run's summary.csv (`wearsim run` or `wearsim dem`) and prints a Markdown table:
+Reads each run's summary.csv (parts/sample/ of a `wearsim run` or `wearsim dem` folder) and prints a Markdown table:
 the mean over the revolutions after steady state of the wear-face wear, its per-column
 wear, the mean wear increment per convex element and the normal force, each with its
 standard error over those revolutions (std / sqrt(n)), and every run's ratio to the first.

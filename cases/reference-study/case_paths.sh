@@ -30,18 +30,21 @@ running_dir() { # <case>: its unfinished run's kept checkpoint (keep_running.sh)
   echo "$(dirname "$(case_file "$1")")/running/$(run_name "$1")"
 }
 
-holds_run() { # <folder>: whether a run has written its tables or a checkpoint there (as wearsim)
+holds_run() { # <folder>: whether a run has written its tables or a checkpoint there (as wearsim
+  # judges it: coupling/loop/run_folder.cc)
   local f
-  for f in stages.csv summary.csv checkpoint.h5 checkpoint.previous.h5; do
-    [ -f "$1/$f" ] && return 0
+  for f in "$1"/{stages.csv,summary.csv,scene_series.csv,checkpoint.h5,checkpoint.previous.h5} \
+    "$1"/parts/*/{stages.csv,summary.csv}; do
+    [ -f "$f" ] && return 0
   done
   return 1
 }
 
 summarise() { # <case>: its run's summary written from its output folder, when that has tables
+  # (a tester case's are its part's, parts/sample/)
   local out
   out=$(out_dir "$1")
-  [ -f "$out/summary.csv" ] || return 0
+  [ -f "$out/summary.csv" ] || [ -f "$out/parts/sample/summary.csv" ] || return 0
   /usr/bin/python3 docs/results/run_summary.py "$out" "$(summary_dir "$1")"
 }
 
@@ -62,10 +65,11 @@ restore_running() { # <case>: its kept checkpoint into its output folder when th
   /usr/bin/python3 - "$keep/index" "$out" <<'EOF' || { echo "restore: cannot write the index stubs into $out" >&2; return 2; }
 import os, sys, h5py, numpy
 index, out = sys.argv[1:]
-for name in sorted(os.listdir(index)):  # <kind>_stage_NNNN.xml: the entry of <kind>/stage_NNNN.h5
-    kind, stage = name[:-4].split("_", 1)
-    os.makedirs(os.path.join(out, kind), exist_ok=True)
-    with open(os.path.join(index, name), "rb") as f, h5py.File(os.path.join(out, kind, stage + ".h5"), "w") as h:
+for name in sorted(os.listdir(index)):  # <folder>_stage_NNNN.xml: the entry of <folder>/stage_NNNN.h5
+    folder, stage = name[:-4].rsplit("_stage_", 1)
+    folder = os.path.join(out, *folder.split("+"))
+    os.makedirs(folder, exist_ok=True)
+    with open(os.path.join(index, name), "rb") as f, h5py.File(os.path.join(folder, f"stage_{stage}.h5"), "w") as h:
         h.attrs["xdmf"] = numpy.bytes_(f.read())  # a fixed-length string, as wearsim writes it
 EOF
   xz -dc "$keep/checkpoint.h5.xz" > "$out/checkpoint.h5.tmp" && mv "$out/checkpoint.h5.tmp" "$out/checkpoint.h5" ||

@@ -7,10 +7,11 @@
 #                      histories, the worn sample (its surface, its tetrahedra and the wear
 #                      fields on it), the per-face stress of the last stage and every
 #                      revolution and stage record
-#   index/<kind>_stage_NNNN.xml
+#   index/<folder>_stage_NNNN.xml
 #                      the index entry (the "xdmf" attribute) of each surface/ and volume/
-#                      stage file: the one thing a resume reads of them (it re-lists every
-#                      stage in history.xdmf); run.sh writes them back as stub files
+#                      stage file of each part (<folder> its folder in the run, "/" as "+":
+#                      parts+sample+surface): the one thing a resume reads of them (it
+#                      re-lists every stage in history.xdmf); run.sh writes them back as stubs
 #   parameters.prm     the run's resolved parameters (its engine version and schedule)
 #   kept.txt           one line: the stages done of those planned, the engine, when kept
 # Nothing else: no volume or surface fields, no VTU, no history.h5, summary.csv or stages.csv
@@ -42,19 +43,22 @@ print(done, sum(int(n) for n in re.findall(r"\d+", schedule.group(1))) if schedu
 EOF
 }
 
-index_entries() { # <run folder> <index folder>: each stage file's index entry as text
+index_entries() { # <run folder> <index folder>: each stage file's index entry as text, named
+  # after its folder in the run ("/" as "+": parts+sample+surface_stage_0001.xml for a part's)
   /usr/bin/python3 - "$1" "$2" <<'EOF'
-import os, sys, h5py
+import glob, os, sys, h5py
 run, index = sys.argv[1:]
 os.makedirs(index)
-for kind in ("surface", "volume"):
-    d = os.path.join(run, kind)
-    for name in sorted(os.listdir(d)) if os.path.isdir(d) else []:
-        if name.startswith("stage_") and name.endswith(".h5"):
-            with h5py.File(os.path.join(d, name), "r") as h:
-                entry = h.attrs["xdmf"]
-            with open(os.path.join(index, f"{kind}_{name[:-3]}.xml"), "wb") as f:
-                f.write(entry if isinstance(entry, bytes) else str(entry).encode())
+for base in [run] + sorted(glob.glob(os.path.join(run, "parts", "*"))):
+    for kind in ("surface", "volume"):
+        d = os.path.join(base, kind)
+        prefix = os.path.relpath(d, run).replace(os.sep, "+")
+        for name in sorted(os.listdir(d)) if os.path.isdir(d) else []:
+            if name.startswith("stage_") and name.endswith(".h5"):
+                with h5py.File(os.path.join(d, name), "r") as h:
+                    entry = h.attrs["xdmf"]
+                with open(os.path.join(index, f"{prefix}_{name[:-3]}.xml"), "wb") as f:
+                    f.write(entry if isinstance(entry, bytes) else str(entry).encode())
 EOF
 }
 

@@ -30,6 +30,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+from run_tables import tables_of  # noqa: E402  (where a run's tables are: parts/sample/ of a tester run)
 
 
 def read_csv(path):
@@ -446,15 +447,6 @@ def plot_compare(side_a, side_b, out, first=0):
         ax.legend(fontsize=7)
         ax.grid(alpha=0.3)
     save(fig, os.path.join(out, "compare.png"))
-
-
-def tables_of(run):
-    """Where a run's tables are: the run folder itself, or, for the wear tester as a scene
-    (`wearsim run` on a tester case), the folder of the one part it evaluates, parts/<part>/."""
-    if os.path.isfile(os.path.join(run, "summary.csv")):
-        return run
-    parts = sorted(glob.glob(os.path.join(run, "parts", "*", "summary.csv")))
-    return os.path.dirname(parts[0]) if len(parts) == 1 else run
 
 
 def main():

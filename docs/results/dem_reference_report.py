@@ -20,7 +20,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
                                 "coupling", "output"))
-from plot_run import tables_of  # noqa: E402  (where a run's tables are)
+from run_tables import tables_of  # noqa: E402  (where a run's tables are)
 
 
 def read(run):

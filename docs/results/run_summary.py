@@ -39,6 +39,10 @@ import sys
 
 import numpy as np
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
+                                "coupling", "output"))
+from run_tables import run_file  # noqa: E402  (a run's file: its part's tables or the run folder's)
+
 PROG = os.path.basename(sys.argv[0])
 COPIED = ("parameters.prm", "summary.csv", "stages.csv", "calibration.prm")
 MAP_UNIT = 1e-5  # [m] the map's centroids are written to 10 um (far below a pixel of the plot)
@@ -51,7 +55,7 @@ def fail(message):
 
 def count_revolutions(folder):
     """The rows of <folder>/summary.csv (0 when it is missing or holds only its header)."""
-    path = os.path.join(folder, "summary.csv")
+    path = run_file(folder, "summary.csv")
     if not os.path.isfile(path):
         return 0
     with open(path) as f:
@@ -78,7 +82,7 @@ def revolutions_text(run):
     `wearsim dem` run's history holds fields instead)."""
     import h5py  # the writer's alone: the reports read the summary without it
 
-    path = os.path.join(run, "history.h5")
+    path = run_file(run, "history.h5")
     if not os.path.isfile(path):
         return None
     with h5py.File(path, "r") as h:
@@ -100,7 +104,7 @@ def revolutions_text(run):
 
 def surface_stages(run):
     """The stages whose surface the run folder holds (surface/stage_NNNN.h5), ascending."""
-    d = os.path.join(run, "surface")
+    d = run_file(run, "surface")
     if not os.path.isdir(d):
         return []
     return sorted(int(f[6:10]) for f in os.listdir(d) if f.startswith("stage_") and f.endswith(".h5"))
@@ -111,7 +115,7 @@ def read_surface(run, stage):
     only its index entry (a stub a kept checkpoint's resume needs, keep_running.sh)."""
     import h5py
 
-    with h5py.File(os.path.join(run, "surface", f"stage_{stage:04d}.h5"), "r") as h:
+    with h5py.File(os.path.join(run_file(run, "surface"), f"stage_{stage:04d}.h5"), "r") as h:
         if "points" not in h:
             return None
         return (h["points"][:], h["triangles"][:].astype(int), h["cell/label"][:, 0].astype(int),
@@ -251,7 +255,7 @@ def last_call_ending(log, stages):
     stage = int(stages[-1]["stage"]) + 1 if stages else 1
     for line in reversed(last):
         if line.startswith("stopped by SIGTERM in stage"):
-            return line.split(" (")[0]
+            return line.split(" (")[0].split(" at t = ")[0]  # older and current wording
         if "error:" in line:
             what = line.split("error:", 1)[1].split("; ")[0].strip()
             return f"stopped by an error in stage {stage}: {what}"
@@ -260,7 +264,7 @@ def last_call_ending(log, stages):
 
 def engine_version(run):
     """The engine version on the second line of the run's parameters.prm, or None."""
-    with open(os.path.join(run, "parameters.prm")) as f:
+    with open(run_file(run, "parameters.prm")) as f:
         f.readline()
         line = f.readline()
     return line.split(":", 1)[1].strip() if line.startswith("# Engine version:") else None
@@ -269,9 +273,9 @@ def engine_version(run):
 def keeps_further_run(run, old):
     """Whether the old summary is of the same case as the run and went further while the run
     cannot be continued (no checkpoint), so that it stays."""
-    if os.path.isfile(os.path.join(run, "checkpoint.h5")) or not os.path.isfile(os.path.join(old, "run.txt")):
+    if os.path.isfile(run_file(run, "checkpoint.h5")) or not os.path.isfile(os.path.join(old, "run.txt")):
         return False
-    with open(os.path.join(run, "parameters.prm")) as a, open(os.path.join(old, "parameters.prm")) as b:
+    with open(run_file(run, "parameters.prm")) as a, open(os.path.join(old, "parameters.prm")) as b:
         same_case = a.read() == b.read()
     return same_case and count_revolutions(old) > count_revolutions(run)
 
@@ -290,14 +294,14 @@ def summary_files(run, old):
     """{file name: text} of the run's summary (old: the summary folder it replaces)."""
     files = {}
     for name in COPIED:
-        if os.path.isfile(os.path.join(run, name)):
-            with open(os.path.join(run, name)) as f:
+        if os.path.isfile(run_file(run, name)):
+            with open(run_file(run, name)) as f:
                 files[name] = f.read()
     files["revolutions.csv"] = revolutions_text(run)
     surfaces, last, lines = surface_parts(run, old)
     files.update(surfaces)
     log = os.path.normpath(run) + ".log"
-    stages = read_csv(os.path.join(run, "stages.csv")) if "stages.csv" in files else []
+    stages = read_csv(run_file(run, "stages.csv")) if "stages.csv" in files else []
     files["ending.txt"] = last_call_ending(log, stages) + "\n" if os.path.isfile(log) else None
     files["run.txt"] = run_text(run, last, lines)
     return {k: v for k, v in files.items() if v is not None}
@@ -321,7 +325,7 @@ def write_summary(files, dest):
 def summarise(run, dest):
     """Writes the summary of run folder `run` into `dest`; returns a line saying what it did."""
     for name in ("parameters.prm", "summary.csv"):
-        if not os.path.isfile(os.path.join(run, name)):
+        if not os.path.isfile(run_file(run, name)):
             fail(f"'{run}/{name}' does not exist (is '{run}' a wearsim run folder?)")
     if keeps_further_run(run, dest):
         return (f"{dest} kept: its run went further ({count_revolutions(dest)} revolutions) than "

@@ -13,7 +13,8 @@ trap 'rm -rf "$tmp"' EXIT
 fail() { echo "keep_running_test: $*" >&2; exit 1; }
 
 prm=$tmp/case/plain.prm out=$tmp/output/plain-run keep=$tmp/case/running/plain-run
-mkdir -p "$tmp/case" "$out/surface" "$out/volume"
+part=$out/parts/sample # a tester case's stage files are its part's (wearsim run)
+mkdir -p "$tmp/case" "$part/surface" "$part/volume"
 printf 'subsection Output\n  set Directory = %s\nend\n' "$out" > "$prm"
 printf '# Fully resolved parameters of %s\n# Engine version: e1\n' "$prm" > "$out/parameters.prm"
 checkpoint() { # <stages done>: the stand-in checkpoint of a 3-stage schedule
@@ -25,7 +26,7 @@ with h5py.File(out + "/checkpoint.h5", "w") as h:
     h.attrs["parameters"] = np.bytes_(b"subsection Coupling\n  set Schedule = 1 dem-only, 2 staged\nend\n")
     h["dem/position"] = np.arange(3000.0)
 for kind, stage in (("surface", 0), ("surface", 1), ("volume", 1)):
-    with h5py.File(f"{out}/{kind}/stage_{stage:04d}.h5", "w") as h:
+    with h5py.File(f"{out}/parts/sample/{kind}/stage_{stage:04d}.h5", "w") as h:
         h.attrs["xdmf"] = np.bytes_(f"<Grid Name=\"{kind}_{stage}\"/>\n".encode())
         h["points"] = np.zeros((4, 3))
 PY
@@ -36,7 +37,7 @@ checkpoint 1
 keep || fail "refused an unfinished run: $(cat "$tmp/out")"
 [ -f "$keep/checkpoint.h5.xz" ] && [ -f "$keep/parameters.prm" ] && grep -q "1 of 3 stages done, engine e1" "$keep/kept.txt" ||
   fail "the kept set is not complete: $(ls -R "$keep") $(cat "$tmp/out")"
-[ "$(ls "$keep/index")" = "$(printf 'surface_stage_0000.xml\nsurface_stage_0001.xml\nvolume_stage_0001.xml')" ] ||
+[ "$(ls "$keep/index")" = "$(printf 'parts+sample+surface_stage_0000.xml\nparts+sample+surface_stage_0001.xml\nparts+sample+volume_stage_0001.xml')" ] ||
   fail "the index entries kept are not the three stage files': $(ls "$keep/index")"
 cp "$out/checkpoint.h5" "$tmp/checkpoint.orig"
 
@@ -47,12 +48,12 @@ restored=$(cd "$root" && source cases/reference-study/case_paths.sh && restore_r
 /usr/bin/python3 - "$out" <<'PY' || fail "the restored stubs do not hold the index entries"
 import sys, h5py
 for kind, stage in (("surface", 0), ("surface", 1), ("volume", 1)):
-    with h5py.File(f"{sys.argv[1]}/{kind}/stage_{stage:04d}.h5", "r") as h:
+    with h5py.File(f"{sys.argv[1]}/parts/sample/{kind}/stage_{stage:04d}.h5", "r") as h:
         t = h.attrs.get_id("xdmf").get_type()
         assert not t.is_variable_str() and h.attrs["xdmf"] == f"<Grid Name=\"{kind}_{stage}\"/>\n".encode()
         assert "points" not in h
 PY
-printf 'x' > "$out/summary.csv"
+printf 'x' > "$part/summary.csv"
 again=$(cd "$root" && source cases/reference-study/case_paths.sh && restore_running "$prm") &&
   [ -z "$again" ] || fail "restored into a folder that holds a run: $again"
 

@@ -15,13 +15,16 @@ fail() { echo "run_summary_test: $*" >&2; exit 1; }
 
 # The stand-in: 3 revolutions, 2 stages; a sample of a base (label 3) and elements C11 and C13
 # (triangles in planes x = const and z = const), its stage-2 surface worn 0.5 mm off C13's top.
+# The run folder as `wearsim run` writes a tester case: parameters.prm at its top, the tables
+# and surfaces in parts/sample/.
 run=$tmp/output/convex
-mkdir -p "$run/surface"
+tab=$run/parts/sample
+mkdir -p "$tab/surface"
 printf '# Fully resolved parameters of cases/reference-study/convex.prm\n# Engine version: e1\n  set Schedule = 1 dem-only, 1 staged\n' > "$run/parameters.prm"
-printf 'revolution,wear_volume_m3\n1,7e-08\n2,7.1e-08\n3,7.2e-08\n' > "$run/summary.csv"
-printf 'stage,scheme_name,first_revolution\n1,dem-only,1\n2,staged,2\n' > "$run/stages.csv"
-printf '=== t0 wearsim run --overwrite c.prm\nstopped by SIGTERM in stage 2 of 2 (revolution 3, t = 4 s); checkpoint written\n' > "$run.log"
-/usr/bin/python3 - "$run" <<'PY' || fail "cannot write the stand-in run (python3-h5py)"
+printf 'revolution,wear_volume_m3\n1,7e-08\n2,7.1e-08\n3,7.2e-08\n' > "$tab/summary.csv"
+printf 'stage,scheme_name,first_revolution\n1,dem-only,1\n2,staged,2\n' > "$tab/stages.csv"
+printf '=== t0 wearsim run --overwrite c.prm\nstopped by SIGTERM in stage 2 of 2 at t = 4 s after a checkpoint; continue with wearsim run --resume c.prm\n' > "$run.log"
+/usr/bin/python3 - "$tab" <<'PY' || fail "cannot write the stand-in run (python3-h5py)"
 import sys, h5py, numpy as np
 run = sys.argv[1]
 rng = np.random.default_rng(1)
@@ -53,7 +56,7 @@ sys.path.insert(0, sys.argv[1])
 import run_summary as S
 run, s = sys.argv[2:]
 labels, elements, columns = S.read_revolutions(s)
-with h5py.File(run + "/history.h5") as h:
+with h5py.File(run + "/parts/sample/history.h5") as h:
     assert labels == [11, 13], labels
     assert np.array_equal(columns, h["revolutions/column_wear_m3"][:]), "column wear not exact"
     assert np.array_equal(elements, h["revolutions/element_wear_m3"][:]), "element wear not exact"
@@ -81,13 +84,13 @@ PY
 
 # Continued from a kept checkpoint: the stage-0 surface an index stub, a stage-3 surface worn on.
 cp -r "$tmp/results/convex" "$tmp/first"
-/usr/bin/python3 - "$run" <<'PY' || fail "cannot write the stub"
+/usr/bin/python3 - "$tab" <<'PY' || fail "cannot write the stub"
 import sys, h5py, numpy as np
 with h5py.File(sys.argv[1] + "/surface/stage_0000.h5", "w") as h:
     h.attrs["xdmf"] = np.bytes_(b"<Grid/>")
 PY
-cp "$run/surface/stage_0002.h5" "$run/surface/stage_0003.h5"
-printf '4,7.3e-08\n' >> "$run/summary.csv"
+cp "$tab/surface/stage_0002.h5" "$tab/surface/stage_0003.h5"
+printf '4,7.3e-08\n' >> "$tab/summary.csv"
 rm "$run.log"
 /usr/bin/python3 "$summary" "$run" "$tmp/results/convex" > "$tmp/out" 2>&1 || fail "refused a continued run: $(cat "$tmp/out")"
 cmp -s "$tmp/first/surface_map.txt" "$tmp/results/convex/surface_map.txt" || fail "the map of stage 0 was not kept"
@@ -105,7 +108,7 @@ grep -q "holds no surface" "$tmp/out" || fail "unclear refusal: $(cat "$tmp/out"
 
 # A run that cannot be continued (no checkpoint) and got less far does not replace the summary
 # of its case; with a checkpoint it does.
-head -n 3 "$run/summary.csv" > "$run/summary.short" && mv "$run/summary.short" "$run/summary.csv"
+head -n 3 "$tab/summary.csv" > "$tab/summary.short" && mv "$tab/summary.short" "$tab/summary.csv"
 /usr/bin/python3 "$summary" "$run" "$tmp/results/convex" > "$tmp/out" 2>&1 || fail "refused: $(cat "$tmp/out")"
 grep -q "kept: its run went further" "$tmp/out" && grep -q "^revolutions: 4$" "$tmp/results/convex/run.txt" ||
   fail "a shorter run without a checkpoint replaced the summary: $(cat "$tmp/out")"
