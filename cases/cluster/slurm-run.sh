@@ -6,11 +6,13 @@
 #
 #     sbatch cases/cluster/slurm-run.sh                          # the plain sample
 #     CASE=cases/scaling-factor/convex-s1.prm sbatch cases/cluster/slurm-run.sh
+#     COMMAND=dem sbatch cases/cluster/slurm-run.sh                       # the DEM alone
 #     COMMAND=scene-run CASE=cases/chute/chute.prm sbatch cases/cluster/slurm-run.sh   # a scene
 #
 # Slurm sends SIGUSR1 to mpirun 5 minutes before the time limit (--signal=B:USR1@300); mpirun
-# passes it to the ranks, which stop at the same step, write their parts of the checkpoint and
-# exit. The next submission resumes there (--resume), on as many ranks as it is given: the
+# passes it to the ranks, which stop together at the end of the current window (a tester
+# case's: a revolution over DEM/Samples per revolution; it must take less than the 5
+# minutes), write their parts of the checkpoint and exit. The next submission resumes there (--resume), on as many ranks as it is given: the
 # same count continues bit for bit, another count re-cuts the bed (docs/user-guide.md, "On
 # several processes (MPI)"). Output/Checkpoint interval bounds what a hard kill loses.
 #SBATCH --job-name=wearsim-run-s1
@@ -22,7 +24,7 @@
 #SBATCH --output=wearsim-run-%j.log
 set -euo pipefail
 CASE=${CASE:-cases/scaling-factor/plain-s1.prm}
-COMMAND=${COMMAND:-run} # run: the tester's case; scene-run: a scene's
+COMMAND=${COMMAND:-run} # run: the coupled run; dem: a tester case's DEM alone; scene-run
 export OMP_NUM_THREADS=${SLURM_CPUS_PER_TASK:-1}
 export OMP_PROC_BIND=close OMP_PLACES=cores
 # A folder holding this case's checkpoint continues; otherwise the run starts.

@@ -15,7 +15,7 @@
 #include "coupling/app/bench_fem.h"
 #include "coupling/app/bench_ranks.h"
 #include "coupling/app/bench_tester.h"
-#include "coupling/output/progress_line.h"
+#include "coupling/output/text_format.h"
 #include "dem/engine/benchmark.h"
 #include "meshes/stopwatch.h"
 

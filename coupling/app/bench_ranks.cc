@@ -7,7 +7,7 @@
 // others wait inside MPI. Bytes and messages per step are what the rank sent (payload).
 #include "coupling/app/bench_ranks.h"
 
-#include "coupling/output/progress_line.h"
+#include "coupling/output/text_format.h"
 
 #include <algorithm>
 #include <ostream>

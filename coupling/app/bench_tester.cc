@@ -12,7 +12,7 @@
 #include "coupling/app/bench_tester.h"
 
 #include "coupling/output/checkpoint.h"
-#include "coupling/output/progress_line.h"
+#include "coupling/output/text_format.h"
 #include "coupling/parameters/tester_scene_case.h"
 #include "dem/scene/scene_walls.h"
 #include "meshes/constants.h"

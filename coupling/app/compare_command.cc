@@ -131,7 +131,7 @@ Run load_part(const std::string& dir, const std::string& side, int from, const s
 Run load(const std::string& dir, const std::string& side, int from, const std::string& named) {
   std::ostringstream warnings;
   const CaseParameters p = read_case(dir + "/parameters.prm", warnings);
-  const bool tester = p.scene.walls.empty(); // the built-in tester's run: its sample
+  const bool tester = p.scene.walls.empty(); // an older engine's built-in tester run: its sample
   const std::string part = run_part(p, named);
   if (!tester && !part.empty() && p.scene.evaluation.wall != part)
     return load_part(dir, side, from, part, p);

@@ -14,6 +14,7 @@ namespace wear::coupling {
 std::string parse_run_arguments(const std::vector<std::string>& args, const std::string& command,
                                 RunOptions& options) {
   const std::string name = "wearsim " + command;
+  options.command = command;
   std::string case_file;
   for (const auto& a : args) {
     if (a == "--resume")

@@ -34,8 +34,9 @@ void usage(std::ostream& out) {
          "                           the case's Scene: walls and their motions, fill, inlets,\n"
          "                           outlets, to Scene/End time, or with a wearing part and\n"
          "                           Scene/Stage duration the staged wear loop on it; writes\n"
-         "                           scene_series.csv, particles_<k>.vtu, walls/ (stages.csv,\n"
-         "                           part_wear.csv, surface.xdmf); checkpoints for --resume\n"
+         "                           scene_series.csv, particles_<k>.vtu, walls/, parts/<wall>/\n"
+         "                           (stages.csv, part_wear.csv, history.xdmf); checkpoints for\n"
+         "                           --resume\n"
          "  run [--resume | --overwrite] <case.prm>\n"
          "                           the coupled DEM-FEM wear run of the case's Coupling/Schedule\n"
          "                           (staged, reference or dem-only stages) on its scene; a wear-\n"
@@ -75,8 +76,8 @@ void usage(std::ostream& out) {
          "  --print-parameters       list every case-file parameter with default and meaning\n"
          "  --version                the engine version (git describe at build time)\n\n"
          "under mpirun -np N: 'run', 'scene-run', 'dem' and 'bench dem' decompose the bed over\n"
-         "the N ranks (the tester in angular slabs, a scene as Scene/Rank slabs along says;\n"
-         "DEM/Threads or --threads per rank); rank 0 writes and prints\n"
+         "the N ranks (a tester case in angular slabs of its sector, a scene as Scene/Rank slabs\n"
+         "along says; DEM/Threads or --threads per rank); rank 0 writes and prints\n"
          "  --help                   this text\n";
 }
 

@@ -11,12 +11,14 @@ namespace wear::coupling {
 
 struct RunOptions {
   bool resume = false;    ///< continue from <output>/checkpoint.h5
-  bool progress = true;   ///< live line on a terminal (stderr)
   int stop_after = 0;     ///< stop after this many stages of this invocation (0: run all)
   bool overwrite = false; ///< replace a run in the output folder (kept until the first checkpoint)
   /// The DEM over these ranks (under mpirun; every rank runs the same loop, rank 0 writes and
   /// prints); null: one process.
   dem::RankLink* ranks = nullptr;
+  /// The wearsim command that runs the case (run, dem, scene-run): a stopped run's message
+  /// says how to continue it with this command.
+  std::string command = "run";
 };
 
 /// Readies Output/Directory for a run and writes its resolved parameters: a folder holding a

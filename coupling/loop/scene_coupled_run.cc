@@ -32,7 +32,7 @@
 // window whose bed has flowed away from its cuts (Scene/Rank rebalance), the scene is cut anew.
 #include "coupling/loop/scene_coupled_run.h"
 
-#include "coupling/output/progress_line.h"
+#include "coupling/output/text_format.h"
 #include "dem/scene/wall_catalogue.h"
 #include "meshes/stopwatch.h"
 
@@ -62,7 +62,6 @@ SceneCoupledRun::SceneCoupledRun(const CaseParameters& p, std::ostream& log,
                                  const RunOptions& options)
     : p_(p), log_(options.ranks && options.ranks->rank() != 0 ? silent_ : log), options_(options),
       ranks_(options.ranks), part_case_(p), parameters_text_(resolved_parameters(p)) {
-  options_.progress = options_.progress && ranks_.writer();
   dem::validate(p_.scene);
   if (p_.scene.stage_duration <= 0) { // one DEM stage to End time
     plan_ = {Scheme::dem_only};
@@ -109,7 +108,8 @@ int SceneCoupledRun::run() {
       log_ << "stopped by " << StopSignals::name(signal) << " in stage " << r.stage << " of "
            << plan_.size() << " at t = " << scene_->time() << " s";
       if (scene_->system().n_rebuilds() > 0 && p_.coupling.checkpoints)
-        log_ << " after a checkpoint; continue with wearsim run --resume " << p_.case_file << "\n";
+        log_ << " after a checkpoint; continue with wearsim " << options_.command << " --resume "
+             << p_.case_file << "\n";
       else // nothing was checkpointed: no particle yet, or checkpoints off
         log_ << " without a checkpoint (no particle yet, or Coupling/Checkpoints off); run it "
                 "again with --overwrite\n";
@@ -171,8 +171,7 @@ std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::setup() {
        << plan_.size() << " stage(s) of "
        << (parts_.empty() ? p_.scene.end_time : p_.scene.stage_duration) << " s\n";
   if (ranks_.writer())
-    series_ =
-        std::make_unique<SceneSeries>(p_.output.directory, *scene_, p_.scene.particle_snapshots);
+    series_ = std::make_unique<SceneSeries>(p_.output.directory, *scene_);
   replaced_ = replaced;
   // The settled bed, before any stage: a run stopped in its first stage does not fill again.
   checkpoint(next_stage());
@@ -204,8 +203,7 @@ std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::resume() {
   scene_->resume(state);
   n_records_ = s.n_records;
   if (ranks_.writer())
-    series_ = std::make_unique<SceneSeries>(p_.output.directory, *scene_,
-                                            p_.scene.particle_snapshots, s.n_records);
+    series_ = std::make_unique<SceneSeries>(p_.output.directory, *scene_, s.n_records);
   if (c.dem_ranks != part.n_ranks)
     log_ << "the checkpoint was written on " << c.dem_ranks << " rank(s), this run has "
          << part.n_ranks << ": the scene is decomposed again (it continues, not bit for bit as "
@@ -222,14 +220,14 @@ std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::resume() {
 
 void SceneCoupledRun::record(const dem::SceneWindow& w) {
   ++n_records_;
-  const bool snapshot = p_.scene.particle_snapshots && w.n_particles > 0;
+  const bool snapshot = dem::snapshot_due(p_.scene, n_records_) && w.n_particles > 0;
   if (!ranks_.link()) {
-    series_->add(w, *scene_, scene_->system().particles);
+    series_->add(w, *scene_, scene_->system().particles, snapshot);
     return;
   }
   const dem::Particles all = snapshot ? scene_->particles_on_first_rank() : dem::Particles{};
   if (series_)
-    series_->add(w, *scene_, all);
+    series_->add(w, *scene_, all, snapshot);
 }
 
 SceneCoupledRun::OpenSceneStage SceneCoupledRun::next_stage() const {

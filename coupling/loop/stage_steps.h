@@ -1,6 +1,6 @@
 #pragma once
-// The FEM steps of a staged stage, shared by the wear tester's run (coupled_run.h) and a
-// scene's wearing part (scene_coupled_run.h): the stress of the part under the stage-averaged
+// The FEM steps of a staged stage of a wearing part (wearing_part.h, scene_coupled_run.h): the
+// stress of the part under the stage-averaged
 // face loads, and the geometry update that applies the stage's removed volume. Each takes
 // the values it needs, fills the stage's record and returns what it made.
 #include "coupling/loop/stage_record.h"

@@ -6,7 +6,7 @@
 // rounding in the recomputed check cannot exceed the cap.
 #include "coupling/loop/wear_increment.h"
 
-#include "coupling/output/progress_line.h"
+#include "coupling/output/text_format.h"
 #include "meshes/recession.h"
 
 #include <algorithm>

@@ -12,7 +12,7 @@
 //   4. Output: the surface and volume with their fields (HDF5 + XDMF, VTU), stages.csv,
 //      part_wear.csv (volume per surface, per stage and cumulative).
 // A part is held at its clamped surfaces; the tester's sample (Source = sample) works in its own
-// frame as the built-in tester's (its loads' vectors turned into it, its surface placed in the
+// frame (its loads' vectors turned into it, its surface placed in the
 // scene for the DEM wall), clamped at its bottom and, in a scene with the holder, its sides held
 // normal to themselves (u . n = 0) as the holder holds them.
 // A part whose wearing faces come within FEM/Worn-through thickness of its clamped surface is
@@ -21,7 +21,7 @@
 
 #include "coupling/loop/stage_steps.h"
 #include "coupling/loop/wear_increment.h"
-#include "coupling/output/progress_line.h"
+#include "coupling/output/text_format.h"
 #include "dem/scene/wall_catalogue.h"
 #include "fem/remesher.h"
 #include "meshes/atomic_file.h"
@@ -53,7 +53,7 @@ fem::WornSampleParameters part_parameters(const CaseParameters& p,
 }
 
 /// The tester's sample's own frame (Geometry/Sample placed by Geometry/Placement), where its
-/// FEM works as the built-in tester's does; none for any other part (the wall's frame).
+/// FEM works; none for any other part (the wall's frame).
 std::optional<meshes::SampleFrame> part_frame(const CaseParameters& p,
                                               const dem::SceneWallParameters& wall) {
   if (dem::wall_source_of(wall).source != dem::WallSource::sample)
@@ -62,7 +62,7 @@ std::optional<meshes::SampleFrame> part_frame(const CaseParameters& p,
 }
 
 /// The tester's sample rests in its holder when the scene has one (Source = holder): its sides
-/// are held normal to themselves (u . n = 0), as in the built-in tester.
+/// are held normal to themselves (u . n = 0).
 bool held_sides(const CaseParameters& p, const dem::SceneWallParameters& wall) {
   return dem::wall_source_of(wall).source == dem::WallSource::sample &&
          std::any_of(p.scene.walls.begin(), p.scene.walls.end(), [](const auto& w) {

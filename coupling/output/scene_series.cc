@@ -82,8 +82,8 @@ void write_wall(const dem::SceneRun& run, int k, const std::string& dir) {
 
 } // namespace
 
-SceneSeries::SceneSeries(std::string directory, const dem::SceneRun& run, bool snapshots)
-    : directory_(std::move(directory)), snapshots_(snapshots), series_(series_header(run)),
+SceneSeries::SceneSeries(std::string directory, const dem::SceneRun& run)
+    : directory_(std::move(directory)), series_(series_header(run)),
       wear_("time_s,wall,label,archard_window_Nm\n") {
   meshes::ensure_directory(directory_ + "/walls");
   for (std::size_t k = 0; k < run.walls().size(); ++k) {
@@ -110,9 +110,8 @@ std::vector<std::string> lines_of(const std::string& path) {
 }
 } // namespace
 
-SceneSeries::SceneSeries(std::string directory, const dem::SceneRun& run, bool snapshots,
-                         int n_records)
-    : SceneSeries(std::move(directory), run, snapshots) {
+SceneSeries::SceneSeries(std::string directory, const dem::SceneRun& run, int n_records)
+    : SceneSeries(std::move(directory), run) {
   const auto series = lines_of(directory_ + "/scene_series.csv");
   if (int(series.size()) < n_records + 1)
     throw std::runtime_error("--resume: '" + directory_ + "/scene_series.csv' holds " +
@@ -143,7 +142,7 @@ SceneSeries::SceneSeries(std::string directory, const dem::SceneRun& run, bool s
 }
 
 void SceneSeries::add(const dem::SceneWindow& w, const dem::SceneRun& run,
-                      const dem::Particles& particles) {
+                      const dem::Particles& particles, bool snapshot) {
   const int k = ++n_records_;
   series_ += series_row(w);
   meshes::write_atomically(directory_ + "/scene_series.csv",
@@ -151,7 +150,7 @@ void SceneSeries::add(const dem::SceneWindow& w, const dem::SceneRun& run,
   wear_ += wear_rows(run, w);
   meshes::write_atomically(directory_ + "/scene_wear.csv",
                            [&](std::ostream& out) { out << wear_; });
-  if (snapshots_ && w.n_particles > 0)
+  if (snapshot && w.n_particles > 0)
     dem::write_particles_vtu(particles, directory_ + "/particles_" + std::to_string(k) + ".vtu");
   if (run.fields())
     write_fields(k, w, run.fields()->grid());

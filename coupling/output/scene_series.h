@@ -5,7 +5,8 @@
 // window-mean force and moment about the origin in the wall's frame and the window's Archard
 // load-distance, the particles' mean and largest speed), scene_wear.csv (the window's Archard
 // load-distance per wall and label: the wear per labelled surface group), particles_<k>.vtu
-// (unless Scene/Particle snapshots is false),
+// at the records that write the particles (dem::snapshot_due: every record, or the Snapshot
+// records),
 // and the walls: walls/<name>.vtu once for a wall that does not move, walls_<k>/<name>.vtu
 // at every record for one that moves (a wearing part's worn surfaces: the wear loop's
 // surface/ series); with Scene/Fields, the window's binned solid fraction, velocity and
@@ -22,22 +23,21 @@ class SceneSeries {
 public:
   /// Writes the walls that keep their place (fixed, or their surface moving in place) into
   /// `directory`/walls/ and starts the tables; a wall moving as a rigid body goes to
-  /// walls_<k>/ at every record k; `snapshots`: the
-  /// particles at every record (Scene/Particle snapshots).
-  SceneSeries(std::string directory, const dem::SceneRun& run, bool snapshots);
+  /// walls_<k>/ at every record k.
+  SceneSeries(std::string directory, const dem::SceneRun& run);
   /// Continues the records of a resumed run: the tables as they stood after its first
   /// `n_records` records (later rows, written after the checkpoint, are dropped) and the
   /// fields files up to that record. Throws naming a table that holds fewer.
-  SceneSeries(std::string directory, const dem::SceneRun& run, bool snapshots, int n_records);
+  SceneSeries(std::string directory, const dem::SceneRun& run, int n_records);
   /// The next record, of window w, with the run as it stands at the window's end and its
-  /// `particles` then (the scene's own, or over ranks every rank's gathered).
-  void add(const dem::SceneWindow& w, const dem::SceneRun& run, const dem::Particles& particles);
-  bool snapshots() const { return snapshots_; }
+  /// `particles` then (the scene's own, or over ranks every rank's gathered), written to
+  /// particles_<k>.vtu when `snapshot` (and there are particles).
+  void add(const dem::SceneWindow& w, const dem::SceneRun& run, const dem::Particles& particles,
+           bool snapshot);
   int n_records() const { return n_records_; }
 
 private:
   std::string directory_;
-  bool snapshots_ = true;
   std::string series_, wear_; ///< the tables so far
   int n_records_ = 0;
   std::vector<bool> changing_;                        ///< per wall: written at every record

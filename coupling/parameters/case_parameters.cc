@@ -447,7 +447,7 @@ void require_no_scene(const CaseParameters& p, const std::string& command) {
   if (!p.scene.walls.empty())
     throw std::invalid_argument(
         "case file '" + p.case_file + "': Scene/Walls lists walls, but `wearsim " + command +
-        "` runs the built-in wear tester; a scene is built and checked by `wearsim scene` and "
+        "` takes a wear-tester case; a scene is built and checked by `wearsim scene` and "
         "run by `wearsim run` (or `wearsim scene-run`)");
 }
 

@@ -38,7 +38,7 @@ void visit_parameters(OutputParameters& o, Visitor& v) {
 
 struct CaseParameters {
   meshes::GeometryParameters geometry;
-  dem::SceneParameters scene; ///< the user's own walls; none: the built-in tester
+  dem::SceneParameters scene; ///< the user's own walls; none: a wear-tester case
   dem::TesterDemParameters dem;
   dem::WearLawParameters wear_law;
   dem::ReferenceDeformationParameters deformation;
@@ -85,13 +85,12 @@ void print_parameters(std::ostream& out);
 
 /// The wearing part whose figures a run's tables hold for `wearsim compare` and `calibrate`:
 /// `part` when named (--part), else the part the scene evaluates as the tester's sample
-/// (Scene/Evaluation/Wall); empty for the built-in tester's run and for a scene that
-/// evaluates none.
+/// (Scene/Evaluation/Wall); empty for a run of an older engine's built-in tester and for a
+/// scene that evaluates none.
 std::string run_part(const CaseParameters& p, const std::string& part);
 
-/// Throws std::invalid_argument for a case with scene walls: `command` runs the built-in
-/// wear tester; a scene is built and checked by `wearsim scene` and run by
-/// `wearsim scene-run`.
+/// Throws std::invalid_argument for a case with scene walls: `command` takes a wear-tester
+/// case; a scene is built and checked by `wearsim scene` and run by `wearsim run`.
 void require_no_scene(const CaseParameters& p, const std::string& command);
 
 } // namespace wear::coupling

@@ -50,14 +50,14 @@ std::string unused_because(const CaseParameters& p, const std::string& entry) {
   const bool scene = !p.scene.walls.empty();
   if (!scene) {
     if (starts_with(entry, "Scene/") && entry != "Scene/Walls")
-      return "a parameter of a scene, and this case is the built-in wear tester (Scene/Walls "
-             "is empty)";
+      return "a parameter of a scene, and this case is a wear-tester case (Scene/Walls is "
+             "empty): its scene is written from its Geometry and DEM subsections";
     return "";
   }
   const std::string is_scene = "this case is a scene (Scene/Walls = " + p.scene.wall_names + ")";
   static const std::vector<std::string> tester_dem = tester_dem_paths();
   if (std::find(tester_dem.begin(), tester_dem.end(), entry) != tester_dem.end())
-    return "the built-in wear tester's own, and " + is_scene +
+    return "a wear-tester case's own, and " + is_scene +
            ": a scene's bed is Scene/Fill, its walls' motions their own, its length Scene/End "
            "time or its stages";
   if (entry == "Deformation/Update interval")
@@ -65,7 +65,7 @@ std::string unused_because(const CaseParameters& p, const std::string& entry) {
                                   : "the node-moving reference scheme's, and Coupling/Schedule "
                                     "has no reference stage";
   if (starts_with(entry, "Deformation/"))
-    return "the built-in wear tester's `wearsim dem` switch, and " + is_scene +
+    return "`wearsim dem`'s switch for a wear-tester case, and " + is_scene +
            ": its reference stages are Coupling/Schedule's, amplified by Coupling/Amplification";
   if (starts_with(entry, "Geometry/")) {
     const bool sample = has_wall_source(p, dem::WallSource::sample),
@@ -75,7 +75,7 @@ std::string unused_because(const CaseParameters& p, const std::string& entry) {
       return "";
     if (holder && entry == "Geometry/Tester/Holder rim width")
       return "";
-    return "the built-in wear tester's geometry, and " + is_scene +
+    return "a wear-tester case's geometry, and " + is_scene +
            (sample || holder ? " whose tester parts (Source = sample, holder) use only "
                                "Geometry/Sample, Geometry/Placement and, for a holder, "
                                "Geometry/Tester/Holder rim width"

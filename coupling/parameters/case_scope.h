@@ -1,7 +1,7 @@
 #pragma once
-// Which parameters a case uses: a scene (Scene/Walls lists walls) and the built-in wear
-// tester read different parts of the case file, and a parameter the case does not use is
-// refused with its name rather than ignored.
+// Which parameters a case uses: a scene (Scene/Walls lists walls) and a wear-tester case
+// (whose scene its tester entries write, tester_scene_case.h) read different parts of the case
+// file, and a parameter the case does not use is refused with its name rather than ignored.
 #include "coupling/parameters/case_file_lines.h"
 #include "coupling/parameters/case_parameters.h"
 

@@ -113,7 +113,7 @@ void visit_parameters(CouplingParameters& k, Visitor& v) {
          "fraction of their radius are pushed out to zero overlap (and counted).");
   v.boolean("Checkpoints", k.checkpoints,
             "Write checkpoint.h5 after every stage (atomically) so `wearsim run --resume` "
-            "can continue a killed run bit for bit. Not for the reference scheme.");
+            "can continue a killed run bit for bit.");
   visit_parameters(k.stress_informed, v);
   v.leave();
 }

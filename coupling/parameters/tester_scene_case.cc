@@ -8,6 +8,7 @@
 #include "coupling/parameters/engine_version.h"
 #include "dem/tester/tester_scene.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace wear::coupling {
@@ -33,9 +34,18 @@ CaseParameters tester_scene_case(const CaseParameters& tester) {
   if (tester.geometry.tester.holder) // the scene's holder reads its rim width there
     s.geometry.tester.holder_rim_width = tester.geometry.tester.holder_rim_width;
   s.deformation = dem::ReferenceDeformationParameters{}; // a scene reads only the interval
-  for (const auto& item : parse_schedule(tester.coupling.schedule))
+  int n_stages = 0;
+  for (const auto& item : parse_schedule(tester.coupling.schedule)) {
+    n_stages += item.n_stages;
     if (item.scheme == Scheme::reference)
       s.deformation.update_interval = tester.deformation.update_interval;
+  }
+  // DEM/Snapshot revolutions' "plus the last": the particles at the end of the last stage too
+  const int last =
+      n_stages * tester.coupling.revolutions_per_stage * tester.dem.samples_per_revolution;
+  auto& records = s.scene.snapshot_records;
+  if (std::find(records.begin(), records.end(), last) == records.end())
+    records.push_back(last);
   s.coupling.revolutions_per_stage = CouplingParameters{}.revolutions_per_stage;
   return s;
 }

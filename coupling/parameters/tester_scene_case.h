@@ -1,7 +1,8 @@
 #pragma once
 // A wear-tester case written as a scene case (`wearsim tester-scene`): the same machine,
 // particles, wear law, coupling and FEM, its walls, sector, fill and stages in the Scene
-// subsection (dem/tester/tester_scene.h) instead of the built-in tester's own parameters.
+// subsection (dem/tester/tester_scene.h) instead of the tester's own entries. `wearsim run` and
+// `wearsim dem` run a wear-tester case as this scene.
 #include "coupling/parameters/case_parameters.h"
 
 #include <string>

@@ -3,8 +3,10 @@
 // The fill region is checked against every wall triangle (a box by separating axes, a cylinder
 // by clipping the triangle to its slab; both exact) before any particle exists: particles
 // placed through a wall would start overlapping it. A wall wholly inside the region is
-// submerged (a part standing in the bed, as the tester's sample): no centre is placed within
-// the largest diameter of its bounding box, and a bed height's count leaves out its enclosed
+// submerged (a part standing in the bed, as the tester's sample and its holder): no centre is
+// placed inside its solid or within the largest diameter of its surface (closed; its bounding
+// box, turned with the part, would keep a larger bed clear than the part takes), or within
+// that diameter of its bounding box (open), and a bed height's count leaves out its enclosed
 // volume below the bed's top (the share of its height below it, when it reaches above).
 #include "dem/scene/scene_fill.h"
 
@@ -60,8 +62,9 @@ FillRegion SceneFillShape::region(double margin, double z_top) const {
     const auto beside = [&](const meshes::BoundingBox& b) {
       return x.x > b.min.x - c && x.x < b.max.x + c && x.y > b.min.y - c && x.y < b.max.y + c;
     };
-    for (const auto& b : boxes)
-      if (beside(b) && x.z > b.min.z - c && x.z < b.max.z + c)
+    for (const auto& w : boxes)
+      if (beside(w.box) && x.z > w.box.min.z - c && x.z < w.box.max.z + c &&
+          (!w.solid || w.solid->distance(x) < c || w.solid->contains(x)))
         return false;
     for (const auto& b : above)
       if (beside(b) && x.z > b.min.z - c)
@@ -164,7 +167,11 @@ void require_clear_of_walls(const std::vector<SceneWall>& walls, SceneFillShape&
     const auto& m = w.surface.mesh;
     if (!m.vertices.empty() && shape.contains_all(m.vertices)) {
       const meshes::BoundingBox box = meshes::bounding_box(m);
-      shape.submerged.push_back(box);
+      const bool closed = meshes::check_closed(m).closed() && meshes::enclosed_volume(m) > 0;
+      shape.submerged.push_back(
+          {box, closed ? std::make_shared<const meshes::SolidRegion>(
+                             m, "Scene/Wall " + w.parameters.name + " (submerged in the fill)")
+                       : nullptr});
       if (clear_above.count(w.parameters.name))
         shape.cleared_above.push_back(box);
       if (meshes::check_closed(m).closed() && box.max.z > box.min.z)

@@ -28,9 +28,14 @@ struct SceneFillShape {
   double floor_z = 0;   ///< [m] the bed's floor
   double footprint = 0; ///< [m^2] horizontal area of a bed
   double full_top = 0;  ///< [m] the region's top before a bed height cuts it
-  /// [m] bounding boxes of the walls wholly inside the region (submerged, like a sample in a
-  /// bed): no centre is placed within a largest diameter of them
-  std::vector<meshes::BoundingBox> submerged;
+  /// A wall wholly inside the region (submerged, like a sample in a bed): no centre is placed
+  /// inside its solid or within a largest diameter of its surface when it is closed, within a
+  /// largest diameter of its bounding box when it is not.
+  struct Submerged {
+    meshes::BoundingBox box;                          ///< [m]
+    std::shared_ptr<const meshes::SolidRegion> solid; ///< none: an open surface
+  };
+  std::vector<Submerged> submerged;
   /// [m] bounding boxes of the submerged walls of Fill/Clear above: no centre above them
   std::vector<meshes::BoundingBox> cleared_above;
   double clearance = 0;        ///< [m] that diameter

@@ -209,6 +209,11 @@ void validate_evaluation(const SceneParameters& s) {
 
 } // namespace
 
+bool snapshot_due(const SceneParameters& s, int k) {
+  return s.particle_snapshots || std::find(s.snapshot_records.begin(), s.snapshot_records.end(),
+                                           k) != s.snapshot_records.end();
+}
+
 void validate(const SceneParameters& s) {
   const auto three = [](const std::vector<double>& v, const std::string& what) {
     if (v.size() != 3)
@@ -322,6 +327,10 @@ void validate(const SceneParameters& s) {
     throw std::invalid_argument("Scene/End time must be positive [s]");
   if (!(s.output_interval > 0))
     throw std::invalid_argument("Scene/Output interval must be positive [s]");
+  for (const int k : s.snapshot_records)
+    if (k < 1)
+      throw std::invalid_argument("Scene/Snapshot records: " + std::to_string(k) +
+                                  " is not a record (they count from 1)");
   const auto inside_domain = [&](const std::vector<double>& lo, const std::vector<double>& hi,
                                  const std::string& what) {
     for (int d = 0; d < 3; ++d) {

@@ -130,6 +130,8 @@ struct SceneParameters {
   double end_time = 1;                           ///< [s] simulated
   double output_interval = 0.05;                 ///< [s] between records
   bool particle_snapshots = true;                ///< particles_<k>.vtu at every record
+  /// otherwise particles_<k>.vtu at these records k (counted from 1 after the fill settled)
+  std::vector<int> snapshot_records;
   /// [s] DEM time of a stage of the wear loop (Coupling/Schedule) when a wall wears; 0: no
   /// stages, the scene runs to End time
   double stage_duration = 0;
@@ -170,7 +172,8 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
   v.enter("Scene");
   v.text("Walls", s.wall_names,
          "Names of the scene's walls, comma-separated; each has a subsection 'Wall <name>'. "
-         "Empty: no scene (the built-in wear tester of the Geometry subsection).");
+         "Empty: a wear-tester case, whose scene is written from its Geometry and DEM "
+         "subsections (`wearsim tester-scene` prints it).");
   v.text("Inlets", s.inlet_names,
          "Names of the particle inlets, comma-separated; each has a subsection 'Inlet <name>'.");
   v.text("Outlets", s.outlet_names,
@@ -188,7 +191,12 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
          "[s] Simulated time between records of the run's series (and progress lines).");
   v.boolean("Particle snapshots", s.particle_snapshots,
             "Write the particles at every record (particles_<k>.vtu: position, velocity, "
-            "radius, ...); false: the tables and walls only (a long run's disk, or a timing).");
+            "radius, ...); false: the tables and walls only (a long run's disk, or a timing), "
+            "and the particles at the Snapshot records.");
+  v.int_list("Snapshot records", s.snapshot_records,
+             "With Particle snapshots = false, the particles are written at these records "
+             "(particles_<k>.vtu; record k ends k Output intervals after the fill has "
+             "settled): a few pictures of a long run. Empty: none.");
   v.real("Periodic sector", s.periodic_angle_deg,
          "[deg] The scene is the sector 0 <= theta < angle about the z axis through the "
          "origin, its two planes joined periodically (a particle leaving one enters through "
@@ -233,7 +241,8 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
               "cylinder, or the solid a closed mesh or CAD file encloses (the DEM subsection's "
               "size distribution and particle material). The region may not cut or touch a "
               "wall; a wall wholly inside it stands submerged in the fill (a part in a bed): "
-              "no particle is placed within a largest diameter of its bounding box, and a bed "
+              "no particle is placed inside it or within a largest diameter of its surface "
+              "(of its bounding box when the wall is not a closed surface), and a bed "
               "height's count leaves out its volume.");
   v.text("File", s.fill.file,
          "Region = mesh: a closed STL, or a STEP, IGES or BREP solid, relative to the working "
@@ -270,7 +279,7 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
          "true): per Period, the wear-law volume per column of the pattern and per convex "
          "element, the normal force on the wear face, the bottom layer's speed and spin, the "
          "speed over the sample, the bed height and the coefficients of variation that judge "
-         "steady state, as the built-in tester's revolutions (docs/wear-tester.md); written "
+         "steady state, as per revolution of the wear tester (docs/wear-tester.md); written "
          "to parts/<wall>/summary.csv and history.h5, which `wearsim compare --part <wall>` "
          "reads. Its samples are the records (Output interval). Empty: none.");
   v.real("Period", s.evaluation.period,
@@ -422,6 +431,10 @@ std::string rank_slab_axis(const SceneParameters& s);
 bool rank_ring(const SceneParameters& s);
 /// True for the motions that move the wall's geometry (rotation, translation, oscillation).
 bool moves_rigidly(const SceneWallParameters& w);
+
+/// True when record k (from 1) writes the particles: every record with Particle snapshots, else
+/// the Snapshot records.
+bool snapshot_due(const SceneParameters& s, int k);
 
 /// Checks the values on their own (list lengths, signs, a file given where needed); throws
 /// std::invalid_argument naming the parameter by its case-file path.

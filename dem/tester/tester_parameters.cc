@@ -15,6 +15,8 @@ void validate(const TesterDemParameters& p) {
   require_dem(p.samples_per_revolution >= 2, "Samples per revolution", "must be at least 2");
   require_dem(p.steady_threshold > 0, "Steady threshold", "must be positive");
   require_dem(p.steady_revolutions >= 1, "Steady revolutions", "must be at least 1");
+  for (const int r : p.snapshot_revolutions)
+    require_dem(r >= 1, "Snapshot revolutions", "must be revolutions from 1 on");
 }
 
 } // namespace wear::dem

@@ -37,8 +37,9 @@ void visit_tester_parameters(TesterDemParameters& d, Visitor& v) {
   v.integer("Revolutions", d.revolutions, 1, 100000,
             "Revolutions to run (one revolution = one pass of the bed through the sector).");
   v.integer("Revolutions after steady", d.revolutions_after_steady, 0, 100000,
-            "wearsim dem stops this many revolutions after the first steady revolution "
-            "(see Steady threshold); 0 runs all Revolutions, which stay the maximum.");
+            "A wear-tester case's run (wearsim dem, wearsim run) stops this many revolutions "
+            "after the first steady revolution (see Steady threshold; Scene/Evaluation/Periods "
+            "after steady of its scene); 0 runs all its revolutions.");
   v.integer("Samples per revolution", d.samples_per_revolution, 2, 100000,
             "Evaluation samples per revolution (forces, speeds, bed height, wear rate).");
   v.real("Steady threshold", d.steady_threshold,

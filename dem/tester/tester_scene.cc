@@ -105,6 +105,8 @@ SceneParameters tester_scene(const meshes::GeometryParameters& geometry,
   s.stage_duration = revolutions_per_stage * revolution;
   s.output_interval = revolution / dem.samples_per_revolution;
   s.particle_snapshots = false;
+  for (const int r : dem.snapshot_revolutions) // the particles after these revolutions
+    s.snapshot_records.push_back(r * dem.samples_per_revolution);
   s.evaluation.wall = "sample";
   s.evaluation.period = revolution;
   s.evaluation.steady_threshold = dem.steady_threshold;

@@ -207,6 +207,9 @@ std::vector<Row> combination_rows() {
       {"a bed that cannot be inserted loosely",
        "subsection DEM\n set Assumed packing = 0.7\n set Loose factor = 1.2\nend\n",
        {"DEM/Fill height", "DEM/Loose factor"}},
+      {"a snapshot before the first revolution",
+       "subsection DEM\n set Snapshot revolutions = 0, 2\nend\n",
+       {"DEM/Snapshot revolutions", "from 1 on"}},
       {"a bed below the wear face",
        "subsection DEM\n set Fill height = 0.03\nend\n",
        {"DEM/Fill height", "Geometry/Placement/Wear face height"}},
@@ -245,7 +248,7 @@ std::vector<Row> combination_rows() {
        scene_on_a_disc() + "end\nsubsection DEM\n set Rotation rate = 45\n"
                            " set Fill height = 0.1\nend\n",
        {"2 parameters this case does not use", "DEM/Rotation rate (line 13 of",
-        "DEM/Fill height (line 14 of", "the built-in wear tester's own",
+        "DEM/Fill height (line 14 of", "a wear-tester case's own",
         "this case is a scene (Scene/Walls = floor)"},
        {},
        {},
@@ -261,7 +264,7 @@ std::vector<Row> combination_rows() {
        "scene-run"},
       {"a scene's parameter in the tester",
        "subsection Scene\n set End time = 3\nend\n",
-       {"Scene/End time (line 2 of", "the built-in wear tester (Scene/Walls is empty)"}},
+       {"Scene/End time (line 2 of", "a wear-tester case (Scene/Walls is empty)"}},
   };
 }
 

@@ -52,7 +52,7 @@ TEST_CASE("wearsim calibrate: the calibrated coefficient reproduces the measured
   p.dem.revolutions = 1;
   std::filesystem::remove_all(p.output.directory);
   std::ostringstream log;
-  run_scene_case(dem_case_of(p), log, {false, false, 0});
+  run_scene_case(dem_case_of(p), log, {false, 0});
   const double simulated = wear_of_first_revolution(p.output.directory);
   REQUIRE(simulated > 0);
 
@@ -100,6 +100,6 @@ TEST_CASE("wearsim calibrate: the calibrated coefficient reproduces the measured
   q.wear_law.archard_coefficient = c.calibrated;
   std::filesystem::remove_all(q.output.directory);
   std::ostringstream log2;
-  run_scene_case(dem_case_of(q), log2, {false, false, 0});
+  run_scene_case(dem_case_of(q), log2, {false, 0});
   CHECK(wear_of_first_revolution(q.output.directory) == Approx(measured / 40).epsilon(1e-9));
 }

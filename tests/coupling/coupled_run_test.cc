@@ -36,7 +36,7 @@ CaseParameters small_case(const std::string& dir, const std::string& schedule,
   return p;
 }
 
-std::string run_case(const CaseParameters& p, const RunOptions& o = {false, false, 0}) {
+std::string run_case(const CaseParameters& p, const RunOptions& o = {false, 0}) {
   std::ostringstream log;
   SceneCoupledRun run(run_case_of(p), log, o);
   run.run();
@@ -49,7 +49,7 @@ const PartCheckpoint& sample_part(const Checkpoint& c) {
   return c.scene.parts[0];
 }
 
-std::string error_of(const CaseParameters& p, const RunOptions& o = {false, false, 0}) {
+std::string error_of(const CaseParameters& p, const RunOptions& o = {false, 0}) {
   try {
     run_case(p, o);
   } catch (const std::exception& e) {
@@ -136,9 +136,9 @@ TEST_CASE("wearsim run: staged stages remove the amplified wear and resume bit f
 
   // Killed after the first staged stage, then resumed.
   const auto pb = with_stress_law(b);
-  run_case(pb, {false, false, 2});
+  run_case(pb, {false, 2});
   CHECK(read_checkpoint(b + "/checkpoint.h5").stages_done == 2);
-  const std::string resumed = run_case(pb, {true, false, 0});
+  const std::string resumed = run_case(pb, {true, 0});
   CHECK(resumed.find("resumed after stage 2") != std::string::npos);
   const auto cb_all = read_checkpoint(b + "/checkpoint.h5");
   REQUIRE(cb_all.stages_done == 3);
@@ -176,7 +176,7 @@ TEST_CASE("wearsim run: staged stages remove the amplified wear and resume bit f
   // Resuming with another case is refused.
   auto other = pb;
   other.coupling.amplification = 30;
-  CHECK_THAT(error_of(other, {true, false, 0}),
+  CHECK_THAT(error_of(other, {true, 0}),
              Catch::Matchers::Contains("the case differs from the one checkpoint"));
 }
 
@@ -199,7 +199,7 @@ TEST_CASE("wearsim run: bad input stops clearly and keeps the last good checkpoi
     damaged << before.substr(0, before.size() / 2);
   }
   const std::string damaged = file_text(dir + "/checkpoint.h5");
-  const std::string e2 = error_of(small_case(dir, "1 staged", 1), {true, false, 0});
+  const std::string e2 = error_of(small_case(dir, "1 staged", 1), {true, 0});
   CHECK_THAT(e2, Catch::Matchers::Contains("checkpoint.h5"));
   CHECK(file_text(dir + "/checkpoint.h5") == damaged);
 
@@ -292,7 +292,7 @@ TEST_CASE("wearsim run: past the node-moving method's distortion limit the stage
   staged.coupling.min_amplification = 5.0;
   std::filesystem::remove_all(staged.output.directory);
   std::ostringstream log;
-  SceneCoupledRun run(run_case_of(staged), log, {false, false, 0});
+  SceneCoupledRun run(run_case_of(staged), log, {false, 0});
   // The criterion is the volume reached with valid meshes; a stop after it (the schedule has a
   // margin) is reported, not hidden.
   std::string stopped = "no: the whole schedule ran";

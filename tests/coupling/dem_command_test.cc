@@ -1,7 +1,8 @@
 // `wearsim dem` end to end on a small tester (30-degree sector, s = 4, shallow bed, coarse
 // convex sample, one pass of the sector, the node-moving method), run as the scene
 // `wearsim dem` runs it (dem_case_of): the output files exist, every summary column is there
-// and finite, wear is positive, and the face sets add up to the per-contact total.
+// and finite, wear is positive, the face sets add up to the per-contact total, and the
+// particles are written after the revolutions DEM/Snapshot revolutions names.
 #include "coupling/app/run_command.h"
 #include "coupling/parameters/tester_scene_case.h"
 #include "small_tester.h"
@@ -55,11 +56,18 @@ TEST_CASE("wearsim dem: a short run writes complete, consistent results", "[coup
   const std::string dir = "dem_command_out";
   std::filesystem::remove_all(dir);
   std::ostringstream log;
-  CHECK(run_scene_case(dem_case_of(small_case(dir, true)), log, {false, false, 0}) == 0);
+  CHECK(run_scene_case(dem_case_of(small_case(dir, true)), log, {false, 0}) == 0);
   INFO(log.str());
   for (const char* f : {"parts/sample/history.h5", "parts/sample/history.xdmf",
                         "parts/sample/summary.csv", "parameters.prm"})
     CHECK(std::filesystem::file_size(dir + "/" + f) > 0);
+  // DEM/Snapshot revolutions (1, and the last, also 1): the particles once, at the last of the
+  // revolution's 5 records, and at no other.
+  std::vector<std::string> snapshots;
+  for (const auto& e : std::filesystem::directory_iterator(dir))
+    if (e.path().filename().string().rfind("particles_", 0) == 0)
+      snapshots.push_back(e.path().filename().string());
+  CHECK(snapshots == std::vector<std::string>{"particles_5.vtu"});
   const auto rows = read_csv(dir + "/parts/sample/summary.csv");
   REQUIRE(rows.size() == 1);
   const auto& r = rows[0];
@@ -107,7 +115,7 @@ TEST_CASE("wearsim dem: the reference convex case, one revolution", "[coupling][
   p.output.directory = "dem_reference_out";
   std::ostringstream log;
   std::filesystem::remove_all(p.output.directory);
-  run_scene_case(dem_case_of(p), log, {false, false, 0});
+  run_scene_case(dem_case_of(p), log, {false, 0});
   const auto rows = read_csv(p.output.directory + "/parts/sample/summary.csv");
   REQUIRE(rows.size() == 1);
   CHECK(std::stod(rows[0].at("wear_volume_m3")) > 0);

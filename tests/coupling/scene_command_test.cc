@@ -168,9 +168,9 @@ TEST_CASE("a scene's series writes a wall that keeps its place once, a moving bo
   const std::string dir = "scene_series_walls";
   std::filesystem::remove_all(dir);
   wear::meshes::ensure_directory(dir);
-  SceneSeries series(dir, run, false);
+  SceneSeries series(dir, run);
   for (int k = 1; k <= 2; ++k)
-    series.add(wear::dem::SceneWindow{}, run, wear::dem::Particles{});
+    series.add(wear::dem::SceneWindow{}, run, wear::dem::Particles{}, false);
   for (const char* name : {"belt", "left"}) {
     CHECK(std::filesystem::exists(dir + "/walls/" + name + ".vtu"));
     CHECK_FALSE(std::filesystem::exists(dir + "/walls_1/" + name + ".vtu"));

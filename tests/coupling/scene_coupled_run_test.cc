@@ -268,12 +268,12 @@ TEST_CASE("scene wear loop: the reference scheme moves a part's nodes inside the
   const auto split_case = read_text(split + ".prm", in_folder(split));
   {
     std::ostringstream first_log;
-    SceneCoupledRun first(split_case, first_log, {false, false, 1});
+    SceneCoupledRun first(split_case, first_log, {false, 1});
     REQUIRE(first.run() == 0);
     REQUIRE(first.parts()[0].stages().size() == 1);
   }
   std::ostringstream resumed_log;
-  SceneCoupledRun resumed(split_case, resumed_log, {true, false, 0});
+  SceneCoupledRun resumed(split_case, resumed_log, {true, 0});
   REQUIRE(resumed.run() == 0);
   INFO(resumed_log.str());
   REQUIRE(resumed.parts()[0].stages().size() == 2);
@@ -367,7 +367,8 @@ TEST_CASE("scene wear loop: stopped by a signal or killed inside a stage, resume
     const int status = wait_for(pid);
     INFO(file_text(b + ".log"));
     if (signal == SIGTERM && status == 128 + SIGTERM)
-      CHECK_THAT(file_text(b + ".log"), Catch::Contains("continue with wearsim run --resume"));
+      CHECK_THAT(file_text(b + ".log"),
+                 Catch::Contains("continue with wearsim scene-run --resume"));
     else if (status == 0)
       WARN("the run ended before the signal came; its resume below has nothing left to do");
     REQUIRE(run_wearsim(b + ".prm", "--resume", b + ".resumed.log", "scene-run") == 0);

@@ -1,9 +1,7 @@
 #pragma once
 // The small wear tester the coupling tests run: a 30-degree periodic sector at s = 4 with a
 // 55 mm bed (about 2,300 particles), no consolidator, a coarse (3 mm) sample centred in the
-// sector, 2 threads. One revolution takes a few seconds. The tester runs as a scene, whose fill
-// leaves the holder's whole bounding box out of the loose bed: the shallow bed's loose fill
-// needs 3 times its height (DEM/Loose factor) where the default 2.5 fits deeper beds.
+// sector, 2 threads. One revolution takes a few seconds. The tester runs as a scene.
 #include "coupling/parameters/case_parameters.h"
 
 #include <string>
@@ -18,7 +16,6 @@ inline wear::coupling::CaseParameters small_tester_case(const std::string& dir, 
   p.geometry.tester.consolidator = false;
   p.geometry.tester.wall_height = 0.2;
   p.dem.fill_height = 0.055;
-  p.dem.loose_factor = 3;
   p.dem.settle_time = 0.15;
   p.dem.time_step_fraction = 0.35;
   p.dem.samples_per_revolution = 5;

@@ -52,7 +52,6 @@ std::string case_text(const std::string& dir) {
 end
 subsection DEM
   set Fill height            = 0.055
-  set Loose factor           = 3
   set Settle time            = 0.15
   set Time step fraction     = 0.35
   set Samples per revolution = 5

@@ -35,7 +35,7 @@ QuickRun run_quick(const std::string& kind, int threads) {
   p.output.directory = "threads_" + kind + "_" + std::to_string(threads);
   std::filesystem::remove_all(p.output.directory);
   std::ostringstream log;
-  SceneCoupledRun(run_case_of(p), log, {false, false, 0}).run();
+  SceneCoupledRun(run_case_of(p), log, {false, 0}).run();
   QuickRun r;
   std::ifstream in(p.output.directory + "/parts/sample/summary.csv");
   for (std::string row; std::getline(in, row);)

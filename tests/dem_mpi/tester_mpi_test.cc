@@ -41,7 +41,6 @@ struct SmallTester {
     geometry.tester.consolidator = false;
     geometry.tester.wall_height = 0.2;
     dem.fill_height = 0.055;
-    dem.loose_factor = 3;   // the scene fill leaves the holder's bounding box out (small_tester.h)
     dem.settle_time = 0.05; // the settling stops at its first check past it, t = 0.06 s
     dem.time_step_fraction = 0.35;
     dem.samples_per_revolution = 5;

@@ -1,5 +1,7 @@
 #!/bin/bash
-# The wear tester as a scene against the built-in tester: the small sector (cases/sector-30, plain
+# The wear tester as a scene against the built-in tester of an older engine (TESTER: engine
+# 883d1d5 or before, whose `wearsim run` ran a tester case on the built-in tester; the current
+# engine runs a tester case as its scene, so both paths would be one): the small sector (cases/sector-30, plain
 # and convex, 30-degree sector, s = 4, 2 dem-only and 4 staged revolutions at 20x) run both
 # ways over the same insertion seeds, the scene written from the same case by
 # `wearsim tester-scene`, one thread per run, as many runs at once as the machine
@@ -13,6 +15,7 @@
 # per kind the scene against the tester (compare-plain.txt, compare-convex.txt).
 #
 # usage: bash cases/reference/scene/scene_vs_tester.sh [seed ...]
+#        TESTER=<path> (required) the older engine's binary for the tester path
 #        (default seeds 1 2 3: 16 min on 2 cores beside the test suite; JOBS=<n> sets the runs at once;
 #         WEARSIM=<path> the binary, default build/wearsim; OUTPUT=<folder> the runs' folder,
 #         default output/reference-scene; CASES=<folder> the plain.prm and convex.prm to run,
@@ -29,6 +32,9 @@ done
 [ ${#seeds[@]} -gt 0 ] || seeds=(1 2 3)
 wearsim=${WEARSIM:-build/wearsim}
 [ -x "$wearsim" ] || { echo "scene_vs_tester.sh: $wearsim not found; run bash scripts/build.sh" >&2; exit 1; }
+tester=${TESTER:-}
+[ -n "$tester" ] && [ -x "$tester" ] ||
+  { echo "scene_vs_tester.sh: TESTER='$tester' is not an executable: name the binary of an engine with the built-in tester (883d1d5 or older; git worktree add <dir> 883d1d5 and build it)" >&2; exit 2; }
 source scripts/run_pool.sh
 pool_init "scene vs tester" "${JOBS:-$(nproc)}" || exit 2
 root=${OUTPUT:-output/reference-scene}
@@ -46,7 +52,7 @@ run_one() { # <path: tester|scene> <kind> <seed>
       -e "s|set Directory = .*|set Directory = $out|" "$cases/$2.prm" > "$out.prm"
   [ -z "$schedule" ] || sed -i -e "s|set Schedule *= .*|set Schedule = $schedule|" "$out.prm"
   if [ "$1" = tester ]; then
-    "$wearsim" run --overwrite "$out.prm" > "$out.log" 2>&1
+    "$tester" run --overwrite "$out.prm" > "$out.log" 2>&1
   else
     "$wearsim" tester-scene "$out.prm" | sed -e "s|set Directory = .*|set Directory = $out|" \
       > "$out.scene.prm"
