@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Compares two run folders' tables column by column, as text, leaving out the wall-clock
 columns (which differ between any two runs): summary.csv and stages.csv (a tester case's are
-its part's, parts/sample/) and, when both runs have it, scene_series.csv. Exits 1 on any
-difference.
+its part's, parts/sample/) and scene_series.csv, those that either run has. Exits 1 on any
+difference, a table one run lacks included.
 
     python3 scripts/compare_physical_columns.py RUN_A RUN_B
 
@@ -56,12 +56,16 @@ def main():
     if len(sys.argv) != 3:
         sys.exit(__doc__)
     a, b = sys.argv[1:]
+    pairs = [(os.path.join(tables_of(a), name), os.path.join(tables_of(b), name))
+             for name in ("summary.csv", "stages.csv")]
+    pairs.append((os.path.join(a, "scene_series.csv"), os.path.join(b, "scene_series.csv")))
+    pairs = [(x, y) for x, y in pairs if os.path.isfile(x) or os.path.isfile(y)]
+    if not pairs:
+        sys.exit(f"{a} and {b} hold no summary.csv, stages.csv or scene_series.csv")
     status = 0
-    for name in ("summary.csv", "stages.csv"):
-        status |= compare(os.path.join(tables_of(a), name), os.path.join(tables_of(b), name))
-    series = [os.path.join(run, "scene_series.csv") for run in (a, b)]
-    if all(os.path.isfile(f) for f in series):
-        status |= compare(*series)
+    for x, y in pairs:  # a table one run has and the other lacks is a difference
+        status |= compare(x, y) if os.path.isfile(x) and os.path.isfile(y) else (
+            print(f"{x if not os.path.isfile(x) else y}: missing") or 1)
     return status
 
 
