@@ -1,22 +1,20 @@
-// Bad input to `wearsim run`, one table row each, refused before any particle exists: each row
-// is run through run_run_command (the code behind `wearsim run`) and through the wearsim
-// program, and must throw / exit with status 1 with a message naming the parameter or file.
-// No particle was created: a row refused by the case file leaves its output folder
-// unmade (read_case runs before anything is written); a row refused at the run's set-up
-// leaves no "bed:" line in the log and the folder's checkpoint as it was.
-// Rows: out-of-range values (a rolling friction above its bound of 1 among them);
-// inconsistent combinations (case_consistency.h: depth cap, sample and consolidator in the
-// sector, bed against walls and wear face, worn-through thickness, element shape, a scene's
-// Fill/Count above what its region holds, through `wearsim scene-run`); parameters the case
-// does not use (the tester's in a scene, a scene's in the tester: case_scope.h); files (a missing
-// case file, a missing INCLUDE, a file that INCLUDEs itself, two that INCLUDE each other); the
-// output folder (unwritable, a file, holding a run); checkpoints (missing, truncated, of
-// another case); the command line. The program runs first, under a time limit: a row that
-// crashes or hangs it (an INCLUDE loop overflowed the stack; a fill count of 1e9 tried for
-// minutes) fails on its exit status instead of taking this test down with it. Also: settings
-// that run but not as meant are warned, not refused (a parameter set twice in one file among
-// them); the empty case file passes every check (default suite) and runs to completion
-// (label "long").
+// Bad input to `wearsim run`, one table row each, refused before any particle exists: each row is
+// run through run_run_command (the code behind `wearsim run`) and through the wearsim program, and
+// must throw / exit with status 1 with a message naming the parameter or file. No particle was
+// created: a row refused by the case file leaves its output folder unmade (read_case runs before
+// anything is written); a row refused at the run's set-up leaves no "bed:" line in the log and the
+// folder's checkpoint as it was. Rows: out-of-range values (a rolling friction above its bound of 1
+// among them); inconsistent combinations (case_consistency.h: depth cap, sample and consolidator in
+// the sector, bed against walls and wear face, worn-through thickness, element shape, a scene's
+// Fill/Count above what its region holds, through `wearsim scene-run`); parameters the case does
+// not use (the tester's in a scene, a scene's in the tester: case_scope.h); files (a missing case
+// file, a missing INCLUDE, a file that INCLUDEs itself, two that INCLUDE each other); the output
+// folder (unwritable, a file, holding a run); checkpoints (missing, truncated, of another case);
+// the command line. The program runs first, under a time limit: a row that crashes or hangs it (an
+// INCLUDE loop overflowed the stack; a fill count of 1e9 tried for minutes) fails on its exit
+// status instead of taking this test down with it. Also: settings that run but not as meant are
+// warned, not refused (a parameter set twice in one file among them); the empty case file passes
+// every check (default suite) and runs to completion (label "long").
 #include "coupling/app/run_command.h"
 #include "coupling/app/scene_run_command.h"
 #include "coupling/output/checkpoint.h"
@@ -207,9 +205,6 @@ std::vector<Row> combination_rows() {
       {"a bed that cannot be inserted loosely",
        "subsection DEM\n set Assumed packing = 0.7\n set Loose factor = 1.2\nend\n",
        {"DEM/Fill height", "DEM/Loose factor"}},
-      {"a snapshot before the first revolution",
-       "subsection DEM\n set Snapshot revolutions = 0, 2\nend\n",
-       {"DEM/Snapshot revolutions", "from 1 on"}},
       {"a bed below the wear face",
        "subsection DEM\n set Fill height = 0.03\nend\n",
        {"DEM/Fill height", "Geometry/Placement/Wear face height"}},

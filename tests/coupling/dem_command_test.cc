@@ -68,6 +68,10 @@ TEST_CASE("wearsim dem: a short run writes complete, consistent results", "[coup
     if (e.path().filename().string().rfind("particles_", 0) == 0)
       snapshots.push_back(e.path().filename().string());
   CHECK(snapshots == std::vector<std::string>{"particles_5.vtu"});
+  wear::dem::TesterDemParameters before_first = small_case(dir, true).dem;
+  before_first.snapshot_revolutions = {0, 2};
+  CHECK_THROWS_WITH(wear::dem::validate(before_first),
+                    Catch::Contains("DEM/Snapshot revolutions") && Catch::Contains("from 1 on"));
   const auto rows = read_csv(dir + "/parts/sample/summary.csv");
   REQUIRE(rows.size() == 1);
   const auto& r = rows[0];
