@@ -144,8 +144,9 @@ TEST_CASE("wearsim scene: bad scenes are refused naming the wall, before anythin
 
   // The tester's commands refuse a scene rather than ignore it.
   const auto p = read_text("scene_run.prm", scene_case("scene_bad_out"));
-  CHECK(error_of([&] { require_no_scene(p, "dem"); }).find("`wearsim dem` runs the built-in") !=
-        std::string::npos);
+  CHECK(error_of([&] {
+          require_no_scene(p, "dem");
+        }).find("`wearsim dem` takes a wear-tester case") != std::string::npos);
   CaseParameters tester;
   CHECK_NOTHROW(require_no_scene(tester, "dem"));
 }

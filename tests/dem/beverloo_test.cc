@@ -67,7 +67,7 @@ Discharge discharge(double orifice) {
   for (std::size_t i = 0; i < p.n_real; ++i)
     z[i] = p.position[i].z;
   std::sort(z.begin(), z.end());
-  const std::size_t layer = std::size_t(3.14159 * 0.1 * 0.1 / (0.866 * d * d));
+  const std::size_t layer = std::size_t(wear::pi * 0.1 * 0.1 / (0.866 * d * d));
   double top = 0;
   for (std::size_t k = z.size() - layer; k < z.size(); ++k)
     top += z[k];

@@ -4,6 +4,7 @@
 #include "dem/scene/inlet.h"
 #include "dem/scene/outlet.h"
 #include "dem_fixtures.h"
+#include "meshes/constants.h"
 
 #include <catch2/catch.hpp>
 
@@ -87,7 +88,7 @@ TEST_CASE("inlet: the requested mass flow crosses a plane below it, and every pa
   const double measured = crossed / (s.time() - window_start);
   INFO("inserted " << inlet.state().n_inserted << " particles, " << n_removed << " removed");
   CHECK(measured == Approx(rate).epsilon(0.02));
-  CHECK(max_owed <= 0.5 * 2650 * 3.14159 / 6 * 0.008 * 0.008 * 0.008); // half a particle
+  CHECK(max_owed <= 0.5 * 2650 * wear::pi / 6 * 0.008 * 0.008 * 0.008); // half a particle
   // Inserted = in the system + removed, exactly in count.
   CHECK(n_start + inlet.state().n_inserted == s.particles.n_real + n_removed);
   CHECK(outlets[0].n_removed == n_removed);

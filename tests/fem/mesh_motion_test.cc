@@ -144,8 +144,7 @@ TEST_CASE("tetrahedron quality measures", "[fem][motion]") {
   // acos(1/sqrt(3)) = 54.7 deg.
   CHECK(q.n_inverted == 0);
   CHECK(q.min_scaled_jacobian == Approx(1 / std::sqrt(2.0)).epsilon(1e-12));
-  CHECK(q.min_dihedral_deg ==
-        Approx(std::acos(1 / std::sqrt(3.0)) * 180 / 3.14159265358979).epsilon(1e-9));
+  CHECK(q.min_dihedral_deg == Approx(std::acos(1 / std::sqrt(3.0)) * 180 / wear::pi).epsilon(1e-9));
   CHECK(q.max_dihedral_deg == Approx(90).epsilon(1e-9));
   CHECK_THROWS_WITH(volume_exact_recession(extract_boundary_surface(tria), {1.0}),
                     Catch::Contains("face volumes"));

@@ -2,6 +2,7 @@
 // whether a scene's fill region cuts a wall: set cases on either side of the boundary, and random
 // triangles against dense point sampling (a sampled point inside the region must make the test
 // true; a test that says false must have every sample outside).
+#include "meshes/constants.h"
 #include "meshes/solid_region.h"
 #include "meshes/triangle_geometry.h"
 #include "test_shapes.h"
@@ -69,7 +70,7 @@ TEST_CASE("triangle and cylinder: either side of the mantle, the caps, parallel 
 
 TEST_CASE("triangle and cylinder or box: random triangles agree with dense sampling", "[meshes]") {
   std::mt19937 rng(17);
-  std::uniform_real_distribution<double> x(-1.5, 1.5), angle(0, 3.14159265358979);
+  std::uniform_real_distribution<double> x(-1.5, 1.5), angle(0, wear::pi);
   int n_true = 0, n_false = 0, n_unsampled = 0;
   for (int k = 0; k < 2000; ++k) {
     const double t = angle(rng), p = 2 * angle(rng);
