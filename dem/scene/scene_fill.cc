@@ -57,12 +57,12 @@ FillRegion SceneFillShape::region(double margin, double z_top) const {
   FillRegion r = outline(margin, z_top);
   if (submerged.empty())
     return r;
-  r.inside = [in = r.inside, boxes = submerged, above = cleared_above,
+  r.inside = [in = r.inside, walls = submerged, above = cleared_above,
               c = clearance](const Vec3& x) {
     const auto beside = [&](const meshes::BoundingBox& b) {
       return x.x > b.min.x - c && x.x < b.max.x + c && x.y > b.min.y - c && x.y < b.max.y + c;
     };
-    for (const auto& w : boxes)
+    for (const auto& w : walls)
       if (beside(w.box) && x.z > w.box.min.z - c && x.z < w.box.max.z + c &&
           (!w.solid || w.solid->distance(x) < c || w.solid->contains(x)))
         return false;
@@ -167,16 +167,17 @@ void require_clear_of_walls(const std::vector<SceneWall>& walls, SceneFillShape&
     const auto& m = w.surface.mesh;
     if (!m.vertices.empty() && shape.contains_all(m.vertices)) {
       const meshes::BoundingBox box = meshes::bounding_box(m);
-      const bool closed = meshes::check_closed(m).closed() && meshes::enclosed_volume(m) > 0;
+      const bool closed = meshes::check_closed(m).closed();
+      const double volume = closed ? meshes::enclosed_volume(m) : 0; // [m^3] signed
       shape.submerged.push_back(
-          {box, closed ? std::make_shared<const meshes::SolidRegion>(
-                             m, "Scene/Wall " + w.parameters.name + " (submerged in the fill)")
-                       : nullptr});
+          {box, volume > 0 ? std::make_shared<const meshes::SolidRegion>(
+                                 m, "Scene/Wall " + w.parameters.name + " (submerged in the fill)")
+                           : nullptr});
       if (clear_above.count(w.parameters.name))
         shape.cleared_above.push_back(box);
-      if (meshes::check_closed(m).closed() && box.max.z > box.min.z)
+      if (closed && box.max.z > box.min.z)
         shape.submerged_volume +=
-            std::fabs(meshes::enclosed_volume(m)) *
+            std::fabs(volume) *
             std::clamp((bed_top - box.min.z) / (box.max.z - box.min.z), 0.0, 1.0);
       continue;
     }
