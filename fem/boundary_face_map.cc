@@ -19,8 +19,10 @@ Cell cell_of(const meshes::Vec3& p, double h) {
 }
 } // namespace
 
-meshes::SurfaceMesh extract_boundary_surface(const dealii::Triangulation<3>& tria) {
+meshes::SurfaceMesh extract_boundary_surface(const dealii::Triangulation<3>& tria,
+                                             const meshes::LabelRoles& roles) {
   meshes::SurfaceMesh m;
+  m.roles = roles;
   std::map<unsigned int, std::uint32_t> vertex;
   for (const auto& cell : tria.active_cell_iterators())
     for (const auto f : cell->face_indices()) {

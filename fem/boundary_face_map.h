@@ -17,8 +17,10 @@ struct BoundaryFace {
 };
 
 /// The boundary of a tetrahedral triangulation as a SurfaceMesh: one triangle per boundary
-/// face, oriented outward, labelled with the face's boundary id, vertices shared.
-meshes::SurfaceMesh extract_boundary_surface(const dealii::Triangulation<3>& tria);
+/// face, oriented outward, labelled with the face's boundary id, vertices shared; its labels
+/// take `roles` (a boundary id says nothing of its role).
+meshes::SurfaceMesh extract_boundary_surface(const dealii::Triangulation<3>& tria,
+                                             const meshes::LabelRoles& roles);
 
 class BoundaryFaceMap {
 public:

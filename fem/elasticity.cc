@@ -1,19 +1,20 @@
 // Linear elasticity on the sample (docs/theory.md section 6.2).
 //
 //   -div sigma(u) = 0,  sigma = lambda tr(eps) I + 2 mu eps,  eps = sym grad u
-//   u = 0 on the bottom face (label 1) or a part's clamped surfaces; sigma n = t_f = F_f / A_f on
-//   surface face f with the holder: u . n = 0 on the sides (label 2), tangential traction zero
-//   there
+//   u = 0 on the faces whose role is clamped (the sample's bottom, a part's clamped surfaces);
+//   sigma n = t_f = F_f / A_f on surface face f; on the held faces (the sample's sides in its
+//   holder) u . n = 0 and zero tangential traction
 // with F_f the extensive force field (window-averaged face loads), so the applied total
 // force equals sum_f F_f exactly (the traction is constant on each face and integrated
 // exactly). FE_SimplexP of degree 1 or 2 per component, Gauss simplex quadrature of
 // degree + 1, affine mapping. Solver: CG with Trilinos ML AMG, the six rigid-body
 // modes as near null space. Reaction: the nodal residual K u - f of the unconstrained
 // system summed over the constrained DoFs per component (bottom and, held, sides).
-// The holder's sides: the holder's walls are normal to x or y in the sample frame, so
-// u . n = 0 constrains one displacement component of each side DoF to zero (both at the
-// vertical edges, all three where a side meets the clamped bottom), the axis nearest the
-// side face's normal; a side face more than 30 degrees off both axes stops the solve.
+// Held faces: their support (the holder's walls, normal to x or y in the sample frame; a
+// part's frame) is normal to an axis, so u . n = 0 constrains one displacement component of
+// each DoF of the face to zero (both at an edge between two held faces, all three where a
+// held face meets a clamped one), the axis nearest the face's normal; a held face more than
+// 30 degrees off every axis stops the solve.
 // Stresses: von Mises sqrt(3/2 s:s) (s deviatoric) and principal stresses (eigenvalues of
 // the symmetric tensor), averaged over each cell's quadrature points for output; the
 // maxima use every quadrature point. The measures that converge under refinement
@@ -153,15 +154,16 @@ void ElasticitySolver::setup_system() {
   constraints_.clear();
   DoFTools::make_hanging_node_constraints(dof_handler_, constraints_);
   const Functions::ZeroFunction<3> zero(3);
+  const meshes::LabelRoles& roles = faces_.surface().roles;
   for (const auto id : tria_.get_boundary_ids())
-    if (meshes::label::clamped(int(id)))
+    if (roles.clamped(int(id)))
       VectorTools::interpolate_boundary_values(mapping_, dof_handler_, id, zero, constraints_);
-  if (p_.holder_support)
+  if (roles.any(meshes::FaceRole::held))
     constrain_held_sides();
   constraints_.close();
   if (constraints_.n_constraints() == 0)
     throw std::runtime_error("FEM: no degree of freedom lies on a clamped face (the sample's "
-                             "bottom, id 1, or a part's clamped surfaces, ids 3001 ...)");
+                             "bottom, or a part's clamped surfaces)");
   DynamicSparsityPattern dsp(dof_handler_.n_dofs());
   DoFTools::make_sparsity_pattern(dof_handler_, dsp, constraints_, false);
   matrix_.reinit(dsp);
@@ -171,22 +173,29 @@ void ElasticitySolver::setup_system() {
 }
 
 void ElasticitySolver::constrain_held_sides() {
+  const meshes::LabelRoles& roles = faces_.surface().roles;
   std::vector<types::global_dof_index> face_dofs;
   for (const auto& cell : dof_handler_.active_cell_iterators())
     for (const auto f : cell->face_indices()) {
       const auto face = cell->face(f);
-      if (!face->at_boundary() || face->boundary_id() != types::boundary_id(meshes::label::side))
+      if (!face->at_boundary() || !roles.held(int(face->boundary_id())))
         continue;
       const Tensor<1, 3> n =
           cross_product_3d(face->vertex(1) - face->vertex(0), face->vertex(2) - face->vertex(0));
       const double norm = n.norm();
-      // The holder wall it rests on: normal to x or y. A worn side may tilt slightly (its top
-      // vertices recede with the wear face), the wall does not; a side more than 30 degrees
-      // off both axes is no side of the box sample.
-      const unsigned int axis = std::abs(n[0]) > std::abs(n[1]) ? 0 : 1;
+      // The support it rests on is normal to an axis of the frame (the holder's walls: x or
+      // y). A worn side may tilt slightly (its top vertices recede with the wear face), the
+      // support does not; a face more than 30 degrees off every axis has no such support.
+      unsigned int axis = 0;
+      for (unsigned int d = 1; d < 3; ++d)
+        if (std::abs(n[d]) > std::abs(n[axis]))
+          axis = d;
       if (!(std::abs(n[axis]) > std::cos(30 * numbers::PI / 180) * norm))
-        throw std::runtime_error("FEM: a side face (label 2) is not normal to x or y; the "
-                                 "holder's support (u . n = 0) needs the box sample's sides");
+        throw std::runtime_error("FEM: a held face (label " +
+                                 meshes::label::name(int(face->boundary_id())) +
+                                 ") is not normal to x, y or z within 30 degrees; the support "
+                                 "(u . n = 0) holds faces normal to an axis of the part's "
+                                 "frame, as the box sample's sides in its holder");
       face_dofs.resize(fe_.n_dofs_per_face(f));
       face->get_dof_indices(face_dofs);
       for (unsigned int i = 0; i < face_dofs.size(); ++i)
@@ -356,7 +365,7 @@ StressSamples ElasticitySolver::compute_stresses(ElasticityResult& r) {
         const int id = int(cell->face(f)->boundary_id());
         auto& m = r.max_von_mises_per_label[id];
         m = std::max(m, cell_max[cell->active_cell_index()]);
-        clamped = clamped || meshes::label::clamped(id);
+        clamped = clamped || faces_.surface().roles.clamped(id);
       }
     // Vertices on the clamped face may belong to cells without a clamped face.
     cell->get_dof_indices(dofs);

@@ -31,10 +31,6 @@ struct ElasticityParameters {
   /// [m] radius of the ball the stress is averaged over (stress_measures.h); 0: no ball
   /// average (a coupled run sets the mean particle radius when the case file gives 0)
   double averaging_radius = 0;
-  /// The sample sits in its holder (Geometry/Tester/Holder = frame; a coupled run sets this
-  /// from the geometry): the sides (label 2) keep zero normal displacement and slide freely
-  /// along the frame's walls (docs/theory.md section 6); false: traction-free sides.
-  bool holder_support = false;
 };
 
 struct ElasticityResult {
@@ -42,7 +38,7 @@ struct ElasticityResult {
   double setup_seconds = 0, assemble_seconds = 0, solve_seconds = 0;
   meshes::Vec3 applied_force; ///< [N] sum of the applied face forces
   /// [N] force the supports exert on the sample: the clamped bottom, and the holder's walls
-  /// on the sides with holder_support
+  /// on the held faces (the sample's sides in a holder)
   meshes::Vec3 reaction_force;
   /// [Pa] largest von Mises over all quadrature points: mesh-dependent, it grows without
   /// bound under refinement near a contact load (docs/theory.md)
@@ -86,7 +82,9 @@ public:
 
 private:
   void setup_system();
-  /// With holder_support: u . n = 0 on the sides (label 2), into constraints_.
+  /// u . n = 0 on the faces whose role is held (the sample's sides in its holder: they keep
+  /// zero normal displacement and slide along the holder's walls, docs/theory.md section 6),
+  /// into constraints_.
   void constrain_held_sides();
   void assemble_system(const meshes::FaceField<meshes::Vec3>& forces, ElasticityResult& r);
   void solve(ElasticityResult& r);

@@ -172,7 +172,7 @@ std::vector<Vec3> tangential_relaxation(const meshes::SurfaceMesh& surface,
   for (std::size_t f = 0; f < surface.n_faces(); ++f)
     for (const auto v : surface.triangles[f]) {
       const int l = surface.face_labels[f];
-      if (!meshes::label::wears(l) || (label[v] >= 0 && label[v] != l))
+      if (!surface.roles.wears(l) || (label[v] >= 0 && label[v] != l))
         free[v] = 0;
       label[v] = l;
     }
@@ -206,8 +206,7 @@ std::vector<Vec3> crease_relaxation(const meshes::SurfaceMesh& surface, double w
   std::vector<std::array<std::int64_t, 2>> along(nv, {-1, -1});
   std::vector<int> n_along(nv, 0);
   for (const auto& [edge, faces] : meshes::edge_faces(surface)) {
-    if (faces.size() != 2 || meshes::label::wears(surface.face_labels[faces[0]]) ==
-                                 meshes::label::wears(surface.face_labels[faces[1]]))
+    if (faces.size() != 2 || surface.face_wears(faces[0]) == surface.face_wears(faces[1]))
       continue;
     for (const auto& [v, w] : {std::pair{edge.first, edge.second}, {edge.second, edge.first}}) {
       if (n_along[v] < 2)
@@ -240,7 +239,7 @@ std::vector<Vec3> unworn_relaxation(const meshes::SurfaceMesh& surface, double w
   const std::size_t nv = surface.n_vertices();
   std::vector<char> unworn(nv, 1);
   for (std::size_t f = 0; f < surface.n_faces(); ++f)
-    if (meshes::label::wears(surface.face_labels[f]))
+    if (surface.face_wears(f))
       for (const auto v : surface.triangles[f])
         unworn[v] = 0;
   const auto offset = neighbour_offsets(surface);

@@ -37,8 +37,8 @@
 // An attempt also takes a third of the time: see set_size_field.
 #include "fem/remesher.h"
 
-#include "meshes/constants.h"
 #include "fem/discrete_patches.h"
+#include "meshes/constants.h"
 #include "meshes/gmsh_session.h"
 #include "meshes/mesh_quality.h"
 #include "meshes/planar_flip.h"
@@ -513,6 +513,7 @@ meshes::SurfaceMesh remesh_sample(const meshes::SurfaceMesh& worn, const RemeshP
   if (!errors.empty())
     write_surface_msh(input, msh_path + ".refused-input.msh");
   remeshed.set_revision(worn.revision() + 1);
+  remeshed.roles = worn.roles; // the labels are the worn surface's, so are their roles
   r.n_faces_after = remeshed.n_faces();
   r.surface_distance = meshes::one_sided_distance(remeshed, worn);
   r.seconds = start.seconds();

@@ -34,12 +34,6 @@ void read_sample_mesh(const std::string& path, dealii::Triangulation<3>& tria) {
       throw std::runtime_error("mesh file '" + path + "' holds a " +
                                cell->reference_cell().to_string() +
                                " cell; the sample mesh must be tetrahedral");
-  const auto ids = tria.get_boundary_ids();
-  if (std::none_of(ids.begin(), ids.end(),
-                   [](dealii::types::boundary_id id) { return meshes::label::clamped(int(id)); }))
-    throw std::runtime_error("mesh file '" + path +
-                             "' has no boundary group to clamp ('bottom', id 1, or a part's "
-                             "clamped surface, ids 3001 ...)");
 }
 
 std::map<unsigned int, double> boundary_area(const dealii::Triangulation<3>& tria) {

@@ -9,7 +9,7 @@
 namespace wear::fem {
 
 /// Reads a gmsh 4.1 `.msh` written by meshes::generate_sample. Throws naming the file when it
-/// is missing, holds cells other than tetrahedra, or lacks the clamped bottom group.
+/// is missing or holds cells other than tetrahedra.
 void read_sample_mesh(const std::string& path, dealii::Triangulation<3>& tria);
 
 /// Total area of the boundary faces per boundary id [m^2].

@@ -32,7 +32,7 @@ namespace {
 meshes::Vec3 lowest_wearing_vertex(const meshes::SurfaceMesh& s) {
   meshes::Vec3 at{0, 0, std::numeric_limits<double>::infinity()};
   for (std::size_t f = 0; f < s.n_faces(); ++f)
-    if (meshes::label::wears(s.face_labels[f]))
+    if (s.face_wears(f))
       for (const auto v : s.triangles[f])
         if (s.vertices[v].z < at.z)
           at = s.vertices[v];
@@ -81,7 +81,7 @@ void set_aside_worn_through(const meshes::SurfaceMesh& s, double floor_z,
                             std::vector<double>& remaining, WearStageReport& r) {
   r.n_worn_through = 0;
   for (std::size_t f = 0; f < s.n_faces(); ++f)
-    if (meshes::label::wears(s.face_labels[f]))
+    if (s.face_wears(f))
       for (const auto v : s.triangles[f])
         if (s.vertices[v].z < floor_z) {
           r.worn_through_volume += remaining[f];

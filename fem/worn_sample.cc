@@ -60,7 +60,7 @@ meshes::FaceField<double> wear_face_share(const meshes::FaceField<double>& remov
                                 "' is intensive; removed volume per face [m^3] is expected");
   meshes::FaceField<double> remaining = removed;
   for (std::size_t f = 0; f < remaining.size(); ++f) {
-    if (!meshes::label::wears(surface.face_labels[f]))
+    if (!surface.face_wears(f))
       remaining[f] = 0;
     r.removed_volume += remaining[f];
   }
@@ -102,7 +102,7 @@ Remeshed remesh_and_read(const meshes::SurfaceMesh& worn, const RemeshParameters
   Remeshed out;
   out.tria = std::make_unique<dealii::Triangulation<3>>();
   read_sample_mesh(path, *out.tria);
-  auto fresh = extract_boundary_surface(*out.tria);
+  auto fresh = extract_boundary_surface(*out.tria, worn.roles);
   for (std::size_t f = 0; f < fresh.n_faces(); ++f)
     if (fresh.face_labels[f] == 0)
       throw std::runtime_error("remeshing: '" + path + "' holds a boundary face without a label");
@@ -151,10 +151,12 @@ std::vector<meshes::Vec3> fold_free_restoring_offset(const meshes::SurfaceMesh& 
 }
 } // namespace
 
-WornSample::WornSample(const std::string& msh_path, const WornSampleParameters& p) : p_(p) {
+WornSample::WornSample(const std::string& msh_path, const meshes::LabelRoles& roles,
+                       const WornSampleParameters& p)
+    : p_(p) {
   tria_ = std::make_unique<dealii::Triangulation<3>>();
   read_sample_mesh(msh_path, *tria_);
-  set_surface(extract_boundary_surface(*tria_));
+  set_surface(extract_boundary_surface(*tria_, roles));
 }
 
 WornSample::WornSample(const std::string& msh_path, const meshes::SurfaceMesh& surface,
@@ -242,6 +244,13 @@ WornSampleState WornSample::state() const {
 }
 
 void WornSample::set_surface(const meshes::SurfaceMesh& surface) {
+  bool clamped = false;
+  for (std::size_t f = 0; f < surface.n_faces() && !clamped; ++f)
+    clamped = surface.face_role(f) == meshes::FaceRole::clamped;
+  if (!clamped)
+    throw std::runtime_error("the sample's surface has no clamped face (a label with the role "
+                             "clamped: the sample's bottom, a part's Clamped surfaces); the FEM "
+                             "would have nothing to hold it");
   map_ = std::make_unique<BoundaryFaceMap>(*tria_, surface);
   removed_ =
       meshes::FaceField<double>("removed volume", "m^3", meshes::Extensivity::extensive, surface);

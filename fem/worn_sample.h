@@ -87,10 +87,13 @@ struct StageIncrement; // fem/stage_increment.h
 
 class WornSample {
 public:
-  /// Reads the sample mesh; its boundary surface comes from the triangulation.
-  WornSample(const std::string& msh_path, const WornSampleParameters& p);
+  /// Reads the sample mesh; its boundary surface comes from the triangulation, its labels
+  /// taking `roles`.
+  WornSample(const std::string& msh_path, const meshes::LabelRoles& roles,
+             const WornSampleParameters& p);
   /// Reads the sample mesh and maps `surface` (the same triangles, e.g. from
-  /// meshes::read_msh_surface, so per-face fields keep their indices) onto it.
+  /// meshes::read_msh_surface, so per-face fields keep their indices, and its roles) onto it.
+  /// Every constructor throws when no face of the surface is clamped.
   WornSample(const std::string& msh_path, const meshes::SurfaceMesh& surface,
              const WornSampleParameters& p);
 

@@ -43,7 +43,7 @@ WearingSums wearing_sums(const SurfaceMesh& m, const std::vector<double>& remove
   const auto area = face_areas(m);
   WearingSums s{std::vector<double>(nv, 0), std::vector<double>(nv, 0), std::vector<Vec3>(nv)};
   for (std::size_t f = 0; f < m.n_faces(); ++f) {
-    if (!label::wears(m.face_labels[f]))
+    if (!m.face_wears(f))
       continue;
     const Vec3 n = face_normal_unnormalized(m, f);
     for (const auto v : m.triangles[f]) {
@@ -138,7 +138,7 @@ Recession volume_exact_recession(const SurfaceMesh& surface,
     if (!(removed_volume[f] >= 0) || !std::isfinite(removed_volume[f]))
       throw std::invalid_argument("recession: removed volume of face " + std::to_string(f) +
                                   " is negative or not finite");
-    if (label::wears(surface.face_labels[f]))
+    if (surface.face_wears(f))
       r.removed_volume += removed_volume[f];
   }
   const std::vector<Vec3> unit = sliding_recession(surface, removed_volume);
@@ -204,7 +204,7 @@ double spread_removed_volume(const SurfaceMesh& m, std::vector<double>& removed_
   const std::size_t nf = m.n_faces();
   std::vector<char> in_region = faces_within_rings(m, seeds, rings);
   for (std::size_t f = 0; f < nf; ++f)
-    if (!label::wears(m.face_labels[f]))
+    if (!m.face_wears(f))
       in_region[f] = 0;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
   for (const auto& [edge, faces] : edge_faces(m))

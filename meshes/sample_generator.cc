@@ -160,8 +160,20 @@ GeneratedSample generate_sample(const SampleGeometry& s, const std::string& msh_
   if (!msh_path.empty())
     gmsh_write_msh(msh_path);
   g.surface = gmsh_labelled_surface(&g.n_tetrahedra, &g.tetrahedral_volume);
+  g.surface.roles = sample_roles(false);
   g.seconds = clock.seconds();
   return g;
+}
+
+LabelRoles sample_roles(bool held_sides) {
+  LabelRoles r;
+  r.set(label::bottom, FaceRole::clamped);
+  r.set(label::side, held_sides ? FaceRole::held : FaceRole::free);
+  r.set(label::base, FaceRole::wearing);
+  for (int column = 1; column <= 9; ++column)
+    for (int element = 1; element <= 9; ++element)
+      r.set(label::convex_element(column, element), FaceRole::wearing);
+  return r;
 }
 
 SurfaceMesh read_msh_surface(const std::string& path, std::size_t* n_tets, double* tet_volume) {

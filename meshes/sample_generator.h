@@ -37,13 +37,17 @@ struct GeneratedSample {
 int set_sample_size_field(const SampleGeometry& s, const Vec3& up = {0, 0, 1},
                           double up_offset = 0);
 
-/// Builds the sample; when msh_path is not empty, writes the mesh (gmsh 4.1 format) there
-/// atomically, with physical groups: volume 1 "sample", surfaces by label id and name.
-/// With `placement`, the mesh (surface and volume) is moved where it places the sample in the
-/// tester (SampleFrame::point_to_tester) after meshing: the same triangles and tetrahedra in
-/// the tester's frame (exact areas and volume are the solid's, unmoved).
+/// Builds the sample, its surface with sample_roles(false); when msh_path is not empty, writes the
+/// mesh (gmsh 4.1 format) there atomically, with physical groups: volume 1 "sample", surfaces by
+/// label id and name. With `placement`, the mesh (surface and volume) is moved where it places the
+/// sample in the tester (SampleFrame::point_to_tester) after meshing: the same triangles and
+/// tetrahedra in the tester's frame (exact areas and volume are the solid's, unmoved).
 GeneratedSample generate_sample(const SampleGeometry& s, const std::string& msh_path = "",
                                 const SamplePlacement* placement = nullptr);
+
+/// The roles of the sample's labels: the underside clamped, the base top and every convex
+/// element wearing, the sides held (in a holder) or free.
+LabelRoles sample_roles(bool held_sides);
 
 /// Reads a gmsh .msh file's labelled boundary triangles (2D physical groups) into a
 /// SurfaceMesh oriented outward. Throws naming the file if it is missing or has no

@@ -25,7 +25,7 @@ std::vector<SlidingConstraint> sliding_constraints(const SurfaceMesh& m, double 
   std::vector<Groups> groups(nv);
   std::vector<char> overfull(nv, 0);
   for (std::size_t f = 0; f < m.n_faces(); ++f) {
-    if (label::wears(m.face_labels[f]))
+    if (m.face_wears(f))
       continue;
     const Vec3 weighted = face_normal_unnormalized(m, f);
     const Vec3 n = normalized(weighted);

@@ -19,6 +19,20 @@
 namespace wear::meshes {
 
 namespace label {
+int part_surface(FaceRole role, int n) {
+  switch (role) {
+  case FaceRole::wearing:
+    return 1000 + n;
+  case FaceRole::free:
+    return 2000 + n;
+  case FaceRole::clamped:
+    return 3000 + n;
+  case FaceRole::held:
+    return 4000 + n;
+  }
+  throw std::logic_error("label::part_surface: an unknown role");
+}
+
 std::string name(int id) {
   switch (id) {
   case unlabelled:
@@ -38,7 +52,7 @@ std::string name(int id) {
       return "C" + std::to_string(column_of(id)) + std::to_string(element_of(id));
     if (is_part_surface(id)) {
       const std::string n = "S" + std::to_string(part_surface_number(id));
-      return id < 2000 ? n : id < 3000 ? n + "-free" : n + "-clamped";
+      return id < 2000 ? n : id < 3000 ? n + "-free" : id < 4000 ? n + "-clamped" : n + "-held";
     }
     return "L" + std::to_string(id);
   }
@@ -53,13 +67,15 @@ int from_name(const std::string& n) {
   if (n.size() > 1 && n[0] == 'S') {
     const auto dash = n.find('-');
     const std::string suffix = dash == std::string::npos ? "" : n.substr(dash);
-    const PartRole role = suffix.empty()         ? PartRole::wearing
-                          : suffix == "-free"    ? PartRole::free
-                          : suffix == "-clamped" ? PartRole::clamped
-                                                 : PartRole{};
+    const bool known =
+        suffix.empty() || suffix == "-free" || suffix == "-clamped" || suffix == "-held";
+    const FaceRole role = suffix.empty()         ? FaceRole::wearing
+                          : suffix == "-free"    ? FaceRole::free
+                          : suffix == "-clamped" ? FaceRole::clamped
+                                                 : FaceRole::held;
     try {
       const int number = std::stoi(n.substr(1, dash == std::string::npos ? n.npos : dash - 1));
-      if (int(role) != 0 && number >= 1 && number <= max_part_surfaces)
+      if (known && number >= 1 && number <= max_part_surfaces)
         return part_surface(role, number);
     } catch (const std::exception&) {
     }

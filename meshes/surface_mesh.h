@@ -1,6 +1,7 @@
 #pragma once
 // The shared triangle surface mesh: vertices, outward-oriented triangles, a region label per
 // face and a revision that every derived quantity is checked against.
+#include "meshes/label_roles.h"
 #include "meshes/vec3.h"
 
 #include <array>
@@ -18,8 +19,8 @@ using Triangle = std::array<std::uint32_t, 3>;
 /// convex element k of column j has id 10*j + k (C11 = 11 ... C99 = 99).
 namespace label {
 constexpr int unlabelled = 0;
-constexpr int bottom = 1; ///< clamped face of the sample
-constexpr int side = 2;   ///< non-wearing sides
+constexpr int bottom = 1; ///< the sample's underside (clamped: sample_roles)
+constexpr int side = 2;   ///< the sample's sides (free, or held in a holder)
 constexpr int base = 3;   ///< top face of the base plate (wearing)
 constexpr int wall = 4;   ///< a DEM wall without further structure
 /// A holder's faces held flush against the sample's sides and underside (the pocket the
@@ -37,31 +38,22 @@ inline int column_of(int id) {
 inline int element_of(int id) {
   return id % 10;
 }
-/// A wearing part of a scene (dem/scene, issue 33): surface n of its CAD file (1 ... 999)
-/// keeps its number under the role the case file gives it: wearing 1000 + n, free (neither
-/// wearing nor held) 2000 + n, clamped 3000 + n.
-enum class PartRole { wearing = 1, free = 2, clamped = 3 };
+/// A scene part's surfaces (dem/scene): surface n of its CAD file (1 ... 999) keeps its
+/// number in a label of its own per role the case file gives it (wearing 1000 + n, free
+/// 2000 + n, clamped 3000 + n, held 4000 + n), so that the parts' tables name them S<n>,
+/// S<n>-free, S<n>-clamped, S<n>-held. The number only names the label: the role is the
+/// mesh's roles table's.
 constexpr int max_part_surfaces = 999;
-inline int part_surface(PartRole role, int n) {
-  return 1000 * int(role) + n;
-}
+/// The label of part surface n under `role`.
+int part_surface(FaceRole role, int n);
 inline bool is_part_surface(int id) {
-  return id > 1000 && id < 4000 && id % 1000 != 0;
+  return id > 1000 && id < 5000 && id % 1000 != 0;
 }
 inline int part_surface_number(int id) {
   return id % 1000;
 }
-/// Faces that wear: the sample's base top and convex elements, a part's wearing surfaces.
-inline bool wears(int id) {
-  return id == base || is_convex_element(id) || (id > 1000 && id < 2000);
-}
-/// Faces held fixed in the FEM (zero displacement): the sample's bottom, a part's clamped
-/// surfaces.
-inline bool clamped(int id) {
-  return id == bottom || (id > 3000 && id < 4000);
-}
 /// "bottom", "side", "base", "wall", "pocket", "C<j><k>", a part's "S<n>" (wearing),
-/// "S<n>-free", "S<n>-clamped", or "L<id>".
+/// "S<n>-free", "S<n>-clamped", "S<n>-held", or "L<id>".
 std::string name(int id);
 /// Inverse of name(); throws std::invalid_argument for an unknown name.
 int from_name(const std::string& name);
@@ -77,6 +69,10 @@ public:
   std::vector<Vec3> vertices;      ///< [m]
   std::vector<Triangle> triangles; ///< vertex indices, counter-clockwise seen from outside
   std::vector<int> face_labels;    ///< one label id per triangle (see namespace label)
+  LabelRoles roles;                ///< the role of each label (free where none is set)
+
+  FaceRole face_role(std::size_t f) const { return roles.of(face_labels[f]); }
+  bool face_wears(std::size_t f) const { return roles.wears(face_labels[f]); }
 
   std::size_t n_vertices() const { return vertices.size(); }
   std::size_t n_faces() const { return triangles.size(); }

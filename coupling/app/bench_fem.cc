@@ -81,7 +81,7 @@ void bench_stage(const meshes::SurfaceMesh& surface, meshes::FaceField<meshes::V
   const auto area = meshes::face_areas(surface);
   const auto normal = meshes::face_normals(surface);
   for (std::size_t f = 0; f < surface.n_faces(); ++f)
-    if (meshes::label::wears(surface.face_labels[f])) {
+    if (surface.face_wears(f)) {
       load[f] = (normal[f] * -5e3 + meshes::Vec3{0, 2.5e3, 0}) * area[f];
       removed[f] = 20e-6 * normal[f].z * normal[f].z * area[f];
     }

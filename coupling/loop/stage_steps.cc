@@ -26,7 +26,7 @@ StageStress solve_stage_stress(const fem::WornSample& sample, const dem::WallLoa
   for (std::size_t f = 0; f < surface.n_faces() && T > 0; ++f) {
     forces[f] = loads.traction_impulse[f] / T;
     // The contacts' own loads on the wear faces, whichever way the FEM's traction is laid.
-    if (meshes::label::wears(surface.face_labels[f])) {
+    if (surface.face_wears(f)) {
       r.wear_face_force_z += loads.impulse[f].z / T;
       r.wear_face_normal_force += loads.normal_impulse[f] / T;
     }

@@ -28,7 +28,7 @@ DepthCheck vertex_depths(const meshes::SurfaceMesh& m, const std::vector<double>
   std::vector<double> edge(nv, 0);
   std::vector<int> label(nv, 0);
   for (std::size_t f = 0; f < m.n_faces(); ++f) {
-    if (!meshes::label::wears(m.face_labels[f]))
+    if (!m.face_wears(f))
       continue;
     const auto& t = m.triangles[f];
     for (int k = 0; k < 3; ++k) {
@@ -66,7 +66,7 @@ WearIncrement wear_increment(const meshes::SurfaceMesh& surface,
       meshes::FaceField<double>("removed volume", "m^3", meshes::Extensivity::extensive, surface);
   double factor_area = 0, wear_area = 0;
   for (std::size_t f = 0; f < surface.n_faces(); ++f) {
-    if (!meshes::label::wears(surface.face_labels[f]))
+    if (!surface.face_wears(f))
       continue;
     const double s = stress_factor(p.stress_informed, previous_stress[f]);
     w.removed[f] = w.amplification * s * wear_volume[f];

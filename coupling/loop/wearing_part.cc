@@ -62,7 +62,7 @@ std::optional<meshes::SampleFrame> part_frame(const CaseParameters& p,
 }
 
 /// The tester's sample rests in its holder when the scene has one (Source = holder): its sides
-/// are held normal to themselves (u . n = 0).
+/// are held (u . n = 0 in the FEM).
 bool held_sides(const CaseParameters& p, const dem::SceneWallParameters& wall) {
   return dem::wall_source_of(wall).source == dem::WallSource::sample &&
          std::any_of(p.scene.walls.begin(), p.scene.walls.end(), [](const auto& w) {
@@ -86,8 +86,7 @@ std::string part_directory(const CaseParameters& p, const std::string& name) {
 WearingPart::WearingPart(const CaseParameters& p, std::size_t index, dem::SceneWall& wall,
                          std::ostream& log, bool writes)
     : wall_(index), name_(wall.parameters.name), directory_(part_directory(p, name_)),
-      frame_(part_frame(p, wall.parameters)), held_sides_(held_sides(p, wall.parameters)),
-      writes_(writes) {
+      frame_(part_frame(p, wall.parameters)), writes_(writes) {
   const auto worn = part_parameters(p, wall.parameters);
   meshes::ensure_directory(directory_ + "/mesh");
   const meshes::Stopwatch clock;
@@ -99,6 +98,7 @@ WearingPart::WearingPart(const CaseParameters& p, std::size_t index, dem::SceneW
     sg.volume_mesh = true;
     const auto g = meshes::generate_sample(sg, msh);
     surface = g.surface;
+    surface.roles = meshes::sample_roles(held_sides(p, wall.parameters));
     n_tetrahedra = g.n_tetrahedra;
   } else {
     fem::RemeshReport report;
@@ -162,8 +162,8 @@ void WearingPart::record_initial(double time) {
 WearingPart::WearingPart(const CaseParameters& p, std::size_t index, const PartCheckpoint& c,
                          bool writes)
     : wall_(index), name_(p.scene.walls.at(index).name), directory_(part_directory(p, name_)),
-      frame_(part_frame(p, p.scene.walls[index])), held_sides_(held_sides(p, p.scene.walls[index])),
-      writes_(writes), stages_(c.stages), moved_volume_(c.moved_volume) {
+      frame_(part_frame(p, p.scene.walls[index])), writes_(writes), stages_(c.stages),
+      moved_volume_(c.moved_volume) {
   if (frame_ && !c.sample_frame)
     throw std::runtime_error("--resume: the checkpoint holds the tester's sample '" + name_ +
                              "' in the scene's frame (an older engine's); run the case again "
@@ -251,7 +251,6 @@ WearingPart::staged_stage(const WearIncrement& increment, const dem::WallLoads& 
                           StageRecord& r) {
   fem::ElasticityParameters ep = p.fem.elasticity;
   ep.averaging_radius = stress_averaging_radius(p);
-  ep.holder_support = held_sides_;
   const StageStress stress = solve_stage_stress(*sample_, loads, ep, *output_, r);
   GeometryUpdate update = apply_stage_wear(*sample_, increment, stress, r);
   log_geometry_notes(r, update.report, log);
@@ -360,7 +359,7 @@ void WearingPart::record_stage(StageRecord r, const StageChange& change, std::os
   std::ostringstream rows;
   rows.precision(10);
   for (const auto& [label, v] : stage_per_label)
-    if (meshes::label::wears(label))
+    if (surface.roles.wears(label))
       rows << r.stage << "," << scheme_name(r.scheme) << "," << r.time << ","
            << meshes::label::name(label) << "," << v << "," << removed_per_label_[label] << "\n";
   wear_rows_ += rows.str();

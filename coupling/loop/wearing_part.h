@@ -90,7 +90,6 @@ private:
   std::size_t wall_;
   std::string name_, directory_;
   std::optional<meshes::SampleFrame> frame_; ///< the tester's sample's own frame, or none
-  bool held_sides_ = false;                  ///< the sample's sides held by the holder
   std::unique_ptr<fem::WornSample> sample_;
   std::unique_ptr<RunOutput> output_;
   std::unique_ptr<dem::SceneEvaluation> evaluation_; ///< the tester's evaluation, or none

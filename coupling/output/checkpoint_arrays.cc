@@ -75,6 +75,14 @@ void write_sample_state(Hdf5File& h5, const std::string& g, const fem::WornSampl
   h5.write(g + "/surface/triangles", tri, {m.n_faces(), 3});
   h5.write(g + "/surface/labels", m.face_labels, {m.n_faces()});
   h5.attribute(g + "/surface", "revision", double(m.revision()));
+  std::vector<int> role_labels, roles;
+  for (const auto& [label, role] : m.roles.entries()) {
+    role_labels.push_back(label);
+    roles.push_back(int(role));
+  }
+  h5.write(g + "/surface/role_labels", role_labels, {role_labels.size()});
+  h5.write(g + "/surface/roles", roles, {roles.size()});
+  h5.attribute(g + "/surface", "n_roles", double(roles.size()));
   h5.write(g + "/removed_volume", s.removed_volume, {s.removed_volume.size()});
   h5.write(g + "/wear_depth", s.wear_depth, {s.wear_depth.size()});
   h5.attribute(g, "n_remeshes", double(s.n_remeshes));
@@ -95,6 +103,21 @@ fem::WornSampleState read_sample_state(const Hdf5Reader& h5, const std::string& 
       m.triangles[f][k] = std::uint32_t(tri[3 * f + k]);
   m.face_labels = h5.ints(g + "/surface/labels");
   m.set_revision(std::uint64_t(h5.attribute(g + "/surface", "revision")));
+  if (!h5.has_attribute(g + "/surface", "n_roles"))
+    throw std::runtime_error("checkpoint '" + h5.path() + "': the surface of '" + g +
+                             "' carries no face roles (an older engine's checkpoint); run the "
+                             "case again with --overwrite");
+  const auto role_labels = h5.ints(g + "/surface/role_labels");
+  const auto roles = h5.ints(g + "/surface/roles");
+  if (role_labels.size() != roles.size())
+    throw std::runtime_error("checkpoint '" + h5.path() + "': the face roles of '" + g +
+                             "' do not match their labels");
+  for (std::size_t k = 0; k < roles.size(); ++k) {
+    if (roles[k] < 0 || roles[k] > int(meshes::FaceRole::held))
+      throw std::runtime_error("checkpoint '" + h5.path() + "': an unknown face role " +
+                               std::to_string(roles[k]) + " in '" + g + "'");
+    m.roles.set(role_labels[k], meshes::FaceRole(roles[k]));
+  }
   m.validate("checkpoint surface " + g);
   s.removed_volume = h5.doubles(g + "/removed_volume");
   s.wear_depth = h5.doubles(g + "/wear_depth");

@@ -105,7 +105,7 @@ void TesterEvaluation::set_surface(const meshes::SurfaceMesh& sample) {
   // Labels seen before stay (an element worn away still has its column in the records).
   for (std::size_t f = 0; f < nf; ++f) {
     const int l = sample.face_labels[f];
-    wears_[f] = meshes::label::wears(l);
+    wears_[f] = sample.roles.wears(l);
     if (meshes::label::is_convex_element(l)) {
       face_column_[f] = meshes::label::column_of(l);
       if (std::find(element_labels_.begin(), element_labels_.end(), l) == element_labels_.end())

@@ -252,12 +252,14 @@ void validate(const SceneParameters& s) {
     if (w.wearing_surfaces != "all")
       surface_numbers(w.wearing_surfaces, p + "/Wearing surfaces");
     surface_numbers(w.clamped_surfaces, p + "/Clamped surfaces");
+    surface_numbers(w.held_surfaces, p + "/Held surfaces");
     if (source.source == WallSource::sample &&
-        (w.wearing_surfaces != "all" || !w.clamped_surfaces.empty()))
+        (w.wearing_surfaces != "all" || !w.clamped_surfaces.empty() || !w.held_surfaces.empty()))
       throw std::invalid_argument(p + ": the tester's sample (Source = sample) brings its own "
-                                      "roles (base and elements wear, sides free, bottom "
-                                      "clamped); leave Wearing surfaces and Clamped surfaces "
-                                      "at their defaults");
+                                      "roles (base and elements wear, bottom clamped, "
+                                      "sides free, or held in a holder); leave Wearing "
+                                      "surfaces, Clamped surfaces and Held surfaces at their "
+                                      "defaults");
     if (source.tester_part && motion.kind != WallMotionKind::fixed)
       throw std::invalid_argument(p + "/Motion: the tester's " + w.source +
                                   " stands still (Motion = fixed)");

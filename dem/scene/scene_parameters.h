@@ -34,12 +34,13 @@ struct SceneWallParameters {
   bool caps = false;                   ///< cylinder, cone: with end discs
   bool exact =
       true; ///< a disc, open cylinder or open cone that can be an exact surface of revolution is
-  std::string material = "wall";           ///< wall | sample | holder (the DEM subsection's)
-  bool wears = false;                      ///< its faces accumulate wear (a closed solid)
-  std::string wearing_surfaces = "all";    ///< a wearing wall's surfaces that wear: numbers or all
-  std::string clamped_surfaces;            ///< a wearing wall's surfaces held fixed in the FEM
-  std::string motion = "fixed";            ///< fixed | rotation | translation | oscillation
-  std::vector<double> axis_point{0, 0, 0}; ///< [m] rotation
+  std::string material = "wall";        ///< wall | sample | holder (the DEM subsection's)
+  bool wears = false;                   ///< its faces accumulate wear (a closed solid)
+  std::string wearing_surfaces = "all"; ///< a wearing wall's surfaces that wear: numbers or all
+  std::string clamped_surfaces;         ///< a wearing wall's surfaces held fixed in the FEM
+  std::string held_surfaces;    ///< a wearing wall's surfaces held on their sides in the FEM
+  std::string motion = "fixed"; ///< fixed | rotation | translation | oscillation
+  std::vector<double> axis_point{0, 0, 0};    ///< [m] rotation
   std::vector<double> rotation_axis{0, 0, 1}; ///< [-] rotation, right-handed
   double angular_velocity = 0;                ///< [rad/s] rotation
   std::vector<double> velocity{0, 0, 0};      ///< [m/s] translation
@@ -373,7 +374,7 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
               "The wall is the wearing part: a closed solid whose wearing surfaces accumulate "
               "wear and, with Scene/Stage duration, recede stage by stage while the FEM "
               "computes its stress (clamped at Clamped surfaces). Its CAD surfaces keep their "
-              "numbers n as labels S<n> (wearing), S<n>-free and S<n>-clamped.");
+              "numbers n as labels S<n> (wearing), S<n>-free, S<n>-clamped and S<n>-held.");
     v.text("Wearing surfaces", w.wearing_surfaces,
            "A wearing wall's surfaces that wear, by number (`wearsim scene` lists them), "
            "comma-separated, or 'all' for every surface not clamped; the others are free "
@@ -381,6 +382,11 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
     v.text("Clamped surfaces", w.clamped_surfaces,
            "A wearing wall's surfaces held fixed in the FEM (zero displacement: bolted to "
            "the structure), by number, comma-separated; a wear loop needs at least one.");
+    v.text("Held surfaces", w.held_surfaces,
+           "A wearing wall's surfaces held on their sides in the FEM (zero displacement "
+           "normal to the surface, free to slide along it: a liner resting in a frame), by "
+           "number, comma-separated; each must be normal to an axis of the part's frame "
+           "(x, y or z) within 30 degrees. They do not wear.");
     v.selection("Motion", w.motion, wall_motion_names(),
                 wall_motion_descriptions() +
                     ". A whole wall moves as a rigid body from Start time t0 on; a surface "

@@ -58,6 +58,7 @@ meshes::SurfaceMesh first_face(const meshes::SurfaceMesh& m) {
   one.vertices = {m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]};
   one.triangles = {{0, 1, 2}};
   one.face_labels = {m.face_labels.at(0)};
+  one.roles = m.roles;
   return one;
 }
 

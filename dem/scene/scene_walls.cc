@@ -5,13 +5,14 @@
 // (no boundary or non-manifold edge, check_closed). Every wall must lie inside Scene/Domain:
 // a file drawn in millimetres and read as metres is 1000 times too large; the reader checks
 // it (CadImportOptions::bounds, before meshing a CAD file) and the message names the wall,
-// its file and its unit. A wearing wall's CAD surfaces are relabelled by their role
-// (wearing, free, clamped; meshes::label::part_surface), keeping their numbers.
+// its file and its unit. A wearing wall's CAD surfaces take their roles (wearing, free,
+// clamped, held) in the mesh's roles table, and labels named after number and role
+// (meshes::label::part_surface).
 //
 // The tester's sample and holder (Source = sample, holder) are built by the tester's own
 // generators (meshes::generate_sample, meshes::generate_holder) and placed by the tester's map
 // (meshes::SampleFrame), so a scene that names them holds the same triangles as the built-in
-// tester. The sample keeps its labels and their roles (meshes::label::wears, clamped); with
+// tester. The sample keeps its labels and their roles (meshes::sample_roles); with
 // both walls present, the sample's sides and bottom and the holder's pocket coincide and are
 // named covered, as in the tester (MeshWall: one contact where wear face and rim meet).
 //
@@ -30,6 +31,7 @@
 #include <algorithm>
 #include <map>
 #include <stdexcept>
+#include <tuple>
 
 namespace wear::dem {
 
@@ -134,12 +136,14 @@ meshes::CadSurface surface_of(const SceneWallParameters& w, const meshes::Boundi
   return meshes::primitive_surface(p, w.mesh_size, what + " (" + w.source + ")", domain);
 }
 
-/// The wearing part's labels: each CAD surface n becomes S<n> (wearing), S<n>-free or
-/// S<n>-clamped (meshes::label::part_surface) as the wall's lists say.
+/// The wearing part's labels and their roles: each CAD surface n becomes S<n> (wearing),
+/// S<n>-free, S<n>-clamped or S<n>-held (meshes::label::part_surface) as the wall's lists
+/// say, its role set in the mesh's roles.
 void label_part_surfaces(SceneWall& wall, const std::string& what) {
   const auto& w = wall.parameters;
   auto& surface = wall.surface;
   const auto clamped = surface_numbers(w.clamped_surfaces, what + "/Clamped surfaces");
+  const auto held = surface_numbers(w.held_surfaces, what + "/Held surfaces");
   const bool all = w.wearing_surfaces == "all";
   const auto wearing =
       all ? std::vector<int>{} : surface_numbers(w.wearing_surfaces, what + "/Wearing surfaces");
@@ -150,16 +154,20 @@ void label_part_surfaces(SceneWall& wall, const std::string& what) {
   std::string numbers;
   for (int n : present)
     numbers += (numbers.empty() ? "" : ", ") + std::to_string(n);
-  for (const auto& [list, name] :
-       {std::pair{&clamped, "Clamped surfaces"}, {&wearing, "Wearing surfaces"}})
+  for (const auto& [list, name] : {std::pair{&clamped, "Clamped surfaces"},
+                                   {&wearing, "Wearing surfaces"},
+                                   {&held, "Held surfaces"}})
     for (int n : *list)
       if (!has(present, n))
         throw std::invalid_argument(what + "/" + name + ": the part has no surface " +
                                     std::to_string(n) + " (its surfaces: " + numbers + ")");
-  for (int n : wearing)
-    if (has(clamped, n))
-      throw std::invalid_argument(what + ": surface " + std::to_string(n) +
-                                  " is listed both as wearing and as clamped");
+  for (const auto& [a, b, names] : {std::tuple{&wearing, &clamped, "wearing and as clamped"},
+                                    {&wearing, &held, "wearing and as held"},
+                                    {&clamped, &held, "clamped and as held"}})
+    for (int n : *a)
+      if (has(*b, n))
+        throw std::invalid_argument(what + ": surface " + std::to_string(n) +
+                                    " is listed both as " + names);
   for (int n : present)
     if (n < 1 || n > meshes::label::max_part_surfaces)
       throw std::invalid_argument(what + ": a wearing part's surfaces must be numbered 1 ... " +
@@ -167,11 +175,13 @@ void label_part_surfaces(SceneWall& wall, const std::string& what) {
                                   ", the file has label " + std::to_string(n));
   std::map<int, int> label_of;
   for (int n : present) {
-    using meshes::label::PartRole;
-    const PartRole role = has(clamped, n)          ? PartRole::clamped
-                          : all || has(wearing, n) ? PartRole::wearing
-                                                   : PartRole::free;
+    using meshes::FaceRole;
+    const FaceRole role = has(clamped, n)          ? FaceRole::clamped
+                          : has(held, n)           ? FaceRole::held
+                          : all || has(wearing, n) ? FaceRole::wearing
+                                                   : FaceRole::free;
     label_of[n] = meshes::label::part_surface(role, n);
+    surface.mesh.roles.set(label_of[n], role);
   }
   for (auto& l : surface.mesh.face_labels)
     l = label_of.at(l);

@@ -25,7 +25,7 @@ ReferenceDeformation::ReferenceDeformation(const meshes::SurfaceMesh& mesh)
   wears_.resize(mesh_.n_faces());
   std::size_t n_wearing = 0;
   for (std::size_t f = 0; f < mesh_.n_faces(); ++f) {
-    wears_[f] = meshes::label::wears(mesh_.face_labels[f]);
+    wears_[f] = mesh_.face_wears(f);
     n_wearing += wears_[f];
   }
   if (n_wearing == 0)

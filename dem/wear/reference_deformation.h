@@ -52,7 +52,7 @@ struct ReferenceDeformationState {
 
 class ReferenceDeformation {
 public:
-  /// `mesh`: the wearing wall as placed; faces whose label satisfies meshes::label::wears()
+  /// `mesh`: the wearing wall as placed; faces whose role is wearing (SurfaceMesh::roles)
   /// recede, the others (sides, bottom) hold still but their nodes follow shared corners.
   explicit ReferenceDeformation(const meshes::SurfaceMesh& mesh);
 

@@ -50,10 +50,11 @@ Window settled_window(bool holder) {
   const std::size_t sample_wall = dem::scene_wall_index(c.scene, "sample").value();
   const auto law = dem::make_wear_law(c.wear_law);
   const auto loads = scene.wall_loads(sample_wall, *law, turned);
-  const auto& labels = scene.walls()[sample_wall].surface.mesh.face_labels;
+  const auto& mesh = scene.walls()[sample_wall].surface.mesh;
+  const auto& labels = mesh.face_labels;
   for (std::size_t f = 0; f < labels.size(); ++f) {
     const double n = loads.contact_steps[f];
-    if (meshes::label::wears(labels[f]))
+    if (mesh.face_wears(f))
       w.wear_face_steps += n;
     else if (labels[f] == meshes::label::side)
       w.side_steps += n;

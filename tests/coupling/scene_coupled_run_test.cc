@@ -9,6 +9,7 @@
 #include "coupling/app/scene_run_command.h"
 #include "coupling/loop/scene_coupled_run.h"
 #include "coupling/output/hdf5_file.h"
+#include "dem/scene/scene_walls.h"
 #include "error_of.h"
 #include "fem/sample_triangulation.h"
 #include "meshes/gmsh_session.h"
@@ -76,7 +77,7 @@ TEST_CASE("scene wear loop: a STEP plate worn by a bed it slides under", "[coupl
   for (std::size_t f = 0; f < surface.n_faces(); ++f)
     area[surface.face_labels[f]] += areas[f];
   using meshes::label::part_surface;
-  using meshes::label::PartRole;
+  using PartRole = meshes::FaceRole;
   REQUIRE(area.size() == 6);
   CHECK(area.at(part_surface(PartRole::clamped, 5)) == Approx(120e-3 * 60e-3).epsilon(1e-9));
   // A side loses the strip its top edge receded by (the wear depth, below 0.1 mm here).
@@ -148,7 +149,7 @@ TEST_CASE("scene wear loop: two wearing parts, each with its own stages, stress 
   INFO(log.str());
   REQUIRE(run.parts().size() == 2);
   using meshes::label::part_surface;
-  using meshes::label::PartRole;
+  using PartRole = meshes::FaceRole;
   const struct {
     std::string name, wearing_label, force_column;
     int wearing;
@@ -328,6 +329,31 @@ TEST_CASE("scene wear loop: set-ups that cannot run are refused naming the param
   CHECK(refused("wear_word.prm", plate_case("scene_wear_bad", "    set Clamped surfaces = top\n"))
             .find("Scene/Wall plate/Clamped surfaces: 'top' is not a surface number") !=
         std::string::npos);
+  CHECK(refused("wear_held.prm", plate_case("scene_wear_bad", "    set Held surfaces = 1, 5\n"))
+            .find("surface 5 is listed both as clamped and as held") != std::string::npos);
+  CHECK(refused("wear_held9.prm", plate_case("scene_wear_bad", "    set Held surfaces = 9\n"))
+            .find("Scene/Wall plate/Held surfaces: the part has no surface 9") !=
+        std::string::npos);
+}
+
+TEST_CASE("scene part: each surface's role from the case file is carried beside its label",
+          "[coupling][scene]") {
+  // The plate's sides 1 and 2 held, 5 clamped, 6 wearing, 3 and 4 free: each label's role in
+  // the wall's mesh is the one its list gives, and the names say it.
+  write_plate("wear_plate.step");
+  const auto p = read_text("scene_roles.prm",
+                           plate_case("scene_roles_out", "    set Held surfaces = 1, 2\n"));
+  const auto walls = dem::build_scene_walls(p.scene, p.geometry);
+  const auto& mesh = walls.at(0).surface.mesh;
+  using meshes::FaceRole;
+  const std::map<std::string, FaceRole> expected{
+      {"S1-held", FaceRole::held},       {"S2-held", FaceRole::held},
+      {"S3-free", FaceRole::free},       {"S4-free", FaceRole::free},
+      {"S5-clamped", FaceRole::clamped}, {"S6", FaceRole::wearing}};
+  std::map<std::string, FaceRole> found;
+  for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+    found[meshes::label::name(mesh.face_labels[f])] = mesh.face_role(f);
+  CHECK(found == expected);
 }
 
 TEST_CASE("scene wear loop: stopped by a signal or killed inside a stage, resumed bit for bit",

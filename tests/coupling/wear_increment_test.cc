@@ -27,6 +27,7 @@ meshes::SurfaceMesh plate(double h) {
       m.triangles.push_back({a, a + 4, a + 3});
     }
   m.face_labels.assign(m.triangles.size(), meshes::label::base);
+  m.roles.set(meshes::label::base, meshes::FaceRole::wearing);
   return m;
 }
 

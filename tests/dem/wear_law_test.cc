@@ -121,7 +121,8 @@ TEST_CASE("wear volume under a particle bed is independent of the flat wall's me
 }
 
 TEST_CASE("reference deformation: a uniformly loaded flat plate recedes uniformly", "[dem][wear]") {
-  const auto plate = flat(0.02, 16, 0, wear::meshes::Diagonals::alternating);
+  auto plate = flat(0.02, 16, 0, wear::meshes::Diagonals::alternating);
+  plate.roles.set(wear::meshes::label::base, wear::meshes::FaceRole::wearing);
   ReferenceDeformation def(plate);
   const auto area = wear::meshes::face_areas(plate);
   const double depth = 1e-5; // per update [m]
@@ -147,6 +148,7 @@ TEST_CASE("reference deformation: an update that folds the surface is reported a
   const auto n = wear::meshes::face_normals(cube);
   for (std::size_t f = 0; f < cube.n_faces(); ++f)
     cube.face_labels[f] = n[f].z > 0.5 ? wear::meshes::label::base : wear::meshes::label::side;
+  cube.roles.set(wear::meshes::label::base, wear::meshes::FaceRole::wearing);
   ReferenceDeformation def(cube);
   std::vector<double> removed(cube.n_faces(), 0);
   for (std::size_t f = 0; f < cube.n_faces(); ++f)

@@ -3,8 +3,11 @@
 #include "fem/boundary_face_map.h"
 #include "fem/elasticity.h"
 #include "fem/volume_output.h"
+#include "meshes/sample_generator.h"
 
 #include <catch2/catch.hpp>
+
+#include <map>
 
 #include <deal.II/grid/grid_generator.h>
 
@@ -66,7 +69,7 @@ TEST_CASE("elasticity patch test: uniform strain is exact with P1 and P2", "[fem
     INFO("P" << degree);
     dealii::Triangulation<3> tria;
     make_box(tria, 3, 2, 2, 0.03, 0.02, 0.01);
-    const auto surface = extract_boundary_surface(tria);
+    const auto surface = extract_boundary_surface(tria, wear::meshes::sample_roles(false));
     BoundaryFaceMap map(tria, surface);
     ElasticityParameters p;
     p.degree = degree;
@@ -113,16 +116,16 @@ TEST_CASE("elasticity: a sample pressed in its holder is in uniaxial strain, exa
   for (unsigned int degree : {1u, 2u}) {
     dealii::Triangulation<3> tria;
     make_box(tria, 3, 2, 2, 0.03, 0.02, c);
-    const auto surface = extract_boundary_surface(tria);
-    BoundaryFaceMap map(tria, surface);
-    const auto F = top_traction_forces(surface, Vec3{0, 0, -pressure});
+    auto surface = extract_boundary_surface(tria, wear::meshes::sample_roles(false));
     double u_free = 0;
     for (const bool held : {true, false}) {
       INFO("P" << degree << (held ? ", held sides" : ", free sides"));
+      surface.roles = wear::meshes::sample_roles(held);
+      BoundaryFaceMap map(tria, surface);
+      const auto F = top_traction_forces(surface, Vec3{0, 0, -pressure});
       ElasticityParameters p;
       p.degree = degree;
       p.relative_tolerance = 1e-13;
-      p.holder_support = held;
       ElasticitySolver solver(tria, map, p);
       const auto r = solver.run(F);
       CHECK(r.reaction_force.z == Approx(-r.applied_force.z).epsilon(1e-8));
@@ -142,11 +145,69 @@ TEST_CASE("elasticity: a sample pressed in its holder is in uniaxial strain, exa
   }
 }
 
+TEST_CASE("elasticity: a part held on its sides and bottom by their roles, whatever their "
+          "numbers, is in uniaxial strain",
+          "[fem][elasticity][holder]") {
+  // A scene part's labels (S1-held = 4001 on the sides, S5-held = 4005 underneath, S6 = 1006
+  // on top): no face is clamped, the bottom rests on a support normal to z and the sides on
+  // supports normal to x and y, all free to slide. A pressure p on top gives the uniaxial
+  // strain of the sample in its holder, u = (0, 0, -p z / M): what holds the faces is the
+  // role each label carries, not its number. The same labels without roles hold nothing,
+  // and the solver refuses to start.
+  const double E = 700e6, nu = 0.4, pressure = 1.2e3, c = 0.01;
+  const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
+  const double M = lambda + 2 * mu;
+  dealii::Triangulation<3> tria;
+  make_box(tria, 3, 2, 2, 0.03, 0.02, c);
+  using wear::meshes::FaceRole;
+  namespace label = wear::meshes::label;
+  const std::map<int, int> part_label{{1, label::part_surface(FaceRole::held, 5)},
+                                      {2, label::part_surface(FaceRole::held, 1)},
+                                      {3, label::part_surface(FaceRole::wearing, 6)}};
+  for (const auto& cell : tria.active_cell_iterators())
+    for (const auto f : cell->face_indices())
+      if (cell->face(f)->at_boundary())
+        cell->face(f)->set_boundary_id(
+            dealii::types::boundary_id(part_label.at(int(cell->face(f)->boundary_id()))));
+  wear::meshes::LabelRoles no_roles;
+  const auto bare = extract_boundary_surface(tria, no_roles);
+  BoundaryFaceMap bare_map(tria, bare);
+  CHECK_THROWS_WITH(ElasticitySolver(tria, bare_map, ElasticityParameters{})
+                        .run(wear::meshes::FaceField<Vec3>(
+                            "force", "N", wear::meshes::Extensivity::extensive, bare)),
+                    Catch::Contains("clamped"));
+  wear::meshes::LabelRoles roles;
+  roles.set(part_label.at(1), FaceRole::held);
+  roles.set(part_label.at(2), FaceRole::held);
+  roles.set(part_label.at(3), FaceRole::wearing);
+  const auto surface = extract_boundary_surface(tria, roles);
+  BoundaryFaceMap map(tria, surface);
+  wear::meshes::FaceField<Vec3> F("force", "N", wear::meshes::Extensivity::extensive, surface);
+  const auto a = wear::meshes::face_areas(surface);
+  for (std::size_t f = 0; f < surface.n_faces(); ++f)
+    if (surface.face_wears(f))
+      F[f] = Vec3{0, 0, -pressure * a[f]};
+  for (unsigned int degree : {1u, 2u}) {
+    INFO("P" << degree);
+    ElasticityParameters p;
+    p.degree = degree;
+    p.relative_tolerance = 1e-13;
+    ElasticitySolver solver(tria, map, p);
+    const auto r = solver.run(F);
+    CHECK(r.reaction_force.z == Approx(-r.applied_force.z).epsilon(1e-8));
+    CHECK(r.max_displacement == Approx(pressure * c / M).epsilon(1e-8));
+    for (unsigned int k = 0; k < tria.n_active_cells(); ++k) {
+      CHECK(solver.principal_stresses()[0][k] == Approx(-pressure * lambda / M).epsilon(1e-8));
+      CHECK(solver.principal_stresses()[2][k] == Approx(-pressure).epsilon(1e-8));
+    }
+  }
+}
+
 TEST_CASE("elasticity: reaction at the clamped face balances an arbitrary load",
           "[fem][elasticity]") {
   dealii::Triangulation<3> tria;
   make_box(tria, 4, 3, 2, 0.04, 0.03, 0.01);
-  const auto surface = extract_boundary_surface(tria);
+  const auto surface = extract_boundary_surface(tria, wear::meshes::sample_roles(false));
   BoundaryFaceMap map(tria, surface);
   wear::meshes::FaceField<Vec3> F("force", "N", wear::meshes::Extensivity::extensive, surface);
   const auto c = wear::meshes::face_centroids(surface);
@@ -177,7 +238,7 @@ TEST_CASE("elasticity: a cantilever fin under a tip load follows beam theory",
   for (unsigned int n : {2u, 4u}) {
     dealii::Triangulation<3> tria;
     make_box(tria, n, n, 10 * n, b, b, L);
-    const auto surface = extract_boundary_surface(tria);
+    const auto surface = extract_boundary_surface(tria, wear::meshes::sample_roles(false));
     BoundaryFaceMap map(tria, surface);
     const auto F = top_traction_forces(surface, Vec3{P / A, 0, 0});
     ElasticityParameters p;
@@ -196,7 +257,7 @@ TEST_CASE("elasticity: a cantilever fin under a tip load follows beam theory",
 TEST_CASE("elasticity: bad input is refused with a message", "[fem][elasticity]") {
   dealii::Triangulation<3> tria;
   make_box(tria, 2, 2, 1, 0.02, 0.02, 0.01);
-  const auto surface = extract_boundary_surface(tria);
+  const auto surface = extract_boundary_surface(tria, wear::meshes::sample_roles(false));
   BoundaryFaceMap map(tria, surface);
   ElasticityParameters p;
   p.degree = 3;

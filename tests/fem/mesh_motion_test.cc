@@ -44,7 +44,7 @@ TEST_CASE("uniform recession of the top face: flat, exact volume, valid mesh", "
   dealii::Triangulation<3> tria;
   const double a = 0.06, b = 0.04, c = 0.01, depth = 1.5e-3;
   make_box(tria, a, b, c);
-  const auto surface = extract_boundary_surface(tria);
+  const auto surface = extract_boundary_surface(tria, wear::meshes::sample_roles(false));
   BoundaryFaceMap map(tria, surface);
   const auto area = wear::meshes::face_areas(surface);
   std::vector<double> removed(surface.n_faces(), 0);
@@ -91,7 +91,7 @@ ElementWear wear_element(double fraction) {
   generated = true;
   dealii::Triangulation<3> tria;
   read_sample_mesh("motion_sample.msh", tria);
-  const auto surface = extract_boundary_surface(tria);
+  const auto surface = extract_boundary_surface(tria, wear::meshes::sample_roles(false));
   BoundaryFaceMap map(tria, surface);
   const double base = s.thickness, h = s.pattern.h;
   const auto area = wear::meshes::face_areas(surface);
@@ -146,7 +146,8 @@ TEST_CASE("tetrahedron quality measures", "[fem][motion]") {
   CHECK(q.min_scaled_jacobian == Approx(1 / std::sqrt(2.0)).epsilon(1e-12));
   CHECK(q.min_dihedral_deg == Approx(std::acos(1 / std::sqrt(3.0)) * 180 / wear::pi).epsilon(1e-9));
   CHECK(q.max_dihedral_deg == Approx(90).epsilon(1e-9));
-  CHECK_THROWS_WITH(volume_exact_recession(extract_boundary_surface(tria), {1.0}),
+  CHECK_THROWS_WITH(volume_exact_recession(
+                        extract_boundary_surface(tria, wear::meshes::sample_roles(false)), {1.0}),
                     Catch::Contains("face volumes"));
 }
 
@@ -158,7 +159,7 @@ TEST_CASE("tangential relaxation stays in a flat face and keeps label boundaries
   dealii::Triangulation<3> tria;
   const double a = 0.06, b = 0.04, c = 0.01;
   make_box(tria, a, b, c);
-  auto surface = extract_boundary_surface(tria);
+  auto surface = extract_boundary_surface(tria, wear::meshes::sample_roles(false));
   const auto centroid = wear::meshes::face_centroids(surface);
   for (std::size_t f = 0; f < surface.n_faces(); ++f)
     if (surface.face_labels[f] == 3 && centroid[f].x < 0.015 && centroid[f].y < 0.015)
@@ -208,7 +209,8 @@ TEST_CASE("tangential relaxation cuts a spike folded nearly flat, and only that"
   for (std::uint32_t k = 0; k < 6; ++k)
     m.triangles.push_back({0, 1 + k, 1 + (k + 1) % 6});
   m.face_labels.assign(6, 3);
-  m.vertices[3] = {0.6, 0.3, 0.1}; // over face (0, 1, 2), sharing edge 0-2 with it
+  m.roles = wear::meshes::sample_roles(false); // label 3: the base, wearing
+  m.vertices[3] = {0.6, 0.3, 0.1};             // over face (0, 1, 2), sharing edge 0-2 with it
   const auto normal = wear::meshes::face_normals(m);
   REQUIRE(wear::meshes::dot(normal[0], normal[1]) < -0.9);
   const std::vector<char> all(m.n_vertices(), 1);
@@ -237,7 +239,7 @@ TEST_CASE("the unworn sides stay flat as the wear face recedes past their first 
   dealii::Triangulation<3> tria;
   const double a = 0.06, b = 0.04, c = 0.01;
   make_box(tria, a, b, c);
-  auto surface = extract_boundary_surface(tria);
+  auto surface = extract_boundary_surface(tria, wear::meshes::sample_roles(false));
   using wear::meshes::SlidingConstraint;
   const auto constraint = wear::meshes::sliding_constraints(surface);
   const auto at = [&](double x, double y, double z) {
@@ -310,7 +312,7 @@ TEST_CASE("crease relaxation evens out crease vertices that have closed up", "[f
   dealii::Triangulation<3> tria;
   const double a = 0.06, b = 0.04, c = 0.01;
   make_box(tria, a, b, c);
-  auto surface = extract_boundary_surface(tria);
+  auto surface = extract_boundary_surface(tria, wear::meshes::sample_roles(false));
   const auto even = crease_relaxation(surface);
   for (const auto& d : even)
     CHECK(wear::meshes::norm(d) < 1e-15);
@@ -359,7 +361,7 @@ TEST_CASE("volume-restoring offset reaches the target volume", "[fem][motion]") 
   dealii::Triangulation<3> tria;
   const double a = 0.06, b = 0.04, c = 0.01;
   make_box(tria, a, b, c);
-  const auto surface = extract_boundary_surface(tria);
+  const auto surface = extract_boundary_surface(tria, wear::meshes::sample_roles(false));
   const double v0 = wear::meshes::enclosed_volume(surface);
   for (const double target : {v0 * (1 + 1e-3), v0 * (1 - 1e-3)}) {
     const auto r = volume_restoring_offset(surface, target);
@@ -397,7 +399,7 @@ TEST_CASE("volume-restoring offset reaches the target volume", "[fem][motion]") 
       bool only_held = true;
       for (std::size_t f = 0; f < surface.n_faces(); ++f)
         for (const auto w : surface.triangles[f])
-          if (w == v && !held[f] && wear::meshes::label::wears(surface.face_labels[f]))
+          if (w == v && !held[f] && surface.face_wears(f))
             only_held = false;
       if (only_held) {
         CHECK(wear::meshes::norm(r.displacement[v]) == 0);
@@ -457,6 +459,7 @@ wear::meshes::SurfaceMesh half_cylinder(double r, double l, int n_x, int n_arc) 
       add(centre, arc(i, j), arc(i, j + 1), outward, label::side);
     add(centre, arc(i, n_arc), arc(i, 0), outward, label::side);
   }
+  m.roles = wear::meshes::sample_roles(false);
   return m;
 }
 } // namespace

@@ -5,6 +5,7 @@
 #include "fem/elasticity.h"
 #include "fem/stress_measures.h"
 #include "meshes/constants.h"
+#include "meshes/sample_generator.h"
 
 #include <catch2/catch.hpp>
 
@@ -179,7 +180,7 @@ Measures block_measures(unsigned int n, unsigned int degree, double R,
   const double W = 0.02, H = 0.01;
   dealii::Triangulation<3> tria;
   make_box(tria, {n, n, n / 2}, Point<3>(0, 0, 0), Point<3>(W, W, H));
-  const auto surface = extract_boundary_surface(tria);
+  const auto surface = extract_boundary_surface(tria, wear::meshes::sample_roles(false));
   BoundaryFaceMap map(tria, surface);
   wear::meshes::FaceField<Vec3> F("force", "N", wear::meshes::Extensivity::extensive, surface);
   const auto c = wear::meshes::face_centroids(surface);

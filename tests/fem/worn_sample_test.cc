@@ -49,7 +49,7 @@ FaceField<double> removed_by_depth(const WornSample& sample, Depth depth) {
   const auto normal = wear::meshes::face_normals(m);
   FaceField<double> removed("removed volume", "m^3", wear::meshes::Extensivity::extensive, m);
   for (std::size_t f = 0; f < m.n_faces(); ++f)
-    if (wear::meshes::label::wears(m.face_labels[f]))
+    if (m.face_wears(f))
       removed[f] = depth(m.face_labels[f], centroid[f], normal[f]) * area[f];
   return removed;
 }
@@ -77,13 +77,13 @@ TEST_CASE("remeshing the worn reference convex sample at 1 mm", "[fem][remesh]")
   WornSampleParameters p;
   p.remesh.sizes = s;
   p.mesh_directory = "reference_sample_meshes";
-  WornSample sample("reference_sample.msh", p);
+  WornSample sample("reference_sample.msh", wear::meshes::sample_roles(false), p);
   const auto& m = sample.surface();
   const auto area = wear::meshes::face_areas(m);
   const auto normal = wear::meshes::face_normals(m);
   FaceField<double> removed("removed volume", "m^3", wear::meshes::Extensivity::extensive, m);
   for (std::size_t f = 0; f < m.n_faces(); ++f)
-    if (wear::meshes::label::wears(m.face_labels[f]))
+    if (m.face_wears(f))
       removed[f] = 20e-6 * normal[f].z * normal[f].z * area[f];
   const auto stage = sample.apply_wear(removed);
   CHECK(stage.volume_change == Approx(stage.removed_volume).epsilon(1e-8));
@@ -103,7 +103,7 @@ TEST_CASE("a convex element worn by 30 % of its height in stages stays a valid m
   WornSampleParameters p;
   p.remesh.sizes = s;
   p.mesh_directory = "worn_sample_meshes";
-  WornSample sample("worn_sample.msh", p);
+  WornSample sample("worn_sample.msh", wear::meshes::sample_roles(false), p);
   const double v0 = mesh_volume(sample.triangulation());
   const int label = wear::meshes::label::convex_element(3, 3);
   const auto tip = [&] {
@@ -178,7 +178,7 @@ TEST_CASE("wear past the clamped bottom is recorded as worn through, not removed
   p.remesh.sizes = s;
   p.mesh_directory = "worn_through_meshes";
   p.worn_through_thickness = 1e-3;
-  WornSample sample("worn_through_sample.msh", p);
+  WornSample sample("worn_through_sample.msh", wear::meshes::sample_roles(false), p);
   const auto corner = [&] {
     wear::meshes::Vec3 c{1e300, 1e300, 0};
     for (const auto& v : sample.surface().vertices)
@@ -216,7 +216,7 @@ TEST_CASE("wear past the clamped bottom is recorded as worn through, not removed
     const auto& after = sample.surface();
     double lowest = 1e300;
     for (std::size_t f = 0; f < after.n_faces(); ++f)
-      if (wear::meshes::label::wears(after.face_labels[f]))
+      if (after.face_wears(f))
         for (const auto v : after.triangles[f])
           lowest = std::min(lowest, after.vertices[v].z);
     CHECK(lowest > bottom + 0.5 * p.worn_through_thickness - 1e-12);
@@ -242,7 +242,7 @@ TEST_CASE("remeshing keeps every label's area when a label boundary crosses a fl
   WornSampleParameters p;
   p.remesh.sizes = s;
   p.mesh_directory = "mixed_label_meshes";
-  WornSample sample("mixed_label_sample.msh", p);
+  WornSample sample("mixed_label_sample.msh", wear::meshes::sample_roles(false), p);
   auto surface = sample.surface();
   const auto centroid_x = [&](std::size_t f) {
     double x = 0;
@@ -325,7 +325,8 @@ WornSampleState graded_plate_state() {
                                        : z > thickness - 1e-9 ? wear::meshes::label::base
                                                               : wear::meshes::label::side);
       }
-  return triangulation_state(tria, extract_boundary_surface(tria));
+  return triangulation_state(tria,
+                             extract_boundary_surface(tria, wear::meshes::sample_roles(false)));
 }
 } // namespace
 
@@ -375,7 +376,7 @@ TEST_CASE("a wear increment smaller than what the surface relaxation alone remov
   WornSampleParameters p;
   p.remesh.sizes = s;
   p.mesh_directory = "groove_meshes";
-  WornSample sample("groove_sample.msh", p);
+  WornSample sample("groove_sample.msh", wear::meshes::sample_roles(false), p);
   using wear::meshes::label::base;
   // A groove along y across the whole wear face, 1 mm deep in its middle, parabolic, so the
   // face is concave everywhere (a narrower groove has convex shoulders, where the relaxation

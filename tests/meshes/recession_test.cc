@@ -27,6 +27,7 @@ SurfaceMesh plate() {
   for (std::size_t f = 0; f < m.n_faces(); ++f)
     if (c[f].x > 0.015)
       m.face_labels[f] = label::side;
+  m.roles.set(label::base, FaceRole::wearing); // the side keeps no role: free
   return m;
 }
 // The removed volume per face of a uniform depth [m] on the wear face.
@@ -34,7 +35,7 @@ std::vector<double> uniform_depth_volume(const SurfaceMesh& m, double depth) {
   const auto area = face_areas(m);
   std::vector<double> v(m.n_faces(), 0);
   for (std::size_t f = 0; f < m.n_faces(); ++f)
-    if (label::wears(m.face_labels[f]))
+    if (m.face_wears(f))
       v[f] = depth * area[f];
   return v;
 }
@@ -48,7 +49,7 @@ TEST_CASE("area-weighted recession of a uniform depth: straight down, by that de
   const auto displacement = area_weighted_recession(m, v);
   std::vector<char> on_wear_face(m.n_vertices(), 0);
   for (std::size_t f = 0; f < m.n_faces(); ++f)
-    if (label::wears(m.face_labels[f]))
+    if (m.face_wears(f))
       for (const auto k : m.triangles[f])
         on_wear_face[k] = 1;
   std::size_t n_moved = 0;
@@ -77,7 +78,7 @@ TEST_CASE("spreading removed volume keeps the total and stays local", "[meshes][
   double best = 1e9;
   for (std::size_t f = 0; f < m.n_faces(); ++f) {
     const double d = norm(centroid[f] - Vec3{0.008, 0.01, 0});
-    if (label::wears(m.face_labels[f]) && d < best)
+    if (m.face_wears(f) && d < best)
       best = d, seed = std::uint32_t(f);
   }
   const double total = 1e-9; // [m^3]
@@ -92,7 +93,7 @@ TEST_CASE("spreading removed volume keeps the total and stays local", "[meshes][
     for (std::size_t f = 0; f < m.n_faces(); ++f) {
       CHECK(v[f] >= 0);
       if (v[f] > 0) {
-        CHECK(label::wears(m.face_labels[f])); // nothing onto the side strip
+        CHECK(m.face_wears(f)); // nothing onto the side strip
         // faces are 1 mm; k vertex rings reach at most about k + 1 face widths away
         reach = std::max(reach, norm(centroid[f] - centroid[seed]));
       }
@@ -115,4 +116,30 @@ TEST_CASE("spreading leaves a uniform depth unchanged", "[meshes][recession]") {
   CHECK(moved < 1e-12 * std::accumulate(v.begin(), v.end(), 0.0));
   for (std::size_t f = 0; f < m.n_faces(); ++f)
     CHECK(spread[f] == Approx(v[f]).epsilon(1e-12).margin(1e-30));
+}
+
+TEST_CASE("the role a label carries decides which faces recede, not the label's number",
+          "[meshes][recession]") {
+  // The plate's wear face relabelled 7 (a number no convention gives a role) recedes only
+  // when its role says it wears; the base label with no role stays put.
+  auto m = plate();
+  for (auto& l : m.face_labels)
+    if (l == label::base)
+      l = 7;
+  const auto area = face_areas(m);
+  std::vector<double> v(m.n_faces(), 0);
+  for (std::size_t f = 0; f < m.n_faces(); ++f)
+    if (m.face_labels[f] == 7)
+      v[f] = 2e-4 * area[f];
+  const auto moved_most = [&](const SurfaceMesh& s) {
+    double d = 0;
+    for (const auto& x : area_weighted_recession(s, v))
+      d = std::max(d, norm(x));
+    return d;
+  };
+  CHECK(moved_most(m) == 0); // label 7 has no role yet: free
+  m.roles.set(7, FaceRole::wearing);
+  CHECK(moved_most(m) == Approx(2e-4).epsilon(1e-12));
+  m.roles.set(7, FaceRole::clamped);
+  CHECK(moved_most(m) == 0);
 }

@@ -84,6 +84,27 @@ TEST_CASE("label names round-trip", "[meshes]") {
   CHECK_THROWS(label::from_name("C0x"));
 }
 
+TEST_CASE("label roles: set, replaced, free by default, named", "[meshes]") {
+  LabelRoles r;
+  CHECK(r.of(3) == FaceRole::free);
+  r.set(3, FaceRole::wearing);
+  r.set(1, FaceRole::clamped);
+  r.set(2002, FaceRole::held);
+  CHECK(r.wears(3));
+  CHECK(r.clamped(1));
+  CHECK(r.held(2002));
+  CHECK(r.of(2) == FaceRole::free);
+  r.set(3, FaceRole::free);
+  CHECK(!r.wears(3));
+  CHECK(r.entries().size() == 3);
+  CHECK(r.entries().front().first == 1); // sorted by label
+  CHECK(r.any(FaceRole::held));
+  CHECK(!r.any(FaceRole::wearing));
+  for (FaceRole role : {FaceRole::free, FaceRole::wearing, FaceRole::clamped, FaceRole::held})
+    CHECK(role_from_name(role_name(role)) == role);
+  CHECK_THROWS_WITH(role_from_name("worn"), Catch::Contains("'worn'"));
+}
+
 TEST_CASE("validate rejects bad indices and NaN", "[meshes]") {
   auto m = testing::box();
   m.triangles[0][0] = 99;

@@ -1,16 +1,19 @@
 #!/usr/bin/python3
-"""The full tester at s = 4 as a scene against the reference study's built-in runs.
+"""A pair of the reference study's cases run again on the current engine against the study's
+own runs.
 
-Reads the study's stored summaries (cases/reference-study/results/<kind>-s4/summary.csv, the
-built-in tester, engine in their parameters.prm) and the scene runs of the same cases
-(`wearsim tester-scene cases/reference-study/<kind>-s4.prm`, then `wearsim scene-run`:
+Reads the study's stored summaries (cases/reference-study/results/<kind>-<variant>/
+summary.csv, engine in their parameters.prm: the built-in tester for the study's engine) and
+the runs of the same cases on the engine under test (`wearsim run` of a case that INCLUDEs
+cases/reference-study/<kind>-<variant>.prm and sets its Output/Directory to <root>/<kind>:
 <root>/<kind>/parts/sample/summary.csv). For each path and sample kind: the wear-law volume
 per revolution over revolutions FROM.. as mean +- 95 % interval (Student t over the
 revolutions, each revolution taken as one sample of the steady flow: one seed per path), and
 per column. The scene agrees when its mean lies inside the built-in run's interval and the
 difference's interval (Welch, the two paths' revolutions) holds zero.
 
-usage: s4_vs_study.py [--from K] <root>     (root: the scene runs' folder, e.g. output/s4-scene)
+usage: study_vs_scene.py [--from K] [--variant s4] <root>
+       (variant: the study's case suffix, s4 or s7; root: the new runs' folder, e.g. output/s4-scene)
 """
 import argparse
 import csv
@@ -33,11 +36,11 @@ def engine(run):
 
 def revolutions(summary, first):
     if not os.path.isfile(summary):
-        sys.exit(f"s4_vs_study: '{summary}' does not exist (did the run finish a stage?)")
+        sys.exit(f"study_vs_scene: '{summary}' does not exist (did the run finish a stage?)")
     with open(summary) as f:
         rows = [r for r in csv.DictReader(f) if int(r["revolution"]) >= first]
     if len(rows) < 2:
-        sys.exit(f"s4_vs_study: {summary} has fewer than 2 revolutions from {first} on")
+        sys.exit(f"study_vs_scene: {summary} has fewer than 2 revolutions from {first} on")
     return rows
 
 
@@ -56,15 +59,16 @@ def welch(a, b):
 def main():
     p = argparse.ArgumentParser()
     p.add_argument("--from", dest="first", type=int, default=2)
+    p.add_argument("--variant", default="s4", help="the study's case suffix (s4, s7)")
     p.add_argument("root")
     a = p.parse_args()
     disagree = False
     for kind in ("plain", "convex"):
-        study = os.path.join(STUDY, f"{kind}-s4")
+        study = os.path.join(STUDY, f"{kind}-{a.variant}")
         scene = os.path.join(a.root, kind)
         rs = revolutions(os.path.join(study, "summary.csv"), a.first)
         rc = revolutions(os.path.join(scene, "parts", "sample", "summary.csv"), a.first)
-        print(f"## {kind}, s = 4, revolutions {a.first}..: built-in tester (engine "
+        print(f"## {kind}-{a.variant}, revolutions {a.first}..: built-in tester (engine "
               f"{engine(study)}, {len(rs)} revolutions) against the scene (engine "
               f"{engine(scene)}, {len(rc)} revolutions) [mm^3 per revolution]\n")
         print("| figure | built-in tester | scene | scene - tester |")
