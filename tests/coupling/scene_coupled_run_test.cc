@@ -341,15 +341,14 @@ TEST_CASE("scene part: each surface's role from the case file is carried beside 
   // The plate's sides 1 and 2 held, 5 clamped, 6 wearing, 3 and 4 free: each label's role in
   // the wall's mesh is the one its list gives, and the names say it.
   write_plate("wear_plate.step");
-  const auto p = read_text("scene_roles.prm",
-                           plate_case("scene_roles_out", "    set Held surfaces = 1, 2\n"));
+  const auto p =
+      read_text("scene_roles.prm", plate_case("scene_roles_out", "    set Held surfaces = 1, 2\n"));
   const auto walls = dem::build_scene_walls(p.scene, p.geometry);
   const auto& mesh = walls.at(0).surface.mesh;
   using meshes::FaceRole;
   const std::map<std::string, FaceRole> expected{
-      {"S1-held", FaceRole::held},       {"S2-held", FaceRole::held},
-      {"S3-free", FaceRole::free},       {"S4-free", FaceRole::free},
-      {"S5-clamped", FaceRole::clamped}, {"S6", FaceRole::wearing}};
+      {"S1-held", FaceRole::held}, {"S2-held", FaceRole::held},       {"S3-free", FaceRole::free},
+      {"S4-free", FaceRole::free}, {"S5-clamped", FaceRole::clamped}, {"S6", FaceRole::wearing}};
   std::map<std::string, FaceRole> found;
   for (std::size_t f = 0; f < mesh.n_faces(); ++f)
     found[meshes::label::name(mesh.face_labels[f])] = mesh.face_role(f);

@@ -56,6 +56,23 @@ wear::meshes::FaceField<Vec3> top_traction_forces(const wear::meshes::SurfaceMes
       F[f] = a[f] * t;
   return F;
 }
+// A box of height c under a top pressure p, held laterally (and clamped or held underneath)
+// with the default PE1000 constants: uniaxial strain, u = (0, 0, -p z / M), sigma_zz = -p,
+// sigma_xx = sigma_yy = -p lambda / M in every cell, and the supports carry the whole load.
+void check_uniaxial_strain(const ElasticitySolver& solver, const ElasticityResult& r,
+                           unsigned int n_cells, double pressure, double c) {
+  const ElasticityParameters defaults;
+  const double E = defaults.youngs_modulus, nu = defaults.poisson_ratio;
+  const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
+  const double M = lambda + 2 * mu;
+  CHECK(r.reaction_force.z == Approx(-r.applied_force.z).epsilon(1e-8));
+  CHECK(r.max_displacement == Approx(pressure * c / M).epsilon(1e-8));
+  for (unsigned int k = 0; k < n_cells; ++k) {
+    CHECK(solver.principal_stresses()[0][k] == Approx(-pressure * lambda / M).epsilon(1e-8));
+    CHECK(solver.principal_stresses()[2][k] == Approx(-pressure).epsilon(1e-8));
+  }
+}
+
 } // namespace
 
 TEST_CASE("elasticity patch test: uniform strain is exact with P1 and P2", "[fem][elasticity]") {
@@ -135,11 +152,7 @@ TEST_CASE("elasticity: a sample pressed in its holder is in uniaxial strain, exa
         u_free = r.max_displacement;
         continue;
       }
-      CHECK(r.max_displacement == Approx(pressure * c / M).epsilon(1e-8));
-      for (unsigned int k = 0; k < tria.n_active_cells(); ++k) {
-        CHECK(solver.principal_stresses()[0][k] == Approx(-pressure * lambda / M).epsilon(1e-8));
-        CHECK(solver.principal_stresses()[2][k] == Approx(-pressure).epsilon(1e-8));
-      }
+      check_uniaxial_strain(solver, r, tria.n_active_cells(), pressure, c);
     }
     CHECK(u_free > 1.01 * pressure * c / M);
   }
@@ -154,9 +167,7 @@ TEST_CASE("elasticity: a part held on its sides and bottom by their roles, whate
   // strain of the sample in its holder, u = (0, 0, -p z / M): what holds the faces is the
   // role each label carries, not its number. The same labels without roles hold nothing,
   // and the solver refuses to start.
-  const double E = 700e6, nu = 0.4, pressure = 1.2e3, c = 0.01;
-  const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
-  const double M = lambda + 2 * mu;
+  const double pressure = 1.2e3, c = 0.01;
   dealii::Triangulation<3> tria;
   make_box(tria, 3, 2, 2, 0.03, 0.02, c);
   using wear::meshes::FaceRole;
@@ -193,13 +204,7 @@ TEST_CASE("elasticity: a part held on its sides and bottom by their roles, whate
     p.degree = degree;
     p.relative_tolerance = 1e-13;
     ElasticitySolver solver(tria, map, p);
-    const auto r = solver.run(F);
-    CHECK(r.reaction_force.z == Approx(-r.applied_force.z).epsilon(1e-8));
-    CHECK(r.max_displacement == Approx(pressure * c / M).epsilon(1e-8));
-    for (unsigned int k = 0; k < tria.n_active_cells(); ++k) {
-      CHECK(solver.principal_stresses()[0][k] == Approx(-pressure * lambda / M).epsilon(1e-8));
-      CHECK(solver.principal_stresses()[2][k] == Approx(-pressure).epsilon(1e-8));
-    }
+    check_uniaxial_strain(solver, solver.run(F), tria.n_active_cells(), pressure, c);
   }
 }
 
