@@ -1,11 +1,14 @@
 // VTU writer: ASCII XML, one Piece, Float64 data. ASCII keeps the writer dependency-free
-// and the files diffable; 17 significant digits make values round-trip exactly.
+// and the files diffable. Each number is written as the shortest text that reads back to the
+// same double (std::to_chars), so values round-trip exactly; formatting through an ostream
+// at 17 digits cost a particle snapshot of 17,000 particles about half a second.
 #include "meshes/vtu_writer.h"
 
 #include "meshes/atomic_file.h"
 
-#include <iomanip>
+#include <charconv>
 #include <stdexcept>
+#include <string>
 
 namespace wear::meshes {
 
@@ -22,11 +25,39 @@ int nodes_per_cell(VtkCell c) {
   return 0;
 }
 
+/// Numbers as text into a buffer that goes to the stream in large pieces.
+class NumberText {
+public:
+  explicit NumberText(std::ostream& out) : out_(out) { text_.reserve(capacity); }
+  ~NumberText() { flush(); }
+  template <class T>
+  void put(T v, char after) {
+    if (text_.size() + 40 > capacity)
+      flush();
+    char buffer[32];
+    const auto end = std::to_chars(buffer, buffer + sizeof buffer, v).ptr;
+    text_.append(buffer, end);
+    text_.push_back(after);
+  }
+  void flush() {
+    out_.write(text_.data(), std::streamsize(text_.size()));
+    text_.clear();
+  }
+
+private:
+  static constexpr std::size_t capacity = 1 << 16;
+  std::ostream& out_;
+  std::string text_;
+};
+
 void write_array(std::ostream& out, const VtuArray& a) {
   out << "<DataArray type=\"Float64\" Name=\"" << a.name << "\" NumberOfComponents=\""
       << a.n_components << "\" format=\"ascii\">\n";
-  for (std::size_t i = 0; i < a.values.size(); ++i)
-    out << a.values[i] << ((i + 1) % 9 == 0 ? '\n' : ' ');
+  {
+    NumberText text(out);
+    for (std::size_t i = 0; i < a.values.size(); ++i)
+      text.put(a.values[i], (i + 1) % 9 == 0 ? '\n' : ' ');
+  }
   out << "\n</DataArray>\n";
 }
 } // namespace
@@ -48,23 +79,37 @@ void write_vtu(const VtuGrid& g, const std::string& path) {
                                std::to_string(a.values.size()) + " values for " +
                                std::to_string(n_cells) + " cells");
   write_atomically(path, [&](std::ostream& out) {
-    out << std::setprecision(17);
     out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" "
            "byte_order=\"LittleEndian\">\n<UnstructuredGrid>\n<Piece NumberOfPoints=\""
         << g.points.size() << "\" NumberOfCells=\"" << n_cells << "\">\n";
     out << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-    for (const auto& p : g.points)
-      out << p.x << ' ' << p.y << ' ' << p.z << '\n';
+    {
+      NumberText text(out);
+      for (const auto& p : g.points) {
+        text.put(p.x, ' ');
+        text.put(p.y, ' ');
+        text.put(p.z, '\n');
+      }
+    }
     out << "</DataArray>\n</Points>\n<Cells>\n"
            "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-    for (std::size_t i = 0; i < g.connectivity.size(); ++i)
-      out << g.connectivity[i] << ((i + 1) % npc == 0 ? '\n' : ' ');
+    {
+      NumberText text(out);
+      for (std::size_t i = 0; i < g.connectivity.size(); ++i)
+        text.put(g.connectivity[i], (i + 1) % npc == 0 ? '\n' : ' ');
+    }
     out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-    for (std::size_t c = 1; c <= n_cells; ++c)
-      out << c * npc << ((c % 16 == 0) ? '\n' : ' ');
+    {
+      NumberText text(out);
+      for (std::size_t c = 1; c <= n_cells; ++c)
+        text.put(c * npc, c % 16 == 0 ? '\n' : ' ');
+    }
     out << "\n</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-    for (std::size_t c = 0; c < n_cells; ++c)
-      out << int(g.cell_type) << ((c + 1) % 32 == 0 ? '\n' : ' ');
+    {
+      NumberText text(out);
+      for (std::size_t c = 0; c < n_cells; ++c)
+        text.put(int(g.cell_type), (c + 1) % 32 == 0 ? '\n' : ' ');
+    }
     out << "\n</DataArray>\n</Cells>\n";
     out << "<PointData>\n";
     for (const auto& a : g.point_data)
