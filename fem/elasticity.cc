@@ -159,7 +159,7 @@ void ElasticitySolver::setup_system() {
     if (roles.clamped(int(id)))
       VectorTools::interpolate_boundary_values(mapping_, dof_handler_, id, zero, constraints_);
   if (roles.any(meshes::FaceRole::held))
-    constrain_held_sides();
+    constrain_held_faces();
   constraints_.close();
   if (constraints_.n_constraints() == 0)
     throw std::runtime_error("FEM: no degree of freedom lies on a clamped face (the sample's "
@@ -172,7 +172,7 @@ void ElasticitySolver::setup_system() {
   solution_.reinit(dof_handler_.n_dofs());
 }
 
-void ElasticitySolver::constrain_held_sides() {
+void ElasticitySolver::constrain_held_faces() {
   const meshes::LabelRoles& roles = faces_.surface().roles;
   std::vector<types::global_dof_index> face_dofs;
   for (const auto& cell : dof_handler_.active_cell_iterators())

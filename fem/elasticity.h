@@ -85,7 +85,7 @@ private:
   /// u . n = 0 on the faces whose role is held (the sample's sides in its holder: they keep
   /// zero normal displacement and slide along the holder's walls, docs/theory.md section 6),
   /// into constraints_.
-  void constrain_held_sides();
+  void constrain_held_faces();
   void assemble_system(const meshes::FaceField<meshes::Vec3>& forces, ElasticityResult& r);
   void solve(ElasticityResult& r);
   /// The stress at every quadrature point; fills the cell fields and r's qp maxima.

@@ -377,8 +377,8 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
               "numbers n as labels S<n> (wearing), S<n>-free, S<n>-clamped and S<n>-held.");
     v.text("Wearing surfaces", w.wearing_surfaces,
            "A wearing wall's surfaces that wear, by number (`wearsim scene` lists them), "
-           "comma-separated, or 'all' for every surface not clamped; the others are free "
-           "(traction from particles, no wear).");
+           "comma-separated, or 'all' for every surface neither clamped nor held; the others "
+           "are free (traction from particles, no wear).");
     v.text("Clamped surfaces", w.clamped_surfaces,
            "A wearing wall's surfaces held fixed in the FEM (zero displacement: bolted to "
            "the structure), by number, comma-separated; a wear loop needs at least one.");
