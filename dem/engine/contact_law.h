@@ -34,7 +34,12 @@ struct ContactResult {
   double normal_force = 0; ///< [N] |F_n| after the clamp
   Vec3 tangential_force;   ///< [N] on i
   Vec3 v_tangential;       ///< [m/s] tangential relative velocity at the contact
+  double rotation_eps = 0; ///< [-] (delta . n)^2 / |delta|^2 of the history's rotation
 };
+
+/// The history's rotation into the tangent plane may take its series (rotation_series) when
+/// eps = (delta . n)^2 / |delta|^2 is below this; above it, the exact scale.
+constexpr double rotation_series_limit = 1e-4;
 
 /// Updates the tangential history `delta_t` [m] and returns forces and torques.
 /// Branch-free (every case computed, the valid one selected) so that the pair kernel can run
@@ -42,6 +47,10 @@ struct ContactResult {
 /// Square roots: sqrt(R* delta), sqrt(S_n m*) (the tangential damping follows from the
 /// normal one: c_t / c_n = sqrt(S_t / S_n) = sqrt(4 G* / E*), a constant per pair type), one
 /// for the spin direction, one for the Coulomb scaling and one for the history rotation.
+/// `series_only`: the history's rotation by its series alone, one square root and one
+/// division fewer; the law itself where ContactResult::rotation_eps < rotation_series_limit
+/// (the SIMD lanes of the pair kernel redo the other contacts with series_only = false).
+template <bool series_only = false>
 __attribute__((always_inline)) inline ContactResult
 hertz_mindlin(const ContactParameters& p, const ContactGeometry& g, double dt, Vec3& delta_t) {
   using meshes::cross;
@@ -69,8 +78,12 @@ hertz_mindlin(const ContactParameters& p, const ContactGeometry& g, double dt, V
   const double l2 = d_len2 - dn * dn;
   const double eps = dn * dn / std::max(d_len2, tiny);
   const double series = 1 + eps * (0.5 + 0.375 * eps);
-  const double exact = std::sqrt(d_len2 / std::max(l2, tiny));
-  const double scale = eps < 1e-4 ? series : (l2 > 0 ? exact : 0.0);
+  double scale = series;
+  r.rotation_eps = eps;
+  if constexpr (!series_only) {
+    const double exact = std::sqrt(d_len2 / std::max(l2, tiny));
+    scale = eps < rotation_series_limit ? series : (l2 > 0 ? exact : 0.0);
+  }
   delta_t = (delta_t - n * dn) * scale + v_t * dt;
   Vec3 f_t = delta_t * (-s_t) - v_t * c_t;
   // Coulomb limit: scaled onto the cone, the spring alone carrying the limit.

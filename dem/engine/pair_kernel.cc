@@ -66,15 +66,17 @@ namespace {
                                                  ContactGeometry& g) {
   const double ri = d.position[i].r, rj = d.position[j].r, rs = ri + rj;
   const PackedMotion &a = d.motion[i], &b = d.motion[j];
-  const double mi = a.mass, mj = b.mass;
+  const double mi = a.mass, mj = b.mass, ms = mi + mj;
   const double dist = std::sqrt(bl.dist2[c]);
   const double inv = 1.0 / dist;
   g.normal.x = bl.dx[c] * inv;
   g.normal.y = bl.dy[c] * inv;
   g.normal.z = bl.dz[c] * inv;
   g.overlap = rs - dist;
-  g.r_eff = ri * rj / rs;
-  g.m_eff = mi * mj / (mi + mj);
+  // R* = ri rj / rs and m* = mi mj / ms by one division.
+  const double inv_rm = 1.0 / (rs * ms);
+  g.r_eff = ri * rj * ms * inv_rm;
+  g.m_eff = mi * mj * rs * inv_rm;
   g.arm_i = ri - 0.5 * g.overlap;
   g.arm_j = rj - 0.5 * g.overlap;
   g.lever_i = ri;
@@ -89,38 +91,54 @@ namespace {
   g.w_relative.z = a.wz - b.wz;
 }
 
+/// The law for compacted contact c into the block's lanes. `series_only`: the history's
+/// rotation by its series (contact_law.h), the lane marked in bl.redo where that is not the law.
+template <bool uniform, bool series_only>
+[[gnu::always_inline]] inline void contact_law_lane(const PairKernelData& d,
+                                                    const std::uint32_t* pi,
+                                                    const std::uint32_t* pj, const Vec3* history,
+                                                    double dt, int c, PairBlock& bl) {
+  const std::uint32_t q = bl.pair[c], i = pi[q], j = pj[q];
+  ContactGeometry g;
+  pair_geometry(d, bl, c, i, j, g);
+  ContactParameters cp;
+  const ContactParameters& t =
+      uniform ? *d.uniform : d.contact[d.material[i] * d.n_materials + d.material[j]];
+  cp.e_star = t.e_star;
+  cp.g_star = t.g_star;
+  cp.beta = t.beta;
+  cp.friction = t.friction;
+  cp.rolling_friction = t.rolling_friction;
+  cp.tangential_damping_ratio = t.tangential_damping_ratio;
+  Vec3 h;
+  h.x = history[q].x;
+  h.y = history[q].y;
+  h.z = history[q].z;
+  const ContactResult r = hertz_mindlin<series_only>(cp, g, dt, h);
+  bl.hx[c] = h.x, bl.hy[c] = h.y, bl.hz[c] = h.z;
+  bl.fx[c] = r.force.x, bl.fy[c] = r.force.y, bl.fz[c] = r.force.z;
+  bl.tix[c] = r.torque_i.x, bl.tiy[c] = r.torque_i.y, bl.tiz[c] = r.torque_i.z;
+  bl.tjx[c] = r.torque_j.x, bl.tjy[c] = r.torque_j.y, bl.tjz[c] = r.torque_j.z;
+  bl.redo[c] = series_only && r.rotation_eps >= rotation_series_limit ? 1.0 : 0.0;
+}
+
 /// Pass 2: the contact law over the m compacted contacts, several per SIMD instruction;
 /// updated histories, forces and torques go into the block's lanes. `uniform`: one pair type
-/// for all (d.uniform), loaded once instead of gathered per lane with both materials.
+/// for all (d.uniform), loaded once instead of gathered per lane with both materials. The
+/// lanes rotate the histories by the series; the rare contact whose normal turned too far for
+/// it (a new or a rolling-over contact) is redone one by one with the exact rotation: the
+/// exact scale's square root and division left the lanes.
 template <bool uniform>
 [[gnu::always_inline]] inline void
 contact_law_lanes(const PairKernelData& d, const std::uint32_t* pi, const std::uint32_t* pj,
                   const Vec3* history, int m, PairBlock& bl) {
   const double dt = d.dt;
 #pragma omp simd
-  for (int c = 0; c < m; ++c) {
-    const std::uint32_t q = bl.pair[c], i = pi[q], j = pj[q];
-    ContactGeometry g;
-    pair_geometry(d, bl, c, i, j, g);
-    ContactParameters cp;
-    const ContactParameters& t =
-        uniform ? *d.uniform : d.contact[d.material[i] * d.n_materials + d.material[j]];
-    cp.e_star = t.e_star;
-    cp.g_star = t.g_star;
-    cp.beta = t.beta;
-    cp.friction = t.friction;
-    cp.rolling_friction = t.rolling_friction;
-    cp.tangential_damping_ratio = t.tangential_damping_ratio;
-    Vec3 h;
-    h.x = history[q].x;
-    h.y = history[q].y;
-    h.z = history[q].z;
-    const ContactResult r = hertz_mindlin(cp, g, dt, h);
-    bl.hx[c] = h.x, bl.hy[c] = h.y, bl.hz[c] = h.z;
-    bl.fx[c] = r.force.x, bl.fy[c] = r.force.y, bl.fz[c] = r.force.z;
-    bl.tix[c] = r.torque_i.x, bl.tiy[c] = r.torque_i.y, bl.tiz[c] = r.torque_i.z;
-    bl.tjx[c] = r.torque_j.x, bl.tjy[c] = r.torque_j.y, bl.tjz[c] = r.torque_j.z;
-  }
+  for (int c = 0; c < m; ++c)
+    contact_law_lane<uniform, true>(d, pi, pj, history, dt, c, bl);
+  for (int c = 0; c < m; ++c)
+    if (bl.redo[c])
+      contact_law_lane<uniform, false>(d, pi, pj, history, dt, c, bl);
 }
 
 /// Pass 3: histories, forces and torques of the m contacts scattered in list order; a
@@ -132,13 +150,27 @@ contact_law_lanes(const PairKernelData& d, const std::uint32_t* pi, const std::u
                                            const PairBlock& bl, Vec3* force, Vec3* torque) {
   const double co = d.cos_angle, si = d.sin_angle;
   ForeignForces& out = *d.foreign;
+  if (m == 0)
+    return;
+  // Pairs are listed by their first particle: i's sums stay in registers while it lasts, not
+  // added through memory contact by contact (each add waited on the store before it). A later
+  // contact's partner j > i is never the current i.
+  std::uint32_t current = pi[bl.pair[0]];
+  Vec3 f_current{}, t_current{};
   for (int c = 0; c < m; ++c) {
     const std::uint32_t q = bl.pair[c], i = pi[q], j = pj[q];
     history[q] = {bl.hx[c], bl.hy[c], bl.hz[c]};
     const Vec3 f{bl.fx[c], bl.fy[c], bl.fz[c]};
     const Vec3 tj{bl.tjx[c], bl.tjy[c], bl.tjz[c]};
-    force[i] += f;
-    torque[i] += Vec3{bl.tix[c], bl.tiy[c], bl.tiz[c]};
+    if (i != current) {
+      force[current] += f_current;
+      torque[current] += t_current;
+      current = i;
+      f_current = {};
+      t_current = {};
+    }
+    f_current += f;
+    t_current += Vec3{bl.tix[c], bl.tiy[c], bl.tiz[c]};
     if (j < d.own_end) {
       force[j] -= f;
       torque[j] += tj;
@@ -163,6 +195,8 @@ contact_law_lanes(const PairKernelData& d, const std::uint32_t* pi, const std::u
       out.torque[out.n++] = to;
     }
   }
+  force[current] += f_current;
+  torque[current] += t_current;
 }
 
 } // namespace

@@ -23,6 +23,7 @@ struct alignas(64) PairBlock {
   double hx[n], hy[n], hz[n];                            ///< [m] updated tangential history
   double fx[n], fy[n], fz[n];                            ///< [N] on i
   double tix[n], tiy[n], tiz[n], tjx[n], tjy[n], tjz[n]; ///< [N m] on i and on j
+  double redo[n]; ///< the history's rotation needs its exact scale (contact_law.h)
 };
 
 /// Position and radius of one particle slot in one 32-byte record: the distance test of a
