@@ -37,8 +37,8 @@ struct ContactResult {
   double rotation_eps = 0; ///< [-] (delta . n)^2 / |delta|^2 of the history's rotation
 };
 
-/// The history's rotation into the tangent plane may take its series (rotation_series) when
-/// eps = (delta . n)^2 / |delta|^2 is below this; above it, the exact scale.
+/// The history's rotation into the tangent plane takes its series 1 + eps/2 + 3 eps^2/8 when
+/// eps = (delta . n)^2 / |delta|^2 is below this; above it, the exact scale (1 - eps)^(-1/2).
 constexpr double rotation_series_limit = 1e-4;
 
 /// Updates the tangential history `delta_t` [m] and returns forces and torques.

@@ -14,7 +14,7 @@ Written: the sample's volume mesh after stage 23 (vertices in the sample frame [
 tetrahedra), its boundary surface as triangles of those vertices with their labels (the
 labels of meshes::label: bottom 1, sides 2, base 3, element C<j><k> 10 j + k; the sides are
 held, the sample stands in its holder), the removed volume per surface face [m^3] and the
-stage's amplification. 0.76 MB, gzip-compressed.
+stage's amplification. 0.77 MB, gzip-compressed.
 
 usage: /usr/bin/python3 tests/data/wear-out/extract.py   (from the repository root; needs
 h5py, git and the history commit 7937c06)
