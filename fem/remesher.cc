@@ -269,10 +269,17 @@ HolePlan plan_holes(const meshes::SurfaceMesh& worn) {
   return plan;
 }
 
+// With `features` given (the old surface's sharp edges on a surface whose chamfers and slivers
+// are not to be split off, meshes::implicit_recession), they join the label boundaries and no
+// angle splits the patches further: at 80 deg the chamfers of a grid's zero set still split
+// into patches gmsh cannot parametrise ("Wrong topology of boundary mesh").
 void classify(const meshes::SurfaceMesh& worn, double feature_angle_deg,
-              const std::vector<Edge>& cuts) {
-  add_label_boundaries(worn, cuts);
-  gmsh::model::mesh::classifySurfaces(feature_angle_deg * pi / 180, true, true, pi);
+              const std::vector<Edge>& cuts, const std::vector<Edge>* features) {
+  std::vector<Edge> curves = cuts;
+  if (features)
+    curves.insert(curves.end(), features->begin(), features->end());
+  add_label_boundaries(worn, curves);
+  gmsh::model::mesh::classifySurfaces(features ? pi : feature_angle_deg * pi / 180, true, true, pi);
 }
 
 // Classifies the input so that the patches gmsh reparametrises map without folding. gmsh
@@ -282,14 +289,15 @@ void classify(const meshes::SurfaceMesh& worn, double feature_angle_deg,
 // tolerance is raised to cover them, when every patch it would also cover is a graph over
 // its plane), or else, with few holes, cut open and classified again. A patch with many
 // holes that is no graph (the base late in the wear-out case) is left to the harmonic map.
-void classify_mappable(const meshes::SurfaceMesh& worn, double feature_angle_deg, RemeshReport& r) {
-  classify(worn, feature_angle_deg, {});
+void classify_mappable(const meshes::SurfaceMesh& worn, double feature_angle_deg,
+                       const std::vector<Edge>* features, RemeshReport& r) {
+  classify(worn, feature_angle_deg, {}, features);
   HolePlan plan = plan_holes(worn);
   r.n_cut_edges = plan.cuts.size();
   if (!plan.cuts.empty()) {
     gmsh::clear();
     add_discrete_surfaces(worn);
-    classify(worn, feature_angle_deg, plan.cuts);
+    classify(worn, feature_angle_deg, plan.cuts, features);
     plan = plan_holes(worn); // the pieces are new patches
   }
   if (plan.project_deviation > 0 && plan.projection_safe()) {
@@ -303,8 +311,8 @@ void classify_mappable(const meshes::SurfaceMesh& worn, double feature_angle_deg
 // parametrisation; returns the label of each patch. Refuses (throws) a classification that
 // loses a label or mixes labels in a patch.
 std::map<int, int> classify_patches(const meshes::SurfaceMesh& worn, double feature_angle_deg,
-                                    RemeshReport& r) {
-  classify_mappable(worn, feature_angle_deg, r);
+                                    const std::vector<Edge>* features, RemeshReport& r) {
+  classify_mappable(worn, feature_angle_deg, features, r);
   auto label_of = patch_labels(worn, &r.n_mixed_faces);
   // A small worn region can end up inside a neighbour's patch and lose its label in the
   // vote; fail this attempt so the next one (finally: keep the worn triangles) is tried.
@@ -370,11 +378,19 @@ void check_new_mesh(const meshes::SurfaceMesh& remeshed, double lowest, RemeshRe
   // onto the other (seen at 50x: cos -0.952 across a C12-base edge). Every increment after it
   // starts from a folded surface, so such a surface is refused like a bad tetrahedron.
   const auto quality = meshes::surface_quality(remeshed);
-  if (!quality.valid())
+  if (!quality.valid()) {
+    std::ostringstream where;
+    if (!quality.bad_faces.empty()) {
+      const auto f = quality.bad_faces.front();
+      const auto c = meshes::face_centroids(remeshed)[f];
+      where << std::setprecision(4) << ", the first at (" << c.x * 1e3 << ", " << c.y * 1e3 << ", "
+            << c.z * 1e3 << ") mm, label " << meshes::label::name(remeshed.face_labels[f]);
+    }
     throw std::runtime_error("the new surface folds (" + std::to_string(quality.n_folded_edges) +
                              " folded edges, " + std::to_string(quality.n_self_intersections) +
                              " crossing face pairs, " + std::to_string(quality.n_degenerate) +
-                             " degenerate faces)");
+                             " degenerate faces" + where.str() + ")");
+  }
   if (std::abs(r.volume_after / r.volume_before - 1) > 0.01)
     throw std::runtime_error("the new mesh's volume differs from the worn one by " +
                              std::to_string(100 * (r.volume_after / r.volume_before - 1)) + " %");
@@ -396,6 +412,7 @@ void check_new_mesh(const meshes::SurfaceMesh& remeshed, double lowest, RemeshRe
 // 2D algorithm, written to msh_path. Fills the patch and mesh counts of r.
 meshes::SurfaceMesh mesh_discrete_volume(const meshes::SurfaceMesh& worn, const RemeshParameters& p,
                                          int algorithm, double feature_angle_deg,
+                                         const std::vector<Edge>* features,
                                          const std::string& msh_path, RemeshReport& r) {
   meshes::GmshSession session("remesh");
   // With keep_surface the input entities stay and only the volume is meshed anew.
@@ -404,7 +421,7 @@ meshes::SurfaceMesh mesh_discrete_volume(const meshes::SurfaceMesh& worn, const 
   r.n_cut_edges = 0;
   r.planarity_tolerance = 0;
   if (algorithm != keep_surface)
-    label_of = classify_patches(worn, feature_angle_deg, r);
+    label_of = classify_patches(worn, feature_angle_deg, features, r);
   add_volume(label_of, r);
   set_size_field(worn, p);
   if (algorithm != keep_surface)
@@ -457,6 +474,7 @@ void check_remesh_input(const meshes::SurfaceMesh& worn, const RemeshParameters&
 // repairs the interior, the surface triangles stay as relaxed by the wear stages). The
 // errors of the failed attempts are appended to `errors`.
 bool mesh_first_attempt_that_succeeds(const meshes::SurfaceMesh& input, const RemeshParameters& p,
+                                      const std::vector<Edge>* features,
                                       const std::string& msh_path, meshes::SurfaceMesh& remeshed,
                                       RemeshReport& r, std::string& errors) {
   const double angle = p.feature_angle_deg;
@@ -468,7 +486,7 @@ bool mesh_first_attempt_that_succeeds(const meshes::SurfaceMesh& input, const Re
   for (const auto& [algorithm, feature_angle] : attempts) {
     ++attempt;
     try {
-      remeshed = mesh_discrete_volume(input, p, algorithm, feature_angle, msh_path, r);
+      remeshed = mesh_discrete_volume(input, p, algorithm, feature_angle, features, msh_path, r);
       r.attempt = attempt;
       r.surface_algorithm = algorithm;
       r.feature_angle_deg = feature_angle;
@@ -488,20 +506,23 @@ bool mesh_first_attempt_that_succeeds(const meshes::SurfaceMesh& input, const Re
 } // namespace
 
 meshes::SurfaceMesh remesh_sample(const meshes::SurfaceMesh& worn, const RemeshParameters& p,
-                                  const std::string& msh_path, RemeshReport* report) {
+                                  const std::string& msh_path, RemeshReport* report,
+                                  const std::vector<Edge>* features) {
   const meshes::Stopwatch start;
   check_remesh_input(worn, p);
   RemeshReport r;
   // Relaxed flat sides hold non-Delaunay triangles, which a volume mesher that keeps them can
   // only fill with flat tetrahedra; flipping them is exact (the same planes).
+  // Given feature curves are edges of the input as it is: it is not flipped.
   meshes::SurfaceMesh input = worn;
-  r.n_flat_flips = meshes::flip_flat_edges(input);
+  if (!features)
+    r.n_flat_flips = meshes::flip_flat_edges(input);
   r.n_faces_before = worn.n_faces();
   r.volume_before = meshes::enclosed_volume(worn);
   r.area_before = meshes::area_per_label(worn);
   meshes::SurfaceMesh remeshed;
   std::string errors;
-  if (!mesh_first_attempt_that_succeeds(input, p, msh_path, remeshed, r, errors)) {
+  if (!mesh_first_attempt_that_succeeds(input, p, features, msh_path, remeshed, r, errors)) {
     const std::string dump = msh_path + ".failed-input.msh";
     write_surface_msh(input, dump);
     throw std::runtime_error("remeshing: gmsh failed to mesh the worn volume with every surface "

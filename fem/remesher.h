@@ -4,8 +4,11 @@
 #include "meshes/geometry_parameters.h"
 #include "meshes/surface_mesh.h"
 
+#include <cstdint>
 #include <map>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace wear::fem {
 
@@ -76,9 +79,13 @@ struct RemeshReport {
 /// the input are first re-triangulated by Delaunay flips (same surface), and an attempt leaving a
 /// flat tetrahedron (quality below 1e-8) fails like a gmsh error. Returns the new boundary surface
 /// with revision worn.revision() + 1. Throws when the surface is not closed, gmsh fails, or a label
-/// is lost.
-meshes::SurfaceMesh remesh_sample(const meshes::SurfaceMesh& worn, const RemeshParameters& p,
-                                  const std::string& msh_path, RemeshReport* report = nullptr);
+/// is lost. With `features` (edges of `worn` as vertex pairs, smaller first: the feature curves
+/// of meshes::implicit_recession), the patches are split along them and the label boundaries
+/// only, never by the angle between faces, and the input is not flipped.
+meshes::SurfaceMesh
+remesh_sample(const meshes::SurfaceMesh& worn, const RemeshParameters& p,
+              const std::string& msh_path, RemeshReport* report = nullptr,
+              const std::vector<std::pair<std::uint32_t, std::uint32_t>>* features = nullptr);
 
 /// Writes a labelled surface as a gmsh 4.1 `.msh` (one discrete surface and physical group
 /// per label) that meshes::read_msh_surface reads back, e.g. a surface remeshing failed on.

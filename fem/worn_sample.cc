@@ -97,8 +97,9 @@ struct Remeshed {
 // Remeshes `worn` into `path` and reads it back. The surface is taken from the triangulation
 // as read (the .msh text need not round-trip gmsh's doubles bit for bit).
 Remeshed remesh_and_read(const meshes::SurfaceMesh& worn, const RemeshParameters& p,
-                         const std::string& path, RemeshReport& report) {
-  remesh_sample(worn, p, path, &report);
+                         const std::string& path, RemeshReport& report,
+                         const std::vector<std::pair<std::uint32_t, std::uint32_t>>* features) {
+  remesh_sample(worn, p, path, &report, features);
   Remeshed out;
   out.tria = std::make_unique<dealii::Triangulation<3>>();
   read_sample_mesh(path, *out.tria);
@@ -262,6 +263,10 @@ WearStageReport WornSample::apply_wear(const meshes::FaceField<double>& removed)
   meshes::FaceField<double> remaining = wear_face_share(removed, surface(), r);
   const double volume_before = mesh_volume(*tria_);
   StageSplit split;
+  if (p_.evolution == SurfaceEvolution::implicit) {
+    take_implicit(remaining, r);
+    split.n_left = 0;
+  }
   while (split.n_left > 0) {
     const meshes::SurfaceMesh& s = surface();
     const double floor_z = bottom_height(s) + p_.worn_through_thickness;
@@ -273,6 +278,12 @@ WearStageReport WornSample::apply_wear(const meshes::FaceField<double>& removed)
     }
     recede(inc);
     const Verdict verdict = judge_increment(s, inc, floor_z, split, p_);
+    const bool gives_up =
+        verdict.step == NextStep::folds || verdict.step == NextStep::missed_volume;
+    if (gives_up && p_.evolution == SurfaceEvolution::explicit_then_implicit) {
+      take_implicit(remaining, r);
+      break;
+    }
     if (verdict.step != NextStep::take) {
       retry_increment(verdict, inc, split, remaining.values(), r);
       continue;
@@ -343,6 +354,26 @@ void WornSample::take_increment(const StageIncrement& inc, meshes::FaceField<dou
   }
 }
 
+void WornSample::take_implicit(meshes::FaceField<double>& remaining, WearStageReport& r) {
+  const meshes::SurfaceMesh worn = surface();
+  const auto receded = meshes::implicit_recession(worn, remaining.values(), p_.implicit);
+  const auto area = meshes::face_areas(worn);
+  for (std::size_t f = 0; f < worn.n_faces(); ++f) {
+    removed_[f] += remaining[f];
+    depth_[f] += remaining[f] / area[f];
+    remaining[f] = 0;
+  }
+  ++r.increments;
+  ++r.n_implicit;
+  r.implicit_seconds += receded.seconds;
+  r.implicit_grid_loss += receded.grid_loss;
+  r.worn_through_area += receded.worn_through_area;
+  r.vanished_labels.insert(r.vanished_labels.end(), receded.vanished_labels.begin(),
+                           receded.vanished_labels.end());
+  carry_fields(worn, receded.surface);
+  record_remesh(remesh_from(receded.surface, &receded.feature_edges), r);
+}
+
 std::string WornSample::write_failed_increment(const meshes::SurfaceMesh& before,
                                                const meshes::SurfaceMesh& after,
                                                const std::vector<std::uint32_t>& bad_faces) const {
@@ -361,12 +392,14 @@ RemeshReport WornSample::remesh() {
   return remesh_from(surface());
 }
 
-RemeshReport WornSample::remesh_from(const meshes::SurfaceMesh& worn) {
+RemeshReport
+WornSample::remesh_from(const meshes::SurfaceMesh& worn,
+                        const std::vector<std::pair<std::uint32_t, std::uint32_t>>* features) {
   meshes::ensure_directory(p_.mesh_directory);
   const std::string path =
       p_.mesh_directory + "/sample-r" + std::to_string(worn.revision() + 1) + ".msh";
   RemeshReport report;
-  Remeshed fresh = remesh_and_read(worn, p_.remesh, path, report);
+  Remeshed fresh = remesh_and_read(worn, p_.remesh, path, report, features);
   const auto offset =
       fold_free_restoring_offset(fresh.map->surface(), meshes::enclosed_volume(worn), report);
   MotionReport motion;

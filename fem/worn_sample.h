@@ -6,6 +6,7 @@
 #include "fem/mesh_motion.h"
 #include "fem/remesher.h"
 #include "meshes/face_field.h"
+#include "meshes/implicit_recession.h"
 
 #include <deal.II/grid/tria.h>
 
@@ -16,9 +17,24 @@
 
 namespace wear::fem {
 
+/// How a stage's wear moves the worn surface.
+enum class SurfaceEvolution {
+  /// Vertices recede along their normals (meshes::volume_exact_recession) in increments,
+  /// halved and spread where the surface would fold; the stage stops where it still folds.
+  explicit_only,
+  /// As explicit_only, and where the surface would still fold, the rest of the stage is
+  /// taken by the implicit recession (meshes::implicit_recession) and remeshed.
+  explicit_then_implicit,
+  /// Every stage by the implicit recession and a remesh: crests, vanishing elements and
+  /// holes in any stage.
+  implicit,
+};
+
 /// Defaults declared here only; the FEM subsection of a case file sets some fields
 /// (FemParameters, fem/fem_parameters.h).
 struct WornSampleParameters {
+  SurfaceEvolution evolution = SurfaceEvolution::explicit_then_implicit;
+  meshes::ImplicitRecessionParameters implicit; ///< grid and tolerances of the implicit path
   /// Remesh when the smallest scaled Jacobian after mesh motion falls below this (and
   /// whenever a cell inverts). [-]
   double remesh_min_scaled_jacobian = 0.01;
@@ -56,7 +72,13 @@ struct WearStageReport {
   /// [m^3] chord volume the remeshes did not give back: every restoring offset folded, or the
   /// valid one fell short of the target (new - worn surface)
   double volume_not_restored = 0;
-  RemeshReport last_remesh; ///< valid when n_remeshes > 0
+  int n_implicit = 0;          ///< implicit recessions taken (each followed by a remesh)
+  double implicit_seconds = 0; ///< [s] spent in them
+  /// [m^3] grid volume the implicit recessions took from the wear (their grid_loss)
+  double implicit_grid_loss = 0;
+  std::vector<int> vanished_labels; ///< convex elements worn away in the stage
+  double worn_through_area = 0;     ///< [m^2] clamped area the implicit recessions removed
+  RemeshReport last_remesh;         ///< valid when n_remeshes > 0
   /// RemeshReport::failed_attempts of each remesh in the stage that needed more than one
   /// attempt (the refused inputs are kept beside the meshes)
   std::vector<std::string> remesh_refusals;
@@ -133,7 +155,14 @@ private:
   /// throws when the stage gives up.
   void retry_increment(const Verdict& verdict, const StageIncrement& inc, StageSplit& split,
                        std::vector<double>& remaining, WearStageReport& r) const;
-  RemeshReport remesh_from(const meshes::SurfaceMesh& surface);
+  /// Takes the whole of `remaining` by the implicit recession and remeshes the result; the
+  /// accumulated fields follow onto the new surface.
+  void take_implicit(meshes::FaceField<double>& remaining, WearStageReport& r);
+  /// Remeshes the volume bounded by `surface`, split into patches along `features` when given
+  /// (fem::remesh_sample).
+  RemeshReport
+  remesh_from(const meshes::SurfaceMesh& surface,
+              const std::vector<std::pair<std::uint32_t, std::uint32_t>>* features = nullptr);
   /// Transfers the accumulated fields from `worn` (the current surface or its moved copy) to
   /// the remeshed surface `fresh`.
   void carry_fields(const meshes::SurfaceMesh& worn, const meshes::SurfaceMesh& fresh);

@@ -9,7 +9,10 @@
 // increments, mesh motions and remeshes of 38,000 tetrahedra) until an evolution passes it.
 #include "coupling/output/hdf5_file.h"
 #include "fem/worn_sample.h"
+#include "meshes/implicit_recession.h"
+#include "meshes/mesh_quality.h"
 #include "meshes/sample_generator.h"
+#include "meshes/surface_locator.h"
 
 #include <catch2/catch.hpp>
 
@@ -90,12 +93,49 @@ TEST_CASE("the wear-out's stage-24 surface takes the stage's wear without foldin
   REQUIRE_NOTHROW(r = sample.apply_wear(removed));
   INFO("increments " << r.increments << ", spreadings " << r.n_spreadings << ", remeshes "
                      << r.n_remeshes);
-  CHECK(r.volume_change ==
-        Approx(r.removed_volume - r.worn_through_volume).epsilon(1e-3));
+  CHECK(r.volume_change == Approx(r.removed_volume - r.worn_through_volume).epsilon(1e-3));
   const auto& s = sample.surface();
   for (std::size_t f = 0; f < s.n_faces(); ++f)
     if (s.face_labels[f] == meshes::label::bottom)
       for (const auto v : s.triangles[f])
         CHECK(s.vertices[v].z == 0.0);
   std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("the implicit recession takes the wear-out's stage-24 wear whole, without folding",
+          "[fem][wear-out][long]") {
+  // The whole stage in one step on the surface the explicit recession folds on: a closed,
+  // unfolded surface; each label loses its share of the asked volume (the grid's own loss at
+  // the unworn edges, grid_loss, taken from all alike) to the tolerance, the total exactly.
+  const WearOutStage data = read_stage23();
+  const auto& s = data.state.surface;
+  meshes::ImplicitRecessionParameters p;
+  const auto r = meshes::implicit_recession(s, data.removed_volume, p);
+  INFO("fine faces " << r.n_fine_faces << ", faces " << r.surface.n_faces() << ", nodes "
+                     << r.n_nodes << ", " << r.n_iterations << " fields, " << r.seconds
+                     << " s, grid loss " << r.grid_loss * 1e9 << " mm^3");
+  CHECK(meshes::check_closed(r.surface).closed());
+  CHECK(meshes::surface_quality(r.surface).valid());
+  CHECK(r.removed_volume == Approx(r.asked_volume).epsilon(1e-4));
+  const double share = 1 - r.grid_loss / r.asked_volume;
+  CHECK(share > 0.98);
+  for (const auto& [label, asked] : r.asked) {
+    INFO(meshes::label::name(label) << " asked " << asked * 1e9 << " mm^3");
+    CHECK(r.removed.at(label) == Approx(share * asked).epsilon(1e-3));
+  }
+  // The unworn faces: the vertices in the bottom's plane stay there bit for bit; the grid cuts
+  // the unworn edges into chamfers, by less than 0.05 of the 3 mm mesh size.
+  const meshes::SurfaceLocator old(s);
+  const auto centroid = meshes::face_centroids(r.surface);
+  double chamfer = 0;
+  for (std::size_t f = 0; f < r.surface.n_faces(); ++f) {
+    if (r.surface.face_wears(f))
+      continue;
+    chamfer = std::max(chamfer, old.nearest(centroid[f]).distance);
+  }
+  for (const auto& x : r.surface.vertices)
+    if (std::abs(x.z) < 1e-6)
+      CHECK(x.z == 0.0);
+  INFO("deepest chamfer " << chamfer * 1e3 << " mm");
+  CHECK(chamfer < 0.05 * 3e-3);
 }

@@ -6,6 +6,7 @@
 // volume, and a point load diffuses into a neighbourhood whose size grows with the ring count.
 #include "meshes/recession.h"
 #include "meshes/structured_grid.h"
+#include "tests/meshes/test_shapes.h"
 
 #include <catch2/catch.hpp>
 
@@ -13,6 +14,7 @@
 #include <numeric>
 
 using namespace wear::meshes;
+using wear::meshes::testing::uniform_depth_volume;
 
 namespace {
 // A flat 20 x 20 mm plate, 20 x 20 quads; the strip x > 15 mm is a non-wearing side.
@@ -29,15 +31,6 @@ SurfaceMesh plate() {
       m.face_labels[f] = label::side;
   m.roles.set(label::base, FaceRole::wearing); // the side keeps no role: free
   return m;
-}
-// The removed volume per face of a uniform depth [m] on the wear face.
-std::vector<double> uniform_depth_volume(const SurfaceMesh& m, double depth) {
-  const auto area = face_areas(m);
-  std::vector<double> v(m.n_faces(), 0);
-  for (std::size_t f = 0; f < m.n_faces(); ++f)
-    if (m.face_wears(f))
-      v[f] = depth * area[f];
-  return v;
 }
 } // namespace
 

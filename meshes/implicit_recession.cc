@@ -1,0 +1,540 @@
+// The implicit recession of a worn part (docs/theory.md, "Wear to the end").
+//
+// The part is phi, its signed distance on a grid (meshes/level_set_grid.h). A wearing face f
+// asked to lose V_f has the depth s_L V_f / A_f; a vertex recedes by the area-weighted mean
+// depth of the wearing faces around it, linearly in between; the material removed is the union
+// of the balls of those radii about the surface's points, g < 0 (level_set_grid.h), and the
+// new part is psi = max(phi, -g) <= 0. For a uniform depth this is the exact inward offset of the
+// surface (Huygens: every point at distance d from the surface, nothing else), with crests
+// receding along their bisector and concave corners rounding; it never folds, and where the
+// balls reach through a thin part or across a ridge the topology changes with them.
+//
+// Volume: the grid books the removed material per tetrahedron, vol(phi < 0) - vol(psi < 0),
+// to the labels of the receding faces nearest its nodes (the material under each label,
+// whichever ball removed it); s_L is scaled per label until each label's booked volume matches
+// its asked one. The zero set of
+// the interpolant (marching tetrahedra) encloses exactly vol(psi < 0) of the grid, and the
+// grid's own zero set of phi encloses less than the input (chords across edges and curved
+// faces, the grid loss E = V_input - vol(phi < 0)); the labels are therefore asked for
+// V_L (V - E) / V, so that the new surface encloses exactly V_input - V.
+//
+// Labels: a new face lies either on the old surface (phi = 0 there: it keeps the nearest old
+// face's label) or on the receded front (g = 0: it takes the label of the face whose ball
+// reached there); islands of a label, where the labels speckle along a boundary, join their
+// surroundings. A convex element whose top stands less than `vanish_height` above the
+// wearing faces around it is worn away and joins them.
+#include "meshes/implicit_recession.h"
+
+#include "meshes/level_set_grid.h"
+#include "meshes/recession.h"
+#include "meshes/stopwatch.h"
+#include "meshes/surface_decimation.h"
+#include "meshes/surface_locator.h"
+#include "meshes/triangle_geometry.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <set>
+#include <stdexcept>
+#include <string>
+
+namespace wear::meshes {
+
+namespace {
+
+void check_input(const SurfaceMesh& s, const std::vector<double>& removed,
+                 const ImplicitRecessionParameters& p) {
+  s.validate("surface to recede");
+  if (removed.size() != s.n_faces())
+    throw std::invalid_argument("implicit recession: " + std::to_string(removed.size()) +
+                                " removed volumes for " + std::to_string(s.n_faces()) + " faces");
+  for (std::size_t f = 0; f < removed.size(); ++f)
+    if (!(removed[f] >= 0) || !std::isfinite(removed[f]))
+      throw std::invalid_argument("implicit recession: face " + std::to_string(f) +
+                                  " is asked to lose " + std::to_string(removed[f]) + " m^3");
+  if (!check_closed(s).closed())
+    throw std::invalid_argument("implicit recession: the surface is not closed");
+  if (!(p.spacing > 0) || !(p.vanish_height >= 0) || !(p.volume_tolerance > 0) ||
+      p.max_iterations < 1 || !(p.max_edge > p.spacing))
+    throw std::invalid_argument("implicit recession: spacing, vanish height, volume tolerance "
+                                "iteration count or largest edge out of range");
+}
+
+// Dense index of every label of s.
+struct LabelIndex {
+  std::vector<int> labels;
+  int of(int label) const {
+    return int(std::lower_bound(labels.begin(), labels.end(), label) - labels.begin());
+  }
+};
+
+// Per label index, the removed volume the grid books: per tetrahedron vol(phi < 0) -
+// vol(psi < 0), shared equally among the labels of the nearest receding faces (owners) of its
+// nodes where the front decides psi: the volume removed under each label, whichever face's
+// ball removed it. Summed per z layer first, so the result does not depend on the thread
+// count.
+std::vector<double> booked_removal(const LevelSetGrid& phi, const LevelSetGrid& psi,
+                                   const std::vector<std::int32_t>& owner,
+                                   const std::vector<int>& label_of_face, std::size_t n_labels) {
+  const int nz = phi.n(2) - 1;
+  std::vector<double> per_layer(std::size_t(nz) * n_labels, 0.0);
+  const double h = phi.spacing();
+#pragma omp parallel for schedule(dynamic, 1)
+  for (int k = 0; k < nz; ++k) {
+    double* booked = &per_layer[std::size_t(k) * n_labels];
+    for (int j = 0; j + 1 < phi.n(1); ++j)
+      for (int i = 0; i + 1 < phi.n(0); ++i) {
+        std::size_t node[8];
+        bool active = false;
+        for (int c = 0; c < 8; ++c) {
+          node[c] = phi.index(i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1));
+          active |= psi.value[node[c]] != phi.value[node[c]];
+        }
+        if (!active)
+          continue;
+        const Vec3 o = phi.node(i, j, k);
+        for (const auto& t : kuhn_tetrahedra) {
+          Vec3 x[4];
+          double a[4], b[4];
+          int labels[4], n_active = 0;
+          for (int m = 0; m < 4; ++m) {
+            const int c = t[m];
+            x[m] = o + Vec3(h * (c & 1), h * ((c >> 1) & 1), h * ((c >> 2) & 1));
+            a[m] = level_value(phi.value[node[c]], h);
+            b[m] = level_value(psi.value[node[c]], h);
+            if (psi.value[node[c]] != phi.value[node[c]] && owner[node[c]] >= 0)
+              labels[n_active++] = label_of_face[std::size_t(owner[node[c]])];
+          }
+          if (n_active == 0)
+            continue;
+          const double removed =
+              tetrahedron_negative_volume(x, a) - tetrahedron_negative_volume(x, b);
+          for (int m = 0; m < n_active; ++m)
+            booked[labels[m]] += removed / n_active;
+        }
+      }
+  }
+  std::vector<double> total(n_labels, 0.0);
+  for (int k = 0; k < nz; ++k)
+    for (std::size_t l = 0; l < n_labels; ++l)
+      total[l] += per_layer[std::size_t(k) * n_labels + l];
+  return total;
+}
+
+// Labels of the new faces: the old face they lie on, or the face whose ball removed the
+// material there (the candidates: the sources at the corners of the centroid's cell).
+// Returns, per new face, that old face.
+std::vector<std::uint32_t> label_new_faces(const SurfaceMesh& old,
+                                           const std::vector<double>& vertex_depth,
+                                           const LevelSetGrid& grid,
+                                           const std::vector<std::int32_t>& source,
+                                           SurfaceMesh& fresh) {
+  std::vector<std::uint32_t> from_face(fresh.n_faces());
+  const SurfaceLocator locate(old);
+  const auto centroid = face_centroids(fresh);
+  const double h = grid.spacing();
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::int64_t f = 0; f < std::int64_t(fresh.n_faces()); ++f) {
+    const Vec3 c = centroid[std::size_t(f)];
+    const auto on_old = locate.nearest(c);
+    int cell[3];
+    for (int d = 0; d < 3; ++d)
+      cell[d] = std::clamp(int(std::floor((c[d] - grid.origin()[d]) / h)), 0, grid.n(d) - 2);
+    double g = std::numeric_limits<double>::infinity();
+    long from = -1;
+    for (int corner = 0; corner < 8; ++corner) {
+      const auto src = source[grid.index(cell[0] + (corner & 1), cell[1] + ((corner >> 1) & 1),
+                                         cell[2] + ((corner >> 2) & 1))];
+      if (src < 0)
+        continue;
+      const double gf = front_value(old, vertex_depth, std::size_t(src), c);
+      if (gf < g) {
+        g = gf;
+        from = src;
+      }
+    }
+    const bool front = from >= 0 && std::abs(g) < on_old.distance;
+    from_face[std::size_t(f)] = std::uint32_t(front ? from : on_old.face);
+    fresh.face_labels[std::size_t(f)] = old.face_labels[from_face[std::size_t(f)]];
+  }
+  return from_face;
+}
+
+// Per face, the faces across its three edges (closed manifold surface), by sorting its
+// half-edges.
+std::vector<std::array<std::uint32_t, 3>> face_neighbours(const SurfaceMesh& m) {
+  struct HalfEdge {
+    std::uint32_t lo, hi, face, slot;
+  };
+  std::vector<HalfEdge> e;
+  e.reserve(3 * m.n_faces());
+  for (std::uint32_t f = 0; f < m.n_faces(); ++f)
+    for (std::uint32_t k = 0; k < 3; ++k) {
+      const auto a = m.triangles[f][k], b = m.triangles[f][(k + 1) % 3];
+      e.push_back({std::min(a, b), std::max(a, b), f, k});
+    }
+  std::sort(e.begin(), e.end(), [](const HalfEdge& x, const HalfEdge& y) {
+    return x.lo != y.lo ? x.lo < y.lo : x.hi < y.hi;
+  });
+  std::vector<std::array<std::uint32_t, 3>> across(m.n_faces());
+  for (std::size_t i = 0; i + 1 < e.size(); i += 2) {
+    if (e[i].lo != e[i + 1].lo || e[i].hi != e[i + 1].hi)
+      throw std::runtime_error("implicit recession: the zero set is not a closed manifold");
+    across[e[i].face][e[i].slot] = e[i + 1].face;
+    across[e[i + 1].face][e[i + 1].slot] = e[i].face;
+  }
+  return across;
+}
+
+// The boundaries between labels on the grid's zero set zigzag from face to face (each face
+// takes its own nearest old face); a face whose three neighbours across its edges carry one
+// other label, or two of them the same other label, takes it (a majority filter), in
+// `passes` sweeps. The remesher's curves along the boundaries are then straighter, and
+// small labels keep their area through the remesh.
+void smooth_label_boundaries(SurfaceMesh& m, int passes) {
+  const auto across = face_neighbours(m);
+  for (int pass = 0; pass < passes; ++pass) {
+    std::vector<int> next = m.face_labels;
+    for (std::size_t f = 0; f < m.n_faces(); ++f) {
+      const int a = m.face_labels[across[f][0]], b = m.face_labels[across[f][1]],
+                c = m.face_labels[across[f][2]], own = m.face_labels[f];
+      if (a == b && a != own)
+        next[f] = a;
+      else if (a == c && a != own)
+        next[f] = a;
+      else if (b == c && b != own)
+        next[f] = b;
+    }
+    m.face_labels = std::move(next);
+  }
+}
+
+// Islands of a label (connected pieces smaller than `fraction` of that label's largest piece,
+// by area), left where the new faces' labels speckle along a label boundary, join the label
+// they share most edges with: gmsh would have to parametrise each as a patch of its own.
+void merge_label_islands(SurfaceMesh& m, double fraction) {
+  const auto across = face_neighbours(m);
+  const auto area = face_areas(m);
+  for (int pass = 0; pass < 3; ++pass) {
+    std::vector<std::int32_t> piece(m.n_faces(), -1);
+    std::vector<double> piece_area;
+    std::vector<int> piece_label;
+    std::map<int, double> largest;
+    std::vector<std::uint32_t> stack;
+    for (std::uint32_t f = 0; f < m.n_faces(); ++f) {
+      if (piece[f] >= 0)
+        continue;
+      const auto id = std::int32_t(piece_area.size());
+      piece_area.push_back(0);
+      piece_label.push_back(m.face_labels[f]);
+      piece[f] = id;
+      stack.assign(1, f);
+      while (!stack.empty()) {
+        const auto g = stack.back();
+        stack.pop_back();
+        piece_area[std::size_t(id)] += area[g];
+        for (const auto n : across[g])
+          if (piece[n] < 0 && m.face_labels[n] == m.face_labels[f]) {
+            piece[n] = id;
+            stack.push_back(n);
+          }
+      }
+      auto& l = largest[m.face_labels[f]];
+      l = std::max(l, piece_area[std::size_t(id)]);
+    }
+    std::map<std::int32_t, std::map<int, int>> votes; // island -> label -> shared edges
+    for (std::uint32_t f = 0; f < m.n_faces(); ++f) {
+      const auto id = piece[f];
+      if (piece_area[std::size_t(id)] >= fraction * largest[piece_label[std::size_t(id)]])
+        continue;
+      for (const auto n : across[f])
+        if (m.face_labels[n] != m.face_labels[f])
+          ++votes[id][m.face_labels[n]];
+    }
+    if (votes.empty())
+      return;
+    std::map<std::int32_t, int> into;
+    for (const auto& [id, v] : votes)
+      into[id] = std::max_element(v.begin(), v.end(), [](const auto& x, const auto& y) {
+                   return x.second < y.second;
+                 })->first;
+    for (std::uint32_t f = 0; f < m.n_faces(); ++f) {
+      const auto it = into.find(piece[f]);
+      if (it != into.end())
+        m.face_labels[f] = it->second;
+    }
+  }
+}
+
+// Patches of the old surface: faces of one label joined across edges where their normals turn
+// by less than the feature angle (union-find).
+std::vector<int> old_patches(const SurfaceMesh& s, double feature_angle_deg) {
+  std::vector<int> parent(s.n_faces());
+  for (std::size_t f = 0; f < parent.size(); ++f)
+    parent[f] = int(f);
+  const auto root = [&](int f) {
+    while (parent[std::size_t(f)] != f)
+      f = parent[std::size_t(f)] = parent[std::size_t(parent[std::size_t(f)])];
+    return f;
+  };
+  const auto normal = face_normals(s);
+  const double cos_feature = std::cos(feature_angle_deg * 3.14159265358979323846 / 180);
+  for (const auto& [edge, faces] : edge_faces(s))
+    if (faces.size() == 2 && s.face_labels[faces[0]] == s.face_labels[faces[1]] &&
+        dot(normal[faces[0]], normal[faces[1]]) >= cos_feature)
+      parent[std::size_t(root(int(faces[0])))] = root(int(faces[1]));
+  std::vector<int> patch(s.n_faces());
+  for (std::size_t f = 0; f < patch.size(); ++f)
+    patch[f] = root(int(f));
+  return patch;
+}
+
+// Vertices on a clamped or held face of the old surface (within a hundredth of the spacing)
+// are put on it: the grid's zero set finds a plane to round-off, and those faces never move.
+void snap_fixed_vertices(const SurfaceMesh& old, double spacing, SurfaceMesh& fresh) {
+  const SurfaceLocator locate(old);
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::int64_t v = 0; v < std::int64_t(fresh.n_vertices()); ++v) {
+    auto& x = fresh.vertices[std::size_t(v)];
+    const auto near = locate.nearest(x);
+    const FaceRole role = old.face_role(std::size_t(near.face));
+    if (near.distance < 0.01 * spacing && (role == FaceRole::clamped || role == FaceRole::held))
+      x = near.point;
+  }
+}
+
+// Convex elements worn away: an element label whose highest vertex stands at most `height`
+// above the mean height of the vertices it shares with other wearing labels joins the label
+// it shares most edges with. Returns the labels removed.
+std::vector<int> merge_vanished_elements(SurfaceMesh& m, double height) {
+  std::map<int, double> top;
+  std::map<int, std::pair<double, int>> rim; // sum of heights, count
+  std::map<int, std::map<int, int>> shared;  // edges shared with each other label
+  for (std::size_t f = 0; f < m.n_faces(); ++f)
+    if (label::is_convex_element(m.face_labels[f]))
+      for (const auto v : m.triangles[f]) {
+        auto [it, added] = top.try_emplace(m.face_labels[f], m.vertices[v].z);
+        it->second = std::max(it->second, m.vertices[v].z);
+      }
+  for (const auto& [edge, faces] : edge_faces(m)) {
+    if (faces.size() != 2)
+      continue;
+    const int a = m.face_labels[faces[0]], b = m.face_labels[faces[1]];
+    if (a == b || !m.roles.wears(a) || !m.roles.wears(b))
+      continue;
+    for (const auto& [l, other] : {std::pair{a, b}, std::pair{b, a}}) {
+      if (!label::is_convex_element(l))
+        continue;
+      auto& r = rim[l];
+      r.first += m.vertices[edge.first].z + m.vertices[edge.second].z;
+      r.second += 2;
+      ++shared[l][other];
+    }
+  }
+  std::vector<int> gone;
+  std::map<int, int> into;
+  for (const auto& [l, r] : rim) {
+    if (top.at(l) - r.first / r.second > height)
+      continue;
+    const auto& around = shared[l];
+    into[l] = std::max_element(around.begin(), around.end(), [](const auto& x, const auto& y) {
+                return x.second < y.second;
+              })->first;
+    gone.push_back(l);
+  }
+  for (auto& label : m.face_labels) {
+    const auto it = into.find(label);
+    if (it != into.end())
+      label = it->second;
+  }
+  return gone;
+}
+
+// The depth at each vertex: the area-weighted mean of s_L V_f / A_f over the wearing faces
+// around it (as the explicit recession's, meshes/recession.h), so that the receded surface
+// is continuous where the wear per face is not; the receding faces are the wearing faces
+// with a vertex that recedes.
+void vertex_depths(const SurfaceMesh& s, const std::vector<double>& unit_depth,
+                   const std::vector<double>& scale, const std::vector<int>& label_of_face,
+                   const std::vector<double>& area, std::vector<double>& depth,
+                   std::vector<char>& receding) {
+  std::vector<double> weight(s.n_vertices(), 0.0);
+  std::fill(depth.begin(), depth.end(), 0.0);
+  for (std::size_t f = 0; f < s.n_faces(); ++f)
+    if (s.face_wears(f))
+      for (const auto v : s.triangles[f]) {
+        depth[v] += scale[std::size_t(label_of_face[f])] * unit_depth[f] * area[f];
+        weight[v] += area[f];
+      }
+  for (std::size_t v = 0; v < depth.size(); ++v)
+    depth[v] = weight[v] > 0 ? depth[v] / weight[v] : 0.0;
+  for (std::size_t f = 0; f < s.n_faces(); ++f) {
+    const auto& t = s.triangles[f];
+    receding[f] = s.face_wears(f) && (depth[t[0]] > 0 || depth[t[1]] > 0 || depth[t[2]] > 0);
+  }
+}
+
+} // namespace
+
+ImplicitRecession implicit_recession(const SurfaceMesh& s,
+                                     const std::vector<double>& removed_volume,
+                                     const ImplicitRecessionParameters& p) {
+  const Stopwatch clock;
+  check_input(s, removed_volume, p);
+  ImplicitRecession r;
+  LabelIndex index{s.labels()};
+  std::vector<int> label_of_face(s.n_faces());
+  for (std::size_t f = 0; f < s.n_faces(); ++f)
+    label_of_face[f] = index.of(s.face_labels[f]);
+  const auto area = face_areas(s);
+  std::vector<double> unit_depth(s.n_faces(), 0.0), asked(index.labels.size(), 0.0);
+  double largest_depth = 0;
+  for (std::size_t f = 0; f < s.n_faces(); ++f)
+    if (s.face_wears(f) && removed_volume[f] > 0 && area[f] > 0) {
+      unit_depth[f] = removed_volume[f] / area[f];
+      asked[std::size_t(label_of_face[f])] += removed_volume[f];
+      r.asked_volume += removed_volume[f];
+      largest_depth = std::max(largest_depth, unit_depth[f]);
+    }
+  for (std::size_t l = 0; l < asked.size(); ++l)
+    if (asked[l] > 0)
+      r.asked[index.labels[l]] = asked[l];
+
+  const double h = p.spacing, band = 3 * h;
+  LevelSetGrid phi(bounding_box(s), h, band + h);
+  r.n_nodes = phi.n_nodes();
+  signed_distance(s, phi, band);
+  const double volume_before = enclosed_volume(s);
+  r.grid_loss = volume_before - negative_volume(phi);
+  // The labels are asked for their share of what the grid has to remove.
+  const double share = r.asked_volume > 0 ? (r.asked_volume - r.grid_loss) / r.asked_volume : 0;
+
+  LevelSetGrid psi = phi;
+  std::vector<std::int32_t> source, owner;
+  std::vector<double> depth(s.n_vertices(), 0.0), booked;
+  std::vector<char> receding(s.n_faces(), 0);
+  // psi and the booked volumes for the label scales `scale` times `common`.
+  const auto build = [&](const std::vector<double>& scale, double common) {
+    std::vector<double> scaled = scale;
+    for (auto& x : scaled)
+      x *= common;
+    vertex_depths(s, unit_depth, scaled, label_of_face, area, depth, receding);
+    receding_front(s, depth, receding, psi, band, source, owner);
+    for (std::size_t n = 0; n < psi.value.size(); ++n)
+      psi.value[n] = std::max(phi.value[n], -psi.value[n]);
+    if (r.asked_volume > 0)
+      booked = booked_removal(phi, psi, owner, label_of_face, asked.size());
+    ++r.n_iterations;
+  };
+  // Newton steps on log(volume) against log(scale): the volume grows in proportion to the
+  // depth on a broad face, and up to its cube where the balls are large next to the faces (a
+  // sharpened crest). The exponent comes from the last two steps; a step is at most a factor 2.
+  const auto newton = [](double x, double value, double target, double previous_x,
+                         double previous_value) {
+    double exponent = 1;
+    if (previous_value > 0 && value > 0 && previous_x > 0 && previous_x != x)
+      exponent = std::clamp(std::log(value / previous_value) / std::log(x / previous_x), 0.5, 4.0);
+    return x * (value > 0 ? std::clamp(std::pow(target / value, 1 / exponent), 0.5, 2.0) : 2.0);
+  };
+  std::vector<double> scale(asked.size(), 1.0), previous_scale(asked.size(), 0.0),
+      previous_booked(asked.size(), 0.0);
+  const int per_label_iterations = p.volume_per_label ? std::max(1, p.max_iterations - 4) : 1;
+  for (int it = 0;; ++it) {
+    build(scale, 1.0);
+    if (r.asked_volume == 0)
+      break;
+    bool converged = true;
+    for (std::size_t l = 0; l < asked.size(); ++l) {
+      if (asked[l] == 0)
+        continue;
+      const double target = share * asked[l];
+      converged &= std::abs(booked[l] - target) <= p.volume_tolerance * target;
+      const double next =
+          newton(scale[l], booked[l], target, previous_scale[l], previous_booked[l]);
+      previous_scale[l] = scale[l];
+      previous_booked[l] = booked[l];
+      // A label asked for more than the material under it holds (an element asked to recede
+      // beyond its width) cannot be matched: its balls would reach through the part. Its
+      // scale stays below 1.5, and the common factor below makes up the total.
+      scale[l] = std::clamp(next, 0.1, 1.5);
+    }
+    if (converged && p.volume_per_label)
+      break;
+    if (it + 1 == per_label_iterations) {
+      // The per-label scales did not settle (a label that cannot be matched), or are not
+      // asked for: the last ones are kept, and a common factor brings the total to its target.
+      scale = previous_scale;
+      const double target = share * r.asked_volume;
+      double common = 1, previous_common = 0, total = 0, previous_total = 0;
+      for (const double x : booked)
+        total += x;
+      for (int step = 0; step < 4 && std::abs(total - target) > p.volume_tolerance * target;
+           ++step) {
+        const double next = newton(common, total, target, previous_common, previous_total);
+        previous_common = common;
+        previous_total = total;
+        common = next;
+        build(scale, common);
+        total = 0;
+        for (const double x : booked)
+          total += x;
+      }
+      break;
+    }
+  }
+  // psi, depth, source and booked all belong to the last build.
+  for (std::size_t l = 0; l < booked.size(); ++l)
+    if (booked[l] != 0)
+      r.removed[index.labels[l]] = booked[l];
+
+  r.surface = zero_surface(psi);
+  r.surface.roles = s.roles;
+  // The new faces carry their old patch as label while islands are merged and the surface is
+  // coarsened, so that both keep the patches apart; then each patch's label is put back.
+  const auto from_face = label_new_faces(s, depth, psi, source, r.surface);
+  r.n_fine_faces = r.surface.n_faces();
+  const auto patch = old_patches(s, p.feature_angle_deg);
+  std::map<int, int> label_of_patch;
+  for (std::size_t f = 0; f < r.surface.n_faces(); ++f) {
+    const int id = patch[from_face[f]];
+    label_of_patch[id] = r.surface.face_labels[f];
+    r.surface.face_labels[f] = id;
+  }
+  smooth_label_boundaries(r.surface, 2);
+  merge_label_islands(r.surface, 0.05);
+  DecimationParameters coarse;
+  coarse.max_error = 0.1 * h;
+  coarse.max_edge = p.max_edge;
+  decimate(r.surface, coarse);
+  snap_fixed_vertices(s, h, r.surface);
+  std::vector<int> patch_of_face = r.surface.face_labels;
+  for (auto& label : r.surface.face_labels)
+    label = label_of_patch.at(label);
+  for (const auto& [edge, faces] : edge_faces(r.surface))
+    if (faces.size() == 2 && patch_of_face[faces[0]] != patch_of_face[faces[1]] &&
+        r.surface.face_labels[faces[0]] == r.surface.face_labels[faces[1]])
+      r.feature_edges.push_back(edge);
+  r.vanished_labels = merge_vanished_elements(r.surface, p.vanish_height);
+  r.surface.set_revision(s.revision() + 1);
+  // The coarsening's chords across curved regions cut off volume; a uniform offset of the
+  // wearing faces gives it back (as after a remesh), so that the new surface encloses the
+  // input's volume less the asked one.
+  const double target = volume_before - r.asked_volume;
+  r.coarsening_loss = negative_volume(psi) - enclosed_volume(r.surface);
+  const auto restoring = volume_restoring_offset(r.surface, target);
+  for (std::size_t v = 0; v < r.surface.n_vertices(); ++v)
+    r.surface.vertices[v] += restoring.displacement[v];
+  r.removed_volume = volume_before - enclosed_volume(r.surface);
+  const auto area_before = area_per_label(s), area_after = area_per_label(r.surface);
+  for (const auto& [label, a] : area_before)
+    if (s.roles.of(label) == FaceRole::clamped) {
+      const auto it = area_after.find(label);
+      r.worn_through_area += a - (it == area_after.end() ? 0.0 : it->second);
+    }
+  r.seconds = clock.seconds();
+  return r;
+}
+
+} // namespace wear::meshes

@@ -1,0 +1,35 @@
+#pragma once
+// Coarsening of a fine triangle surface (the zero set of a grid, millions of faces, many of
+// them slivers) into one that gmsh can reparametrise: edges collapsed in order of the error
+// they cause, each vertex kept where it was (so plane regions stay exactly plane), label
+// boundaries kept as curves.
+#include "meshes/surface_mesh.h"
+
+namespace wear::meshes {
+
+struct DecimationParameters {
+  /// Root-mean-square distance of a kept vertex to the planes of the input faces it now
+  /// stands for (and, on a label boundary, to the boundary's edges) must stay below this. [m]
+  double max_error = 0.02e-3;
+  double max_edge = 1e-3; ///< [m] no collapse makes an edge longer
+  /// A collapse may turn no face's normal by more than acos(this).
+  double min_normal_cos = 0.7;
+  /// A collapse may leave no face of quality 4 sqrt(3) A / (sum of squared edges) below this,
+  /// unless it improves the worst face it replaces.
+  double min_quality = 0.1;
+};
+
+struct DecimationReport {
+  std::size_t n_faces_before = 0, n_faces_after = 0;
+  std::size_t n_collapses = 0;
+  double seconds = 0;
+};
+
+/// Coarsens the closed, labelled surface `m` in place by half-edge collapses (a vertex moves
+/// onto a neighbour), cheapest first by the quadric error of Garland and Heckbert, under the
+/// limits of `p`: the link condition keeps it a closed manifold, a vertex where three labels
+/// meet or a label boundary turns is never removed, a boundary vertex only along the boundary.
+/// Rounds of collapses alternate with Delaunay flips in nearly flat regions.
+DecimationReport decimate(SurfaceMesh& m, const DecimationParameters& p);
+
+} // namespace wear::meshes

@@ -1,0 +1,177 @@
+// The implicit recession against analytic shapes: a cube and a sphere receding uniformly keep
+// their shape (a smaller cube, a smaller sphere) and lose exactly the asked volume; a crest
+// recedes along its bisector as the entropy solution; a convex bump worn until its rim-to-top
+// height is gone leaves a flat base with its label removed; a thin plate worn through at a
+// spot opens a hole and says so. Tolerances are stated in units of the grid spacing h.
+#include "meshes/implicit_recession.h"
+#include "meshes/level_set_grid.h"
+#include "meshes/mesh_quality.h"
+#include "meshes/sample_generator.h"
+#include "tests/meshes/test_shapes.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace wear::meshes;
+
+namespace {
+using testing::uniform_depth_volume;
+double sum(const std::vector<double>& v) {
+  double s = 0;
+  for (const double x : v)
+    s += x;
+  return s;
+}
+// Recedes s by a uniform depth d on its wearing faces on a grid of spacing h, and checks what
+// every case shares: a closed surface that lost the asked volume.
+ImplicitRecession recede_uniformly(const SurfaceMesh& s, double d, double h,
+                                   bool per_label = true) {
+  const auto removed = uniform_depth_volume(s, d);
+  ImplicitRecessionParameters p;
+  p.spacing = h;
+  p.volume_per_label = per_label;
+  auto r = implicit_recession(s, removed, p);
+  INFO(r.n_iterations << " fields, " << r.seconds << " s");
+  CHECK(check_closed(r.surface).closed());
+  CHECK(r.removed_volume == Approx(sum(removed)).epsilon(1e-3));
+  return r;
+}
+// Euler characteristic V - E + F of a closed triangle surface: 2 per sphere-like component,
+// 0 per handle (a hole through a plate).
+long euler_characteristic(const SurfaceMesh& m) {
+  return long(m.n_vertices()) - long(m.n_faces()) * 3 / 2 + long(m.n_faces());
+}
+} // namespace
+
+TEST_CASE("the zero set of a sphere's signed distance encloses the grid's volume",
+          "[implicit_recession]") {
+  auto s = testing::icosphere(5e-3, 5);
+  orient_outward(s);
+  LevelSetGrid g(bounding_box(s), 0.25e-3, 1e-3);
+  signed_distance(s, g, 0.75e-3);
+  const auto z = zero_surface(g);
+  CHECK(check_closed(z).closed());
+  CHECK(check_closed(z).consistently_oriented());
+  CHECK(enclosed_volume(z) == Approx(negative_volume(g)).epsilon(1e-9));
+  // The icosphere's chords: its volume is within 0.2 % of the ball's.
+  CHECK(negative_volume(g) == Approx(enclosed_volume(s)).epsilon(2e-3));
+}
+
+TEST_CASE("a cube receding uniformly stays a cube and loses the asked volume",
+          "[implicit_recession]") {
+  const double a = 10e-3, d = 1e-3, h = 0.25e-3;
+  auto s = testing::box(a, a, a);
+  s.face_labels.assign(s.n_faces(), label::base);
+  s.roles.set(label::base, FaceRole::wearing);
+  const auto r = recede_uniformly(s, d, h);
+  // The cube of the same volume, centred where the cube was.
+  const double side = std::cbrt(a * a * a - r.asked_volume);
+  double worst = 0;
+  for (const auto& v : r.surface.vertices) {
+    double dist = 0;
+    for (int k = 0; k < 3; ++k)
+      dist = std::max(dist, std::abs(v[k] - a / 2));
+    worst = std::max(worst, std::abs(dist - side / 2));
+  }
+  INFO("side " << side * 1e3 << " mm, grid loss " << r.grid_loss * 1e9 << " mm^3");
+  CHECK(worst < h);
+}
+
+TEST_CASE("a sphere receding uniformly stays a sphere and loses the asked volume",
+          "[implicit_recession]") {
+  const double radius = 5e-3, d = 1e-3, h = 0.2e-3;
+  auto s = testing::icosphere(radius, 4);
+  orient_outward(s);
+  s.face_labels.assign(s.n_faces(), label::base);
+  s.roles.set(label::base, FaceRole::wearing);
+  const auto r = recede_uniformly(s, d, h);
+  // The ball of the same volume (the icosphere's own volume less the removed one).
+  const double expected =
+      std::cbrt(3 * (enclosed_volume(s) - r.asked_volume) / (4 * 3.14159265358979323846));
+  double worst = 0;
+  for (const auto& v : r.surface.vertices)
+    worst = std::max(worst, std::abs(norm(v) - expected));
+  INFO("radius " << expected * 1e3 << " mm, worst " << worst * 1e3 << " mm");
+  CHECK(worst < 0.5 * h);
+}
+
+TEST_CASE("a crest recedes along its bisector (the entropy solution), it does not fold",
+          "[implicit_recession]") {
+  // A ridge along y: flanks at 45 deg rising 3 mm above a 5 mm slab, its top at x = 10 mm.
+  const double h = 0.2e-3, d = 1e-3;
+  auto s = testing::height_field_block(
+      40, 20, 20e-3, 10e-3,
+      [](double x, double) { return std::max(5e-3, 8e-3 - std::abs(x - 10e-3)); },
+      [](double, double) { return label::base; });
+  s.roles.set(label::base, FaceRole::wearing);
+  s.roles.set(label::bottom, FaceRole::clamped);
+  s.roles.set(label::side, FaceRole::held);
+  const auto r = recede_uniformly(s, d, h);
+  // The depth the volume scaling settled on, from the flat part far from the ridge; then each
+  // flank's plane has moved in by it, and the crest stands sqrt(2) of it lower, not one (the
+  // vertex-normal offset's crest, which overhangs the flanks and folds).
+  double flat = 0;
+  int n_flat = 0;
+  for (const auto& v : r.surface.vertices)
+    if (v.z > 2e-3 && std::abs(v.x - 10e-3) > 6e-3 && v.y > 2e-3 && v.y < 8e-3 && v.x > 1e-3 &&
+        v.x < 19e-3) {
+      flat += v.z;
+      ++n_flat;
+    }
+  REQUIRE(n_flat > 0);
+  const double depth = 5e-3 - flat / n_flat;
+  double crest = 0;
+  bool below_flanks = true;
+  for (const auto& v : r.surface.vertices) {
+    const double off = std::abs(v.x - 10e-3);
+    if (v.y < 1e-3 || v.y > 9e-3)
+      continue;
+    if (off < 0.5e-3)
+      crest = std::max(crest, v.z);
+    if (off < 2e-3 && v.z > 5e-3) // on the receded flanks: below their offset planes
+      below_flanks &= v.z <= 8e-3 - off - std::sqrt(2.0) * depth + 0.5 * h;
+  }
+  INFO("depth " << depth * 1e3 << " mm, crest " << crest * 1e3 << " mm");
+  CHECK(depth == Approx(d).epsilon(0.1));
+  CHECK(std::abs(crest - (8e-3 - std::sqrt(2.0) * depth)) < 0.5 * h);
+  CHECK(below_flanks);
+}
+
+TEST_CASE("a convex element worn at a uniform depth beyond its width vanishes into a flat base",
+          "[implicit_recession]") {
+  // A half-ellipsoid element (semi-axes 4, 1 and 3 mm, the pattern's shape at half size) on a
+  // 5 mm block; the top wears 3 mm. Worn so, a narrow element leaves a mound of about
+  // b^2 / (2 d) = 0.17 mm over the base, below the vanish height.
+  const double h = 0.25e-3, d = 3e-3;
+  const auto inside = [](double x, double y) {
+    return std::pow((x - 8e-3) / 4e-3, 2) + std::pow((y - 8e-3) / 1e-3, 2);
+  };
+  auto s = testing::height_field_block(
+      64, 64, 16e-3, 16e-3,
+      [&](double x, double y) { return 5e-3 + 3e-3 * std::sqrt(std::max(0.0, 1 - inside(x, y))); },
+      [&](double x, double y) {
+        return inside(x, y) < 1 ? label::convex_element(1, 1) : label::base;
+      });
+  s.roles = sample_roles(true);
+  // A uniform rate: every face by the same depth times one common factor.
+  const auto r = recede_uniformly(s, d, h, false);
+  REQUIRE(r.vanished_labels == std::vector<int>{label::convex_element(1, 1)});
+  const auto labels = r.surface.labels();
+  CHECK(std::find(labels.begin(), labels.end(), label::convex_element(1, 1)) == labels.end());
+  // The top (base faces away from the held sides' rounded rims).
+  double low = 1, high = 0;
+  for (std::size_t f = 0; f < r.surface.n_faces(); ++f)
+    if (r.surface.face_labels[f] == label::base)
+      for (const auto v : r.surface.triangles[f]) {
+        const auto& x = r.surface.vertices[v];
+        if (x.x < 1e-3 || x.x > 15e-3 || x.y < 1e-3 || x.y > 15e-3)
+          continue;
+        low = std::min(low, x.z);
+        high = std::max(high, x.z);
+      }
+  INFO("top between " << low * 1e3 << " and " << high * 1e3 << " mm");
+
+  CHECK(high - low < ImplicitRecessionParameters().vanish_height);
+}
