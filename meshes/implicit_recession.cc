@@ -1,28 +1,31 @@
-// The implicit recession of a worn part (docs/theory.md, "Wear to the end").
+// The implicit recession of a worn part (docs/theory.md section 6.3, step 8).
 //
 // The part is phi, its signed distance on a grid (meshes/level_set_grid.h). A wearing face f
 // asked to lose V_f has the depth s_L V_f / A_f; a vertex recedes by the area-weighted mean
-// depth of the wearing faces around it, linearly in between; the material removed is the union
-// of the balls of those radii about the surface's points, g < 0 (level_set_grid.h), and the
-// new part is psi = max(phi, -g) <= 0. For a uniform depth this is the exact inward offset of the
-// surface (Huygens: every point at distance d from the surface, nothing else), with crests
-// receding along their bisector and concave corners rounding; it never folds, and where the
-// balls reach through a thin part or across a ridge the topology changes with them.
+// depth of the wearing faces around it, linearly in between; the material removed is the
+// union of the balls of those radii about the surface's points, g < 0 (level_set_grid.h), and
+// the new part is psi = max(phi, -g) <= 0. For a uniform depth this is the exact inward offset
+// of the surface (Huygens: every point at distance d from the surface, nothing else), with
+// crests receding along their bisector and concave corners rounding; it never folds, and where
+// the balls reach through a thin part or across a ridge the topology changes with them.
 //
 // Volume: the grid books the removed material per tetrahedron, vol(phi < 0) - vol(psi < 0),
 // to the labels of the receding faces nearest its nodes (the material under each label,
-// whichever ball removed it); s_L is scaled per label until each label's booked volume matches
-// its asked one. The zero set of
-// the interpolant (marching tetrahedra) encloses exactly vol(psi < 0) of the grid, and the
-// grid's own zero set of phi encloses less than the input (chords across edges and curved
-// faces, the grid loss E = V_input - vol(phi < 0)); the labels are therefore asked for
-// V_L (V - E) / V, so that the new surface encloses exactly V_input - V.
+// whichever ball removed it); s_L is scaled per label (within [0.1, 1.5], then a common
+// factor) until each label's booked volume matches its asked one. The zero set of the
+// interpolant (marching tetrahedra) encloses exactly vol(psi < 0) of the grid, and the grid's
+// own zero set of phi encloses less than the input (chords across edges and curved faces, the
+// grid loss E = V_input - vol(phi < 0)); the labels are therefore asked for V_L (V - E) / V,
+// so that the new surface encloses V_input - V. The coarsening's chords are given back by a
+// uniform offset of the wearing faces.
 //
 // Labels: a new face lies either on the old surface (phi = 0 there: it keeps the nearest old
-// face's label) or on the receded front (g = 0: it takes the label of the face whose ball
-// reached there); islands of a label, where the labels speckle along a boundary, join their
-// surroundings. A convex element whose top stands less than `vanish_height` above the
-// wearing faces around it is worn away and joins them.
+// face's label and patch) or on the receded front (g = 0: it takes those of the face whose
+// ball reached there); a majority filter straightens the boundaries, and islands, where the
+// labels speckle along a boundary, join their surroundings. A convex element whose top stands
+// less than `vanish_height` above the wearing faces around it is worn away and joins them.
+// The coarsening (meshes/surface_decimation.h) keeps the old patches apart, and the edges
+// between patches of one label go to the remesher as feature curves.
 #include "meshes/implicit_recession.h"
 
 #include "meshes/level_set_grid.h"
@@ -30,13 +33,11 @@
 #include "meshes/stopwatch.h"
 #include "meshes/surface_decimation.h"
 #include "meshes/surface_locator.h"
-#include "meshes/triangle_geometry.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
-#include <set>
 #include <stdexcept>
 #include <string>
 
