@@ -330,12 +330,7 @@ void WornSample::retry_increment(const Verdict& verdict, const StageIncrement& i
 
 void WornSample::take_increment(const StageIncrement& inc, meshes::FaceField<double>& remaining,
                                 WearStageReport& r) {
-  const auto area = meshes::face_areas(surface());
-  for (std::size_t f = 0; f < inc.part.size(); ++f) {
-    removed_[f] += inc.part[f];
-    depth_[f] += inc.part[f] / area[f];
-    remaining[f] -= inc.part[f];
-  }
+  accumulate(inc.part, remaining.values());
   MotionReport motion;
   auto moved = move_mesh(*tria_, *map_, inc.displacement, &motion);
   r.motion_seconds += motion.seconds;
@@ -354,15 +349,20 @@ void WornSample::take_increment(const StageIncrement& inc, meshes::FaceField<dou
   }
 }
 
+void WornSample::accumulate(const std::vector<double>& part, std::vector<double>& remaining) {
+  const auto area = meshes::face_areas(surface());
+  for (std::size_t f = 0; f < part.size(); ++f) {
+    const double v = part[f]; // part may be remaining itself
+    removed_[f] += v;
+    depth_[f] += v / area[f];
+    remaining[f] -= v;
+  }
+}
+
 void WornSample::take_implicit(meshes::FaceField<double>& remaining, WearStageReport& r) {
   const meshes::SurfaceMesh worn = surface();
   const auto receded = meshes::implicit_recession(worn, remaining.values(), p_.implicit);
-  const auto area = meshes::face_areas(worn);
-  for (std::size_t f = 0; f < worn.n_faces(); ++f) {
-    removed_[f] += remaining[f];
-    depth_[f] += remaining[f] / area[f];
-    remaining[f] = 0;
-  }
+  accumulate(remaining.values(), remaining.values());
   ++r.increments;
   ++r.n_implicit;
   r.implicit_seconds += receded.seconds;

@@ -155,6 +155,9 @@ private:
   /// throws when the stage gives up.
   void retry_increment(const Verdict& verdict, const StageIncrement& inc, StageSplit& split,
                        std::vector<double>& remaining, WearStageReport& r) const;
+  /// Adds `part` [m^3 per face of the current surface] to the accumulated fields and takes it
+  /// off `remaining` (which may be `part` itself).
+  void accumulate(const std::vector<double>& part, std::vector<double>& remaining);
   /// Takes the whole of `remaining` by the implicit recession and remeshes the result; the
   /// accumulated fields follow onto the new surface.
   void take_implicit(meshes::FaceField<double>& remaining, WearStageReport& r);

@@ -127,13 +127,12 @@ std::vector<double> booked_removal(const LevelSetGrid& phi, const LevelSetGrid& 
 // Labels of the new faces: the old face they lie on, or the face whose ball removed the
 // material there (the candidates: the sources at the corners of the centroid's cell).
 // Returns, per new face, that old face.
-std::vector<std::uint32_t> label_new_faces(const SurfaceMesh& old,
+std::vector<std::uint32_t> label_new_faces(const SurfaceMesh& old, const SurfaceLocator& locate,
                                            const std::vector<double>& vertex_depth,
                                            const LevelSetGrid& grid,
                                            const std::vector<std::int32_t>& source,
                                            SurfaceMesh& fresh) {
   std::vector<std::uint32_t> from_face(fresh.n_faces());
-  const SurfaceLocator locate(old);
   const auto centroid = face_centroids(fresh);
   const double h = grid.spacing();
 #pragma omp parallel for schedule(dynamic, 256)
@@ -294,8 +293,8 @@ std::vector<int> old_patches(const SurfaceMesh& s, double feature_angle_deg) {
 
 // Vertices on a clamped or held face of the old surface (within a hundredth of the spacing)
 // are put on it: the grid's zero set finds a plane to round-off, and those faces never move.
-void snap_fixed_vertices(const SurfaceMesh& old, double spacing, SurfaceMesh& fresh) {
-  const SurfaceLocator locate(old);
+void snap_fixed_vertices(const SurfaceMesh& old, const SurfaceLocator& locate, double spacing,
+                         SurfaceMesh& fresh) {
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::int64_t v = 0; v < std::int64_t(fresh.n_vertices()); ++v) {
     auto& x = fresh.vertices[std::size_t(v)];
@@ -494,7 +493,8 @@ ImplicitRecession implicit_recession(const SurfaceMesh& s,
   r.surface.roles = s.roles;
   // The new faces carry their old patch as label while islands are merged and the surface is
   // coarsened, so that both keep the patches apart; then each patch's label is put back.
-  const auto from_face = label_new_faces(s, depth, psi, source, r.surface);
+  const SurfaceLocator locate_old(s);
+  const auto from_face = label_new_faces(s, locate_old, depth, psi, source, r.surface);
   r.n_fine_faces = r.surface.n_faces();
   const auto patch = old_patches(s, p.feature_angle_deg);
   std::map<int, int> label_of_patch;
@@ -509,7 +509,7 @@ ImplicitRecession implicit_recession(const SurfaceMesh& s,
   coarse.max_error = 0.1 * h;
   coarse.max_edge = p.max_edge;
   decimate(r.surface, coarse);
-  snap_fixed_vertices(s, h, r.surface);
+  snap_fixed_vertices(s, locate_old, h, r.surface);
   std::vector<int> patch_of_face = r.surface.face_labels;
   for (auto& label : r.surface.face_labels)
     label = label_of_patch.at(label);

@@ -214,14 +214,24 @@ Closest closest_with_weights(const Vec3& a, const Vec3& b, const Vec3& c, const 
   out.w[0] = 1 - v - w, out.w[1] = v, out.w[2] = w;
   return out;
 }
+
+// The distance from x to face f and the front's value there (front_value).
+struct FrontPoint {
+  double distance, value;
+};
+FrontPoint front_point(const SurfaceMesh& s, const std::vector<double>& vertex_depth, std::size_t f,
+                       const Vec3& x) {
+  const auto& t = s.triangles[f];
+  const Closest c = closest_with_weights(s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]], x);
+  const double d = norm(x - c.point);
+  return {d, d - (c.w[0] * vertex_depth[t[0]] + c.w[1] * vertex_depth[t[1]] +
+                  c.w[2] * vertex_depth[t[2]])};
+}
 } // namespace
 
 double front_value(const SurfaceMesh& s, const std::vector<double>& vertex_depth, std::size_t f,
                    const Vec3& x) {
-  const auto& t = s.triangles[f];
-  const Closest c = closest_with_weights(s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]], x);
-  return norm(x - c.point) -
-         (c.w[0] * vertex_depth[t[0]] + c.w[1] * vertex_depth[t[1]] + c.w[2] * vertex_depth[t[2]]);
+  return front_point(s, vertex_depth, f, x).value;
 }
 
 void receding_front(const SurfaceMesh& s, const std::vector<double>& vertex_depth,
@@ -241,17 +251,13 @@ void receding_front(const SurfaceMesh& s, const std::vector<double>& vertex_dept
       const double reach =
           std::max({vertex_depth[t[0]], vertex_depth[t[1]], vertex_depth[t[2]]}) + band;
       visit_face_nodes(s, f, reach, grid, k0, k1, [&](std::size_t n, const Vec3& p) {
-        const Closest c =
-            closest_with_weights(s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]], p);
-        const double d = norm(p - c.point);
-        const double g = d - (c.w[0] * vertex_depth[t[0]] + c.w[1] * vertex_depth[t[1]] +
-                              c.w[2] * vertex_depth[t[2]]);
-        if (g < grid.value[n]) {
-          grid.value[n] = g;
+        const FrontPoint q = front_point(s, vertex_depth, f, p);
+        if (q.value < grid.value[n]) {
+          grid.value[n] = q.value;
           source[n] = std::int32_t(f);
         }
-        if (d < nearest[n]) {
-          nearest[n] = d;
+        if (q.distance < nearest[n]) {
+          nearest[n] = q.distance;
           owner[n] = std::int32_t(f);
         }
       });
