@@ -443,7 +443,10 @@ meshes::SurfaceMesh mesh_discrete_volume(const meshes::SurfaceMesh& worn, const 
   gmsh::model::mesh::generate(3);
   auto remeshed =
       meshes::gmsh_labelled_surface(&r.n_tetrahedra, &r.volume_after, &r.min_tet_quality);
-  check_new_mesh(remeshed, algorithm == keep_surface ? flat_tet_quality : p.min_tet_quality, r);
+  // Kept as a last resort, a relaxed worn surface may leave nearly flat tetrahedra; an
+  // isotropic one (features given) has to give good ones.
+  check_new_mesh(remeshed,
+                 algorithm == keep_surface && !features ? flat_tet_quality : p.min_tet_quality, r);
   meshes::gmsh_write_msh(msh_path);
   return remeshed;
 }
@@ -478,10 +481,13 @@ bool mesh_first_attempt_that_succeeds(const meshes::SurfaceMesh& input, const Re
                                       const std::string& msh_path, meshes::SurfaceMesh& remeshed,
                                       RemeshReport& r, std::string& errors) {
   const double angle = p.feature_angle_deg;
-  const std::pair<int, double> attempts[] = {{p.surface_algorithm, angle},
-                                             {p.surface_algorithm, std::min(89.0, angle + 20)},
-                                             {5, std::min(89.0, angle + 20)},
-                                             {keep_surface, angle}};
+  std::vector<std::pair<int, double>> attempts = {{p.surface_algorithm, angle},
+                                                  {p.surface_algorithm, std::min(89.0, angle + 20)},
+                                                  {5, std::min(89.0, angle + 20)},
+                                                  {keep_surface, angle}};
+  // The implicit recession's surface is isotropic already: kept, it is the first attempt.
+  if (features)
+    attempts = {{keep_surface, angle}, {p.surface_algorithm, angle}, {5, angle}};
   int attempt = 0;
   for (const auto& [algorithm, feature_angle] : attempts) {
     ++attempt;

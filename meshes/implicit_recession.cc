@@ -13,26 +13,34 @@
 // to the labels of the receding faces nearest its nodes (the material under each label,
 // whichever ball removed it); s_L is scaled per label (within [0.1, 1.5], then a common
 // factor) until each label's booked volume matches its asked one. The zero set of the
-// interpolant (marching tetrahedra) encloses exactly vol(psi < 0) of the grid, and the grid's
-// own zero set of phi encloses less than the input (chords across edges and curved faces, the
-// grid loss E = V_input - vol(phi < 0)); the labels are therefore asked for V_L (V - E) / V,
-// so that the new surface encloses V_input - V. The coarsening's chords are given back by a
-// uniform offset of the wearing faces.
+// interpolant (marching tetrahedra) encloses exactly vol(psi < 0) of the grid; the grid's own
+// zero set of phi encloses less than the input (chords across edges and curved faces: the
+// grid loss). Where the front has not passed, the new surface is put back onto the old one
+// (vertices onto their patch, onto the old sharp edge, onto the old corner), which gives that
+// loss back there; where it has, the chords of the grid, of the coarsening and of the
+// isotropic remeshing are given back by an offset of each vertex in proportion to the gap
+// between its faces and the grid's zero set, scaled so that the new surface encloses
+// V_input - V: the volume returns where it went missing, label by label.
 //
 // Labels: a new face lies either on the old surface (phi = 0 there: it keeps the nearest old
 // face's label and patch) or on the receded front (g = 0: it takes those of the face whose
 // ball reached there); a majority filter straightens the boundaries, and islands, where the
 // labels speckle along a boundary, join their surroundings. A convex element whose top stands
 // less than `vanish_height` above the wearing faces around it is worn away and joins them.
-// The coarsening (meshes/surface_decimation.h) keeps the old patches apart, and the edges
-// between patches of one label go to the remesher as feature curves.
+// The coarsening (meshes/surface_decimation.h) keeps the old patches apart; the isotropic
+// remeshing (meshes/isotropic_remeshing.h) keeps the label boundaries, and the old sharp
+// edges where the front has not passed, as curves, and gives triangles a volume mesher keeps.
 #include "meshes/implicit_recession.h"
 
+#include "meshes/isotropic_remeshing.h"
 #include "meshes/level_set_grid.h"
+#include "meshes/mesh_quality.h"
+#include "meshes/part_life.h"
 #include "meshes/recession.h"
 #include "meshes/stopwatch.h"
 #include "meshes/surface_decimation.h"
 #include "meshes/surface_locator.h"
+#include "meshes/surface_restoration.h"
 
 #include <algorithm>
 #include <array>
@@ -58,7 +66,7 @@ void check_input(const SurfaceMesh& s, const std::vector<double>& removed,
   if (!check_closed(s).closed())
     throw std::invalid_argument("implicit recession: the surface is not closed");
   if (!(p.spacing > 0) || !(p.vanish_height >= 0) || !(p.volume_tolerance > 0) ||
-      p.max_iterations < 1 || !(p.max_edge > p.spacing))
+      p.max_iterations < 1 || !(p.max_edge > p.spacing) || !(p.target_edge > p.spacing))
     throw std::invalid_argument("implicit recession: spacing, vanish height, volume tolerance "
                                 "iteration count or largest edge out of range");
 }
@@ -291,54 +299,66 @@ std::vector<int> old_patches(const SurfaceMesh& s, double feature_angle_deg) {
   return patch;
 }
 
-// Vertices on a clamped or held face of the old surface (within a hundredth of the spacing)
-// are put on it: the grid's zero set finds a plane to round-off, and those faces never move.
-void snap_fixed_vertices(const SurfaceMesh& old, const SurfaceLocator& locate, double spacing,
-                         SurfaceMesh& fresh) {
-#pragma omp parallel for schedule(dynamic, 256)
-  for (std::int64_t v = 0; v < std::int64_t(fresh.n_vertices()); ++v) {
-    auto& x = fresh.vertices[std::size_t(v)];
-    const auto near = locate.nearest(x);
-    const FaceRole role = old.face_role(std::size_t(near.face));
-    if (near.distance < 0.01 * spacing && (role == FaceRole::clamped || role == FaceRole::held))
-      x = near.point;
+// The edges between two patches of one label (faces labelled by patch, `label_of_patch`) where
+// the front has not passed at any vertex of either face: the old sharp edges, chamfered by
+// the grid, which the isotropic remeshing keeps as curves.
+std::vector<std::pair<std::uint32_t, std::uint32_t>>
+untouched_patch_boundaries(const SurfaceMesh& m, const std::map<int, int>& label_of_patch,
+                           const LevelSetGrid& phi, const LevelSetGrid& psi) {
+  std::vector<char> passed(m.n_vertices());
+  for (std::size_t v = 0; v < passed.size(); ++v)
+    passed[v] = front_passed(phi, psi, m.vertices[v]);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> curves;
+  for (const auto& [edge, faces] : edge_faces(m)) {
+    if (faces.size() != 2 || m.face_labels[faces[0]] == m.face_labels[faces[1]] ||
+        label_of_patch.at(m.face_labels[faces[0]]) != label_of_patch.at(m.face_labels[faces[1]]))
+      continue;
+    bool untouched = true;
+    for (const auto f : faces)
+      for (const auto v : m.triangles[f])
+        untouched &= !passed[v];
+    if (untouched)
+      curves.push_back(edge);
   }
+  return curves;
+}
+
+// Per face of `m`, the label of the face of `from` nearest its centroid.
+std::vector<int> nearest_labels(const SurfaceMesh& from, const SurfaceMesh& m) {
+  const SurfaceLocator locate(from);
+  const auto centroid = face_centroids(m);
+  std::vector<int> label(m.n_faces());
+  for (std::size_t f = 0; f < label.size(); ++f)
+    label[f] = from.face_labels[std::size_t(locate.nearest(centroid[f]).face)];
+  return label;
+}
+
+// Vertices of wearing faces that are neither on a clamped or held face nor `restored`.
+std::vector<char> free_wearing_vertices(const SurfaceMesh& m, const std::vector<char>& restored) {
+  std::vector<char> movable(m.n_vertices(), 0), fixed(m.n_vertices(), 0);
+  for (std::size_t f = 0; f < m.n_faces(); ++f)
+    for (const auto v : m.triangles[f]) {
+      const FaceRole role = m.face_role(f);
+      if (role == FaceRole::clamped || role == FaceRole::held)
+        fixed[v] = 1;
+      else if (m.face_wears(f))
+        movable[v] = 1;
+    }
+  for (std::size_t v = 0; v < movable.size(); ++v)
+    movable[v] = movable[v] && !fixed[v] && !restored[v];
+  return movable;
 }
 
 // Convex elements worn away: an element label whose highest vertex stands at most `height`
-// above the mean height of the vertices it shares with other wearing labels joins the label
-// it shares most edges with. Returns the labels removed.
+// above its foot (meshes/part_life.h) joins the label it shares most edges with. Returns the
+// labels removed.
 std::vector<int> merge_vanished_elements(SurfaceMesh& m, double height) {
-  std::map<int, double> top;
-  std::map<int, std::pair<double, int>> rim; // sum of heights, count
-  std::map<int, std::map<int, int>> shared;  // edges shared with each other label
-  for (std::size_t f = 0; f < m.n_faces(); ++f)
-    if (label::is_convex_element(m.face_labels[f]))
-      for (const auto v : m.triangles[f]) {
-        auto [it, added] = top.try_emplace(m.face_labels[f], m.vertices[v].z);
-        it->second = std::max(it->second, m.vertices[v].z);
-      }
-  for (const auto& [edge, faces] : edge_faces(m)) {
-    if (faces.size() != 2)
-      continue;
-    const int a = m.face_labels[faces[0]], b = m.face_labels[faces[1]];
-    if (a == b || !m.roles.wears(a) || !m.roles.wears(b))
-      continue;
-    for (const auto& [l, other] : {std::pair{a, b}, std::pair{b, a}}) {
-      if (!label::is_convex_element(l))
-        continue;
-      auto& r = rim[l];
-      r.first += m.vertices[edge.first].z + m.vertices[edge.second].z;
-      r.second += 2;
-      ++shared[l][other];
-    }
-  }
   std::vector<int> gone;
   std::map<int, int> into;
-  for (const auto& [l, r] : rim) {
-    if (top.at(l) - r.first / r.second > height)
+  for (const auto& [l, e] : convex_element_standing(m)) {
+    if (e.height() > height)
       continue;
-    const auto& around = shared[l];
+    const auto& around = e.neighbours;
     into[l] = std::max_element(around.begin(), around.end(), [](const auto& x, const auto& y) {
                 return x.second < y.second;
               })->first;
@@ -408,8 +428,6 @@ ImplicitRecession implicit_recession(const SurfaceMesh& s,
   signed_distance(s, phi, band);
   const double volume_before = enclosed_volume(s);
   r.grid_loss = volume_before - negative_volume(phi);
-  // The labels are asked for their share of what the grid has to remove.
-  const double share = r.asked_volume > 0 ? (r.asked_volume - r.grid_loss) / r.asked_volume : 0;
 
   LevelSetGrid psi = phi;
   std::vector<std::int32_t> source, owner;
@@ -449,7 +467,7 @@ ImplicitRecession implicit_recession(const SurfaceMesh& s,
     for (std::size_t l = 0; l < asked.size(); ++l) {
       if (asked[l] == 0)
         continue;
-      const double target = share * asked[l];
+      const double target = asked[l];
       converged &= std::abs(booked[l] - target) <= p.volume_tolerance * target;
       const double next =
           newton(scale[l], booked[l], target, previous_scale[l], previous_booked[l]);
@@ -466,7 +484,7 @@ ImplicitRecession implicit_recession(const SurfaceMesh& s,
       // The per-label scales did not settle (a label that cannot be matched), or are not
       // asked for: the last ones are kept, and a common factor brings the total to its target.
       scale = previous_scale;
-      const double target = share * r.asked_volume;
+      const double target = r.asked_volume;
       double common = 1, previous_common = 0, total = 0, previous_total = 0;
       for (const double x : booked)
         total += x;
@@ -509,25 +527,37 @@ ImplicitRecession implicit_recession(const SurfaceMesh& s,
   coarse.max_error = 0.1 * h;
   coarse.max_edge = p.max_edge;
   decimate(r.surface, coarse);
-  snap_fixed_vertices(s, locate_old, h, r.surface);
-  std::vector<int> patch_of_face = r.surface.face_labels;
+  // The patches go back to their labels; the edges between two patches of one label where
+  // the front has not passed (the old sharp edges, chamfered by the grid) stay curves of the
+  // isotropic remeshing, and the new faces find their patch on the coarse surface.
+  const SurfaceMesh coarse_patches = r.surface;
+  auto curves = untouched_patch_boundaries(r.surface, label_of_patch, phi, psi);
   for (auto& label : r.surface.face_labels)
     label = label_of_patch.at(label);
-  for (const auto& [edge, faces] : edge_faces(r.surface))
-    if (faces.size() == 2 && patch_of_face[faces[0]] != patch_of_face[faces[1]] &&
-        r.surface.face_labels[faces[0]] == r.surface.face_labels[faces[1]])
-      r.feature_edges.push_back(edge);
+  IsotropicRemeshParameters even;
+  even.target_edge = p.target_edge;
+  isotropic_remesh(r.surface, curves, even);
+  const auto patch_of_face = nearest_labels(coarse_patches, r.surface);
+  const auto restored = snap_untouched_vertices(s, patch, phi, psi, patch_of_face, r.surface);
+  r.n_restored = std::size_t(std::count(restored.begin(), restored.end(), 1));
+  snap_fixed_vertices(s, *std::max_element(depth.begin(), depth.end()) + 2 * h, restored,
+                      r.surface);
+  r.feature_edges = curves;
   r.vanished_labels = merge_vanished_elements(r.surface, p.vanish_height);
   r.surface.set_revision(s.revision() + 1);
-  // The coarsening's chords across curved regions cut off volume; a uniform offset of the
-  // wearing faces gives it back (as after a remesh), so that the new surface encloses the
-  // input's volume less the asked one.
+  // The chords of the grid, of the coarsening and of the remeshing where the front passed cut
+  // off volume there; an offset in proportion to each face's gap gives it back, so that the
+  // new surface encloses the input's volume less the asked one.
   const double target = volume_before - r.asked_volume;
-  r.coarsening_loss = negative_volume(psi) - enclosed_volume(r.surface);
-  const auto restoring = volume_restoring_offset(r.surface, target);
-  for (std::size_t v = 0; v < r.surface.n_vertices(); ++v)
-    r.surface.vertices[v] += restoring.displacement[v];
+  r.coarsening_loss = target - enclosed_volume(r.surface);
+  const auto movable = free_wearing_vertices(r.surface, restored);
+  r.uniform_offset = chord_restoring_offset(r.surface, coarse_patches, movable, target);
   r.removed_volume = volume_before - enclosed_volume(r.surface);
+  r.min_face_quality = std::numeric_limits<double>::infinity();
+  for (const auto& t : r.surface.triangles)
+    r.min_face_quality = std::min(r.min_face_quality, triangle_quality(r.surface.vertices[t[0]],
+                                                                       r.surface.vertices[t[1]],
+                                                                       r.surface.vertices[t[2]]));
   const auto area_before = area_per_label(s), area_after = area_per_label(r.surface);
   for (const auto& [label, a] : area_before)
     if (s.roles.of(label) == FaceRole::clamped) {

@@ -34,28 +34,35 @@ struct ImplicitRecessionParameters {
   /// The zero set is coarsened (meshes/surface_decimation.h) to edges of at most this
   /// length, each vertex within a tenth of the spacing of the planes it stands for. [m]
   double max_edge = 1e-3;
+  /// The coarsened zero set is then remeshed isotropically (meshes/isotropic_remeshing.h) to
+  /// edges of about this length, so that a volume mesher can keep its triangles. [m]
+  double target_edge = 1e-3;
 };
 
 struct ImplicitRecession {
   SurfaceMesh surface; ///< closed, outward, labelled; revision = input's + 1
-  /// Edges of `surface` (vertex pairs, smaller first) between patches of one label: the old
-  /// surface's sharp edges, where they are still there, for the remesher.
+  /// Edges of `surface` (vertex pairs, smaller first) between patches of one label where the
+  /// front has not passed: the old surface's sharp edges, for the remesher.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> feature_edges;
   double asked_volume = 0;          ///< [m^3] sum of the removed volume asked
   double removed_volume = 0;        ///< [m^3] enclosed volume before minus after
   std::map<int, double> asked;      ///< [m^3] per wearing label
   std::map<int, double> removed;    ///< [m^3] per label, as the grid books the removed material
+  std::size_t n_restored = 0;       ///< vertices put back onto the old surface (front not there)
   std::vector<int> vanished_labels; ///< labels worn away (their faces joined a neighbour)
   double worn_through_area = 0;     ///< [m^2] clamped area removed (a hole through the part)
-  /// [m^3] volume the grid's zero set loses against the input where nothing is removed (the
-  /// chords of the interpolant across edges and curved faces); taken from the removal so that
-  /// removed_volume matches asked_volume
+  /// [m^3] volume the grid's zero set of the input loses against it (the chords of the
+  /// interpolant across edges and curved faces), given back where the front has not passed
+  /// by putting the surface back onto the old one, and where it has by the offset below
   double grid_loss = 0;
-  /// [m^3] enclosed volume the coarsening cut off (chords), given back by a uniform offset of
-  /// the wearing faces
+  /// [m^3] enclosed volume the coarsening and remeshing cut off where the front passed (their
+  /// chords, and the grid's own), given back by an offset of each vertex there by its faces'
+  /// gap to the grid's zero set, then a uniform one
   double coarsening_loss = 0;
+  double uniform_offset = 0; ///< [m] that uniform offset of the wearing vertices, outward
   std::size_t n_nodes = 0;
   std::size_t n_fine_faces = 0; ///< of the grid's zero set, before coarsening
+  double min_face_quality = 0;  ///< of the new surface (4 sqrt(3) A / sum of squared edges)
   int n_iterations = 0;
   double seconds = 0;
 };

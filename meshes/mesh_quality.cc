@@ -66,6 +66,11 @@ bool faces_intersect(const SurfaceMesh& m, std::uint32_t f, std::uint32_t g) {
 
 } // namespace
 
+double triangle_quality(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const double l2 = norm2(b - a) + norm2(c - b) + norm2(a - c);
+  return l2 > 0 ? 2 * std::sqrt(3.0) * norm(cross(b - a, c - a)) / l2 : 0;
+}
+
 std::vector<std::pair<std::uint32_t, std::uint32_t>>
 find_self_intersections(const SurfaceMesh& m, std::size_t max_pairs) {
   std::vector<std::pair<std::uint32_t, std::uint32_t>> hits;

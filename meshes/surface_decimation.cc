@@ -16,6 +16,8 @@
 // plane (meshes/planar_flip.h), which move the surface by less than the error limit.
 #include "meshes/surface_decimation.h"
 
+#include "meshes/mesh_quality.h"
+
 #include "meshes/planar_flip.h"
 #include "meshes/stopwatch.h"
 
@@ -49,11 +51,6 @@ struct Quadric {
            q[9];
   }
 };
-
-double quality(const Vec3& a, const Vec3& b, const Vec3& c) {
-  const double l2 = norm2(b - a) + norm2(c - b) + norm2(a - c);
-  return l2 > 0 ? 2 * std::sqrt(3.0) * norm(cross(b - a, c - a)) / l2 : 0;
-}
 
 struct Candidate {
   double cost; // order: relative error plus relative squared length
@@ -213,8 +210,8 @@ private:
     for (const auto f : faces_of_[u]) {
       const auto& t = m_.triangles[f];
       around += face_normal_unnormalized(m_, f);
-      worst_old =
-          std::min(worst_old, quality(m_.vertices[t[0]], m_.vertices[t[1]], m_.vertices[t[2]]));
+      worst_old = std::min(
+          worst_old, triangle_quality(m_.vertices[t[0]], m_.vertices[t[1]], m_.vertices[t[2]]));
     }
     around = normalized(around);
     for (const auto f : faces_of_[u]) {
@@ -228,12 +225,13 @@ private:
       if (!(norm(n_new) > 0))
         return false;
       const Vec3 n_old = face_normal_unnormalized(m_, f);
-      const double q_old = quality(m_.vertices[t[0]], m_.vertices[t[1]], m_.vertices[t[2]]);
+      const double q_old =
+          triangle_quality(m_.vertices[t[0]], m_.vertices[t[1]], m_.vertices[t[2]]);
       // A sliver's own normal says little; it is held to the normal around u instead.
       const Vec3 reference = q_old >= p_.min_quality ? normalized(n_old) : around;
       if (dot(normalized(n_new), reference) < p_.min_normal_cos)
         return false;
-      const double q_new = quality(p[0], p[1], p[2]);
+      const double q_new = triangle_quality(p[0], p[1], p[2]);
       if (q_new < p_.min_quality && q_new <= worst_old)
         return false;
     }

@@ -4,6 +4,7 @@
 // and the surface locator; inline because it sits in the DEM inner loop.
 #include "meshes/vec3.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -17,6 +18,14 @@ struct TrianglePoint {
   TriangleFeature feature = TriangleFeature::face;
   int local = 0; ///< edge k (vertices k, k+1) or vertex k of the triangle
 };
+
+/// The point of the segment ab closest to p.
+inline Vec3 closest_point_on_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 ab = b - a;
+  const double l2 = dot(ab, ab);
+  const double t = l2 > 0 ? std::clamp(dot(p - a, ab) / l2, 0.0, 1.0) : 0.0;
+  return a + ab * t;
+}
 
 /// The face region needs strictly positive barycentric coordinates, so a point on a shared
 /// edge is an edge point for both triangles.

@@ -5,18 +5,22 @@
 # on main moves on; this builds that commit's `wearsim` once per machine, in a git worktree
 # beside the checkout, and prints the binary's path on standard output.
 #
-# usage: bash cases/reference-study/engine.sh          # prints the path, builds if needed
-#        STUDY_ENGINE_DIR=<dir> (default /work/study-engine, or ../study-engine from the root)
+# usage: bash cases/reference-study/engine.sh [ENGINE file]  # prints the path, builds if needed
+#        ENGINE file: the commit of another study (default cases/reference-study/ENGINE; the
+#        wear-out study has its own, cases/wear-out/ENGINE)
+#        STUDY_ENGINE_DIR=<dir> (default /work/study-engine-<commit>, or
+#        ../study-engine-<commit> from the root)
 #
 # A binary that already reports the engine's version (`wearsim --version`), e.g. build/wearsim
 # made from a clean checkout of that very commit, is copied instead of building again: the
 # version is `git describe --dirty` of the tree it was built from, so it names the sources.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-commit=$(tr -d ' \n' < cases/reference-study/ENGINE)
+engine_file=${1:-cases/reference-study/ENGINE}
+commit=$(tr -d ' \n' < "$engine_file")
 [[ "$commit" =~ ^[0-9a-f]{12}$ ]] ||
-  { echo "engine.sh: cases/reference-study/ENGINE must hold a 12-digit commit, not '$commit'" >&2; exit 2; }
-dir=${STUDY_ENGINE_DIR:-$( [ -d /work ] && echo /work/study-engine || echo "$(pwd)/../study-engine")}
+  { echo "engine.sh: $engine_file must hold a 12-digit commit, not '$commit'" >&2; exit 2; }
+dir=${STUDY_ENGINE_DIR:-$( [ -d /work ] && echo "/work/study-engine-$commit" || echo "$(pwd)/../study-engine-$commit")}
 bin="$dir/bin/wearsim"
 reports() { [ -x "$1" ] && [ "$("$1" --version 2>/dev/null)" = "wearsim $commit" ]; }
 if reports "$bin"; then

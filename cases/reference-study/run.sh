@@ -11,7 +11,10 @@
 #        case: the name of a case file here without .prm (default: plain convex), or the
 #              path of another case file run by the study's engine (cases/wear-out/convex.prm);
 #              its output folder is the `set Directory` the file itself writes
-#        WEARSIM=<binary> (default: the study's engine, engine.sh, built on first use),
+#        WEARSIM=<binary> (default: the study's engine, engine.sh, built on first use: the
+#        commit in the ENGINE file beside the first case's file when there is one, as
+#        cases/wear-out/ENGINE, else cases/reference-study/ENGINE; the cases of one call
+#        share it),
 #        JOBS=<n> runs at once (default: the number of cores)
 # A case whose output folder holds no run but whose unfinished run is kept in
 # cases/<case>/running/<run> (keep_running.sh, carried between machines in the repository)
@@ -27,14 +30,24 @@
 set -uo pipefail
 cd "$(dirname "$0")/../.."
 wearsim=${WEARSIM:-}
-if [ -z "$wearsim" ]; then
-  wearsim=$(bash cases/reference-study/engine.sh) || { echo "run.sh: no study engine" >&2; exit 2; }
-fi
-source scripts/run_pool.sh
-pool_init "reference study" "${JOBS:-$(nproc)}" || exit 2
 cases=("$@")
 [ ${#cases[@]} -gt 0 ] || cases=(plain convex)
 source cases/reference-study/case_paths.sh
+engine_of() { # <case>: the ENGINE file its study runs with
+  local own
+  own="$(dirname "$(case_file "$1")")/ENGINE"
+  [ -f "$own" ] && echo "$own" || echo cases/reference-study/ENGINE
+}
+engine_file=$(engine_of "${cases[0]}")
+for c in "${cases[@]}"; do
+  [ "$(engine_of "$c")" = "$engine_file" ] ||
+    { echo "run.sh: $c runs with $(engine_of "$c"), ${cases[0]} with $engine_file: run them apart" >&2; exit 2; }
+done
+if [ -z "$wearsim" ]; then
+  wearsim=$(bash cases/reference-study/engine.sh "$engine_file") || { echo "run.sh: no study engine" >&2; exit 2; }
+fi
+source scripts/run_pool.sh
+pool_init "reference study" "${JOBS:-$(nproc)}" || exit 2
 for c in "${cases[@]}"; do
   [ -f "$(case_file "$c")" ] || { echo "run.sh: no case file $(case_file "$c")" >&2; exit 2; }
   [ -n "$(out_dir "$c")" ] || { echo "run.sh: $c sets no Output/Directory of its own" >&2; exit 2; }

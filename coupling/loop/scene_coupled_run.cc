@@ -99,6 +99,10 @@ int SceneCoupledRun::run() {
     log_ << steady << "; nothing is left to run\n";
     return 0;
   }
+  if (const std::string worn = worn_out_stop(); !worn.empty()) {
+    log_ << worn << "; nothing is left to run\n";
+    return 0;
+  }
   int n_run = 0;
   for (std::size_t k = std::size_t(n_stages_done_); k < plan_.size(); ++k) {
     StageRecord r = begin_stage(k);
@@ -127,6 +131,10 @@ int SceneCoupledRun::run() {
       log_ << steady << "\n";
       break;
     }
+    if (const std::string worn = worn_out_stop(); !worn.empty()) {
+      log_ << worn << "\n";
+      break;
+    }
     if (options_.stop_after > 0 && ++n_run >= options_.stop_after && k + 1 < plan_.size()) {
       log_ << "stopped after stage " << r.stage << " as asked; continue with --resume\n";
       return 0;
@@ -136,7 +144,9 @@ int SceneCoupledRun::run() {
     log_ << part.summary_text();
   log_ << "written to " << p_.output.directory << "/ (scene_series.csv, scene_wear.csv, "
        << "particles_<k>.vtu, walls/"
-       << (parts_.empty() ? "" : ", parts/<part>/ with stages.csv, part_wear.csv, history.xdmf")
+       << (parts_.empty()
+               ? ""
+               : ", parts/<part>/ with stages.csv, part_wear.csv, part_life.csv, history.xdmf")
        << (scene_->fields() ? ", fields.xdmf" : "") << ")\n";
   return 0;
 }
@@ -347,6 +357,20 @@ std::string SceneCoupledRun::steady_stop() const {
              "steady one (period " + std::to_string(steady) + " of part '" + part.name() +
              "'), Scene/Evaluation/Periods after steady";
   }
+  return {};
+}
+
+std::string SceneCoupledRun::worn_out_stop() const {
+  for (const auto& part : parts_)
+    if (const std::string why = part.worn_out(p_.coupling); !why.empty()) {
+      const double hours = part.equivalent_hours(p_.coupling);
+      return "part '" + part.name() + "' worn out at " +
+             (p_.coupling.hours_per_revolution > 0
+                  ? format("%.0f h", hours)
+                  : std::string("an unstated number of hours (Coupling/Hours per revolution)")) +
+             " after stage " + std::to_string(n_stages_done_) + ": " + why +
+             " (Coupling/Worn out when = " + p_.coupling.worn_out_when + ")";
+    }
   return {};
 }
 

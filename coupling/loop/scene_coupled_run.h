@@ -67,6 +67,8 @@ private:
   std::string distortion() const;
   /// Says why the run stops after this stage when the evaluated part is steady for
   /// Scene/Evaluation/Periods after steady periods; empty otherwise.
+  /// The line that ends the run once a part is worn out (Coupling/Worn out when), or empty.
+  std::string worn_out_stop() const;
   std::string steady_stop() const;
   /// Writes checkpoint.h5 (the one before kept); `open`: the stage in progress.
   void checkpoint(const OpenSceneStage& open);

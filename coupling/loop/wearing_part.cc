@@ -25,6 +25,7 @@
 #include "dem/scene/wall_catalogue.h"
 #include "fem/remesher.h"
 #include "meshes/atomic_file.h"
+#include "meshes/part_life.h"
 #include "meshes/sample_frame.h"
 #include "meshes/sample_generator.h"
 #include "meshes/stopwatch.h"
@@ -72,6 +73,25 @@ bool held_sides(const CaseParameters& p, const dem::SceneWallParameters& wall) {
 
 const char* part_wear_header =
     "stage,scheme,time_s,label,stage_volume_m3,cumulative_removed_volume_m3\n";
+// part_life.csv: per stage, each convex element standing (its height above its foot and its
+// volume above it) and the part (its thinnest point above the clamped bottom, its volume).
+const char* part_life_header =
+    "stage,equivalent_revolutions,equivalent_hours,what,height_m,volume_m3\n";
+
+/// Revolutions at amplification 1 that the stages stand for: revolutions x amplification of
+/// each stage that changes the geometry (a dem-only stage stands for none).
+double equivalent_revolutions(const std::vector<StageRecord>& stages, int revolutions_per_stage) {
+  double n = 0;
+  for (const auto& s : stages)
+    if (s.scheme != Scheme::dem_only)
+      n += revolutions_per_stage * s.amplification;
+  return n;
+}
+
+/// V - E + F of a closed surface: 2 for a part without holes, 2 - 2 g with g holes through it.
+long euler_characteristic(const meshes::SurfaceMesh& m) {
+  return long(m.n_vertices()) - long(meshes::edge_faces(m).size()) + long(m.n_faces());
+}
 
 meshes::FaceField<double> von_mises_on(const meshes::SurfaceMesh& surface) {
   return meshes::FaceField<double>("von Mises", "Pa", meshes::Extensivity::intensive, surface);
@@ -105,6 +125,10 @@ WearingPart::WearingPart(const CaseParameters& p, std::size_t index, dem::SceneW
     surface = fem::remesh_sample(wall.surface.mesh, worn.remesh, msh, &report);
     n_tetrahedra = report.n_tetrahedra;
   }
+  if (worn_out_criterion(p.coupling.worn_out_when) == WornOutCriterion::elements_gone &&
+      meshes::convex_element_standing(surface).empty())
+    throw std::invalid_argument("Coupling/Worn out when = elements gone: part '" + name_ +
+                                "' has no convex elements to wear away");
   sample_ = std::make_unique<fem::WornSample>(msh, surface, worn);
   wall.surface.mesh = wall_surface();
   std::string labels;
@@ -192,6 +216,12 @@ WearingPart::WearingPart(const CaseParameters& p, std::size_t index, const PartC
   while (std::getline(in, line))
     if (std::stoi(line.substr(0, line.find(','))) <= int(stages_.size()))
       wear_rows_ += line + "\n";
+  // part_life.csv likewise.
+  std::ifstream life(directory_ + "/part_life.csv");
+  std::getline(life, line);
+  while (std::getline(life, line))
+    if (std::stoi(line.substr(0, line.find(','))) <= int(stages_.size()))
+      life_rows_ += line + "\n";
 }
 
 void WearingPart::run_stage(
@@ -228,7 +258,7 @@ void WearingPart::run_stage(
     change = reference_stage(*moved, increment, r);
     break;
   }
-  record_stage(std::move(r), change, log);
+  record_stage(std::move(r), change, p.coupling, log);
 }
 
 // A dem-only stage leaves the part as it is; its increment is recorded, not applied.
@@ -326,7 +356,8 @@ WearingPart::StageChange WearingPart::reference_stage(const dem::ReferenceDeform
 
 // Whatever the scheme: the surface with its fields, the stage's record, the tables, the volume
 // per label and the stage's line.
-void WearingPart::record_stage(StageRecord r, const StageChange& change, std::ostream& log) {
+void WearingPart::record_stage(StageRecord r, const StageChange& change,
+                               const CouplingParameters& c, std::ostream& log) {
   const meshes::Stopwatch clock;
   const auto& surface = change.surface;
   std::map<int, double> stage_per_label;
@@ -366,6 +397,7 @@ void WearingPart::record_stage(StageRecord r, const StageChange& change, std::os
   if (writes_)
     meshes::write_atomically(directory_ + "/part_wear.csv",
                              [&](std::ostream& out) { out << part_wear_header << wear_rows_; });
+  record_life(r.stage, surface, c);
   log << format("stage %d %s, part '%s': wear-law volume %.4g mm^3, removed %.4g mm^3 "
                 "(cumulative %.4g)",
                 r.stage, scheme_name(r.scheme).c_str(), name_.c_str(), r.dem_wear_volume * 1e9,
@@ -378,6 +410,63 @@ void WearingPart::record_stage(StageRecord r, const StageChange& change, std::os
                   "not removed (stages.csv: worn_through_volume_m3)\n",
                   r.stage, name_.c_str(), r.n_worn_through,
                   sample_->parameters().worn_through_thickness * 1e3, r.worn_through_volume * 1e9);
+}
+
+void WearingPart::record_life(int stage, const meshes::SurfaceMesh& surface,
+                              const CouplingParameters& c) {
+  const auto life = meshes::part_life(surface, sample_->parameters().implicit.vanish_height);
+  const double revolutions = equivalent_revolutions(stages_, c.revolutions_per_stage);
+  std::ostringstream rows;
+  rows.precision(10);
+  const auto row = [&](const std::string& what, double height, double volume) {
+    rows << stage << "," << revolutions << "," << revolutions * c.hours_per_revolution << ","
+         << what << "," << height << "," << volume << "\n";
+  };
+  for (const auto& [label, e] : life.elements)
+    row(meshes::label::name(label), e.height(), e.volume);
+  row("part", life.thinnest, life.volume);
+  life_rows_ += rows.str();
+  if (writes_)
+    meshes::write_atomically(directory_ + "/part_life.csv",
+                             [&](std::ostream& out) { out << part_life_header << life_rows_; });
+}
+
+std::string WearingPart::worn_out(const CouplingParameters& c) const {
+  const auto& s = surface();
+  const double vanish = sample_->parameters().implicit.vanish_height;
+  switch (worn_out_criterion(c.worn_out_when)) {
+  case WornOutCriterion::never:
+    return {};
+  case WornOutCriterion::elements_gone: {
+    if (meshes::part_life(s, vanish).n_standing > 0)
+      return {};
+    return format("no convex element stands higher than %g mm above its foot", vanish * 1e3);
+  }
+  case WornOutCriterion::thickness: {
+    const auto life = meshes::part_life(s, vanish);
+    if (life.thinnest > c.worn_out_thickness)
+      return {};
+    return format("its thinnest point, %.4g mm above the clamped bottom, reached Worn-out "
+                  "thickness %g mm",
+                  life.thinnest * 1e3, c.worn_out_thickness * 1e3);
+  }
+  case WornOutCriterion::worn_through: {
+    const bool hole = euler_characteristic(s) < 2;
+    const bool set_aside = std::any_of(stages_.begin(), stages_.end(), [](const StageRecord& r) {
+      return r.worn_through_volume > 0;
+    });
+    if (!hole && !set_aside)
+      return {};
+    return hole ? std::string("worn through: its surface has a hole")
+                : std::string("worn through: wear faces reached the clamped bottom "
+                              "(FEM/Worn-through thickness)");
+  }
+  }
+  return {};
+}
+
+double WearingPart::equivalent_hours(const CouplingParameters& c) const {
+  return equivalent_revolutions(stages_, c.revolutions_per_stage) * c.hours_per_revolution;
 }
 
 std::string WearingPart::summary_text() const {

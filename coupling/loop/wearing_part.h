@@ -80,6 +80,11 @@ public:
                  std::ostream& log,
                  const std::function<dem::PushReport(const meshes::SurfaceMesh&)>& to_wall,
                  const dem::ReferenceDeformation* moved = nullptr);
+  /// Why the part is worn out by Coupling/Worn out when (figures of its current surface,
+  /// meshes/part_life.h), or empty while it is not (or the criterion is never).
+  std::string worn_out(const CouplingParameters& c) const;
+  /// [h] laboratory hours its stages stand for (Coupling/Hours per revolution; 0 unstated).
+  double equivalent_hours(const CouplingParameters& c) const;
   /// What the part's stages cost per phase, its remeshes and its worn-through volume, for the
   /// end of a run.
   std::string summary_text() const;
@@ -103,6 +108,7 @@ private:
   /// amplified), on the faces of surface(); empty before a reference stage
   std::vector<double> moved_volume_;
   std::string wear_rows_; ///< part_wear.csv's rows so far
+  std::string life_rows_; ///< part_life.csv's rows so far
 
   /// The evaluation Scene/Evaluation asks of this part (the tester's sample), on its surface
   /// in its own frame.
@@ -132,8 +138,11 @@ private:
   /// moved_volume_; the moved surface in the part's frame.
   StageChange reference_stage(const dem::ReferenceDeformation& moved,
                               const WearIncrement& increment, StageRecord& r);
-  /// The stage's output, record, tables, volume per label and line.
-  void record_stage(StageRecord r, const StageChange& change, std::ostream& log);
+  /// The stage's output, record, tables, volume per label, life and line.
+  void record_stage(StageRecord r, const StageChange& change, const CouplingParameters& c,
+                    std::ostream& log);
+  /// part_life.csv's rows of stage `stage` (recorded) on `surface`.
+  void record_life(int stage, const meshes::SurfaceMesh& surface, const CouplingParameters& c);
   /// The part's tables: stages.csv, history.h5 and, evaluated, summary.csv.
   void write_tables() const;
 };

@@ -90,6 +90,19 @@ std::vector<ScheduleItem> parse_schedule(const std::string& text) {
   return items;
 }
 
+WornOutCriterion worn_out_criterion(const std::string& name) {
+  if (name == "never")
+    return WornOutCriterion::never;
+  if (name == "elements gone")
+    return WornOutCriterion::elements_gone;
+  if (name == "thickness")
+    return WornOutCriterion::thickness;
+  if (name == "worn through")
+    return WornOutCriterion::worn_through;
+  throw std::invalid_argument("Coupling/Worn out when: '" + name +
+                              "' is none of never, elements gone, thickness, worn through");
+}
+
 void validate(const CouplingParameters& c, const fem::FemParameters& f) {
   const auto require = [](bool ok, const std::string& parameter, const std::string& what) {
     if (!ok)
@@ -111,6 +124,12 @@ void validate(const CouplingParameters& c, const fem::FemParameters& f) {
   require(s.reference_stress > 0, "Coupling/Stress-informed wear/Reference stress",
           "must be positive [Pa]");
   require(s.exponent > 0, "Coupling/Stress-informed wear/Exponent", "must be positive");
+  require(worn_out_criterion(c.worn_out_when) != WornOutCriterion::thickness ||
+              c.worn_out_thickness > 0,
+          "Coupling/Worn-out thickness", "must be positive [m] with Worn out when = thickness");
+  require(c.worn_out_thickness >= 0, "Coupling/Worn-out thickness", "must be >= 0 [m]");
+  require(c.hours_per_revolution >= 0 && std::isfinite(c.hours_per_revolution),
+          "Coupling/Hours per revolution", "must be >= 0 [h]");
   fem::validate(f);
 }
 

@@ -40,6 +40,17 @@ struct StressInformedWear {
   double exponent = 1;            ///< [-]
 };
 
+/// When a wearing part counts as worn out, which ends the run after that stage
+/// (Coupling/Worn out when; the figures are meshes::part_life's).
+enum class WornOutCriterion {
+  never,         ///< the schedule runs to its end
+  elements_gone, ///< no convex element stands higher than the vanish height
+  thickness,     ///< the thinnest point under the wear reaches Worn-out thickness
+  worn_through   ///< the wear has removed clamped area (a hole through the part)
+};
+/// The criterion a Worn out when value names; throws std::invalid_argument naming it.
+WornOutCriterion worn_out_criterion(const std::string& name);
+
 struct CouplingParameters {
   std::string schedule = "2 staged";   ///< "N scheme, N scheme, ..." in order
   int revolutions_per_stage = 1;       ///< DEM revolutions per stage
@@ -50,6 +61,9 @@ struct CouplingParameters {
   double push_tolerance = 0.01;        ///< [-] of the radius: overlaps above it are pushed out
   bool checkpoints = true;             ///< after every stage (staged and dem-only schemes)
   StressInformedWear stress_informed;
+  std::string worn_out_when = "never"; ///< a WornOutCriterion's name
+  double worn_out_thickness = 0;       ///< [m] with worn_out_when = thickness
+  double hours_per_revolution = 0;     ///< [h] laboratory time of a revolution (0: not stated)
 };
 
 /// The schedule as items; throws std::invalid_argument naming "Coupling/Schedule".
@@ -114,6 +128,24 @@ void visit_parameters(CouplingParameters& k, Visitor& v) {
   v.boolean("Checkpoints", k.checkpoints,
             "Write checkpoint.h5 after every stage (atomically) so `wearsim run --resume` "
             "can continue a killed run bit for bit.");
+  v.selection("Worn out when", k.worn_out_when, "never|elements gone|thickness|worn through",
+              "When a wearing part is worn out, which ends the run after that stage with "
+              "'worn out at N h' (each stage writes the part's life to part_life.csv: every "
+              "convex element's height above its foot and volume, the part's thinnest point "
+              "and volume): 'never' (the schedule runs to its end); 'elements gone' (no convex "
+              "element stands higher than the implicit recession's vanish height, 0.25 mm, "
+              "above its foot); 'thickness' (the thinnest point above the clamped bottom "
+              "reaches Worn-out thickness); 'worn through' (the wear has removed clamped area: "
+              "a hole through the part).");
+  v.real("Worn-out thickness", k.worn_out_thickness,
+         "[m] With Worn out when = thickness: the remaining thickness at which the part is "
+         "worn out.");
+  v.real("Hours per revolution", k.hours_per_revolution,
+         "[h] Laboratory time one DEM revolution at amplification 1 stands for (the "
+         "calibration's time scale, docs/theory.md section 4: 28 h for the reference study's "
+         "calibrated alpha). The life is reported in equivalent hours, the sum over staged "
+         "stages of revolutions x amplification x this; 0: not stated, equivalent revolutions "
+         "only.");
   visit_parameters(k.stress_informed, v);
   v.leave();
 }

@@ -34,40 +34,7 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string case_text(const std::string& dir) {
-  return R"(subsection Geometry
-  subsection Sample
-    set Type                 = convex
-    set Mesh size            = 3e-3
-    set Mesh size bottom     = 5e-3
-    set Curvature refinement = false
-  end
-  subsection Placement
-    set Angle = 15
-  end
-  subsection Tester
-    set Sector angle = 30
-    set Consolidator = false
-    set Wall height  = 0.2
-  end
-end
-subsection DEM
-  set Fill height            = 0.055
-  set Settle time            = 0.15
-  set Time step fraction     = 0.35
-  set Samples per revolution = 5
-  set Threads                = 2
-end
-subsection Coupling
-  set Schedule      = 1 dem-only, 2 staged
-  set Amplification = 20
-  set Maximum depth fraction = 5
-end
-subsection Output
-  set Directory           = )" +
-         dir + R"(
-  set Checkpoint interval = 0.5
-end
-)";
+  return small_tester_case_file(dir, "1 dem-only, 2 staged", "", "  set Checkpoint interval = 0.5");
 }
 
 // Waits until the run's latest checkpoint lies inside stage `stage` (at least one in-stage

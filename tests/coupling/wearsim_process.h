@@ -22,6 +22,48 @@ std::string file_text(const std::string& path) {
   return {std::istreambuf_iterator<char>(in), {}};
 }
 
+/// The small tester case of the run tests: a 30-degree sector at s = 4, the convex sample at
+/// 3 mm, 2 threads, `schedule` at 20x amplification, output to `dir`; `coupling` and `output`
+/// are lines added to those subsections.
+std::string small_tester_case_file(const std::string& dir, const std::string& schedule,
+                                   const std::string& coupling = "",
+                                   const std::string& output = "") {
+  return R"(subsection Geometry
+  subsection Sample
+    set Type                 = convex
+    set Mesh size            = 3e-3
+    set Mesh size bottom     = 5e-3
+    set Curvature refinement = false
+  end
+  subsection Placement
+    set Angle = 15
+  end
+  subsection Tester
+    set Sector angle = 30
+    set Consolidator = false
+    set Wall height  = 0.2
+  end
+end
+subsection DEM
+  set Fill height            = 0.055
+  set Settle time            = 0.15
+  set Time step fraction     = 0.35
+  set Samples per revolution = 5
+  set Threads                = 2
+end
+subsection Coupling
+  set Schedule      = )" +
+         schedule + R"(
+  set Amplification = 20
+  set Maximum depth fraction = 5
+)" + coupling +
+         R"(
+end
+subsection Output
+  set Directory = )" +
+         dir + "\n" + output + "\nend\n";
+}
+
 /// `wearsim <command> [option] <case_file>` with stdout and stderr to `log`.
 pid_t start_wearsim(const std::string& case_file, const std::string& option, const std::string& log,
                     const char* command = "run") {

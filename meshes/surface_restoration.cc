@@ -1,0 +1,204 @@
+// Putting the implicit recession's new surface back where the old one stands for it
+// (docs/theory.md section 6.3, step 8), and its chords' volume back where it went missing.
+//
+// Where the front has not passed, the grid's zero set of the old surface cuts the sharp edges
+// into chamfers and the curved faces into chords; the old surface is exact there, so the new
+// vertices go back onto it: onto their own patch, onto the old edge between their two
+// patches, onto the old corner of three. Clamped and held faces never move: their vertices go
+// back onto the old clamped and held faces. Where the front has passed, the chords of the
+// triangulation against the finer surface it was made from (the grid's zero set, coarsened)
+// cut off volume where the surface is convex; each vertex moves out by the mean gap of its
+// faces to that surface, and a uniform offset makes up what is left to the asked volume.
+#include "meshes/surface_restoration.h"
+
+#include "meshes/surface_locator.h"
+#include "meshes/triangle_geometry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+namespace wear::meshes {
+
+// Whether the front changed the part in the grid cell of x (a corner where psi != phi).
+bool front_passed(const LevelSetGrid& phi, const LevelSetGrid& psi, const Vec3& x) {
+  const double h = phi.spacing();
+  int cell[3];
+  for (int d = 0; d < 3; ++d)
+    cell[d] = std::clamp(int(std::floor((x[d] - phi.origin()[d]) / h)), 0, phi.n(d) - 2);
+  for (int corner = 0; corner < 8; ++corner) {
+    const auto n = phi.index(cell[0] + (corner & 1), cell[1] + ((corner >> 1) & 1),
+                             cell[2] + ((corner >> 2) & 1));
+    if (psi.value[n] != phi.value[n])
+      return true;
+  }
+  return false;
+}
+
+// The chords of a triangulation whose vertices lie on a finer curved surface (`reference`)
+// cut off volume where it is convex and add it where it is concave. Each new face's gap is
+// the signed distance from its centroid to the reference along the reference's normal
+// (positive inside: volume lost); each movable vertex first moves along its normal by the
+// area-weighted mean gap of its faces, which gives the chords' volume back where it went
+// missing. What is left to `target` (the grid's own loss where the front passed, held faces
+// put back) is made up by a uniform offset of the movable vertices along their normals,
+// found by secant steps on the enclosed volume. Returns that uniform offset [m].
+double chord_restoring_offset(SurfaceMesh& m, const SurfaceMesh& reference,
+                              const std::vector<char>& movable, double target) {
+  const SurfaceLocator locate(reference);
+  const auto centroid = face_centroids(m);
+  const auto area = face_areas(m);
+  const auto reference_normal = face_normals(reference);
+  std::vector<double> gap(m.n_faces());
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::int64_t f = 0; f < std::int64_t(m.n_faces()); ++f) {
+    const auto near = locate.nearest(centroid[std::size_t(f)]);
+    gap[std::size_t(f)] =
+        dot(near.point - centroid[std::size_t(f)], reference_normal[std::size_t(near.face)]);
+  }
+  std::vector<double> sum(m.n_vertices(), 0.0), weight(m.n_vertices(), 0.0);
+  for (std::size_t f = 0; f < m.n_faces(); ++f)
+    for (const auto v : m.triangles[f]) {
+      sum[v] += area[f] * gap[f];
+      weight[v] += area[f];
+    }
+  const auto normal = vertex_normals(m);
+  for (std::size_t v = 0; v < m.n_vertices(); ++v)
+    if (movable[v] && weight[v] > 0)
+      m.vertices[v] += normal[v] * (sum[v] / weight[v]);
+  const std::vector<Vec3> start = m.vertices;
+  const auto volume_at = [&](double offset) {
+    for (std::size_t v = 0; v < m.n_vertices(); ++v)
+      if (movable[v])
+        m.vertices[v] = start[v] + normal[v] * offset;
+    return enclosed_volume(m);
+  };
+  double previous = 0, previous_volume = enclosed_volume(m);
+  double offset = 1e-6, volume = volume_at(offset);
+  for (int step = 0; step < 4 && std::abs(volume - target) > 1e-12 * std::abs(target) &&
+                     volume != previous_volume;
+       ++step) {
+    const double next =
+        offset + (target - volume) * (offset - previous) / (volume - previous_volume);
+    previous = offset;
+    previous_volume = volume;
+    offset = next;
+    volume = volume_at(offset);
+  }
+  return offset;
+}
+
+// Where the front has not reached (every corner of a vertex's grid cell has psi = phi), the
+// new surface stands for the old one, and the grid only cut its edges into chamfers and its
+// curved faces into chords: a vertex there goes back onto the old surface, onto its own patch
+// (faces of one patch only), onto the old edges between its two patches (a vertex on a patch
+// boundary), or onto the old vertex its three or more patches share (a corner). Moves longer
+// than the spacing are not made (a vertex whose patch lies elsewhere). Returns the number of
+// vertices moved.
+std::vector<char> snap_untouched_vertices(const SurfaceMesh& old, const std::vector<int>& old_patch,
+                                          const LevelSetGrid& phi, const LevelSetGrid& psi,
+                                          const std::vector<int>& patch_of_face,
+                                          SurfaceMesh& fresh) {
+  SurfaceMesh by_patch = old;
+  by_patch.face_labels = old_patch;
+  const SurfaceLocator locate(by_patch);
+  std::map<std::pair<int, int>, std::vector<std::pair<std::uint32_t, std::uint32_t>>> seams;
+  for (const auto& [edge, faces] : edge_faces(old))
+    if (faces.size() == 2 && old_patch[faces[0]] != old_patch[faces[1]])
+      seams[std::minmax(old_patch[faces[0]], old_patch[faces[1]])].push_back(edge);
+  std::vector<std::vector<int>> old_vertex_patches(old.n_vertices());
+  for (std::size_t f = 0; f < old.n_faces(); ++f)
+    for (const auto v : old.triangles[f]) {
+      auto& list = old_vertex_patches[v];
+      if (std::find(list.begin(), list.end(), old_patch[f]) == list.end())
+        list.push_back(old_patch[f]);
+    }
+  std::vector<std::vector<int>> patches(fresh.n_vertices());
+  for (std::size_t f = 0; f < fresh.n_faces(); ++f)
+    for (const auto v : fresh.triangles[f]) {
+      auto& list = patches[v];
+      if (std::find(list.begin(), list.end(), patch_of_face[f]) == list.end())
+        list.push_back(patch_of_face[f]);
+    }
+  const double h = phi.spacing();
+  std::vector<char> moved(fresh.n_vertices(), 0);
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::int64_t i = 0; i < std::int64_t(fresh.n_vertices()); ++i) {
+    const auto v = std::size_t(i);
+    Vec3& x = fresh.vertices[v];
+    if (front_passed(phi, psi, x))
+      continue;
+    const auto& mine = patches[v];
+    Vec3 target = x;
+    double best = std::numeric_limits<double>::infinity();
+    if (mine.size() == 1) {
+      const auto near = locate.nearest(x, mine[0]);
+      if (near.face >= 0) {
+        target = near.point;
+        best = near.distance;
+      }
+    } else if (mine.size() == 2) {
+      const auto it = seams.find(std::minmax(mine[0], mine[1]));
+      if (it != seams.end())
+        for (const auto& [a, b] : it->second) {
+          const Vec3 y = closest_point_on_segment(x, old.vertices[a], old.vertices[b]);
+          const double d = norm(y - x);
+          if (d < best) {
+            best = d;
+            target = y;
+          }
+        }
+    } else {
+      for (std::size_t w = 0; w < old.n_vertices(); ++w) {
+        const auto& theirs = old_vertex_patches[w];
+        bool all = true;
+        for (const int q : mine)
+          all &= std::find(theirs.begin(), theirs.end(), q) != theirs.end();
+        const double d = norm(old.vertices[w] - x);
+        if (all && d < best) {
+          best = d;
+          target = old.vertices[w];
+        }
+      }
+    }
+    if (best < h) {
+      x = target;
+      moved[v] = 1;
+    }
+  }
+  return moved;
+}
+
+// Clamped and held faces never move: the vertices of the new clamped and held faces go back
+// onto the old clamped and held faces (within `reach`: they came from them). The balls of the
+// wearing faces next to a held face round into it (the edge between a worn top and a held side
+// would recede as a quarter circle); put back, the held side stays plane and the edge drops
+// along it, as the explicit recession slides it.
+void snap_fixed_vertices(const SurfaceMesh& old, double reach, const std::vector<char>& restored,
+                         SurfaceMesh& fresh) {
+  SurfaceMesh fixed_faces = old;
+  for (std::size_t f = 0; f < old.n_faces(); ++f) {
+    const FaceRole role = old.face_role(f);
+    fixed_faces.face_labels[f] = role == FaceRole::clamped || role == FaceRole::held ? 1 : 0;
+  }
+  const SurfaceLocator locate(fixed_faces);
+  std::vector<char> on_fixed(fresh.n_vertices(), 0);
+  for (std::size_t f = 0; f < fresh.n_faces(); ++f) {
+    const FaceRole role = fresh.face_role(f);
+    if (role == FaceRole::clamped || role == FaceRole::held)
+      for (const auto v : fresh.triangles[f])
+        on_fixed[v] = !restored[v];
+  }
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::int64_t v = 0; v < std::int64_t(fresh.n_vertices()); ++v) {
+    if (!on_fixed[std::size_t(v)])
+      continue;
+    auto& x = fresh.vertices[std::size_t(v)];
+    const auto near = locate.nearest(x, 1);
+    if (near.face >= 0 && near.distance < reach)
+      x = near.point;
+  }
+}
+
+} // namespace wear::meshes

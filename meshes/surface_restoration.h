@@ -1,0 +1,35 @@
+#pragma once
+// Putting the implicit recession's new surface back onto the old one where the front has not
+// passed (and onto the clamped and held faces everywhere), and the volume its chords cut off
+// back where they cut it (meshes/implicit_recession.h).
+#include "meshes/level_set_grid.h"
+#include "meshes/surface_mesh.h"
+
+#include <vector>
+
+namespace wear::meshes {
+
+/// Whether the front changed the part in the grid cell of x (a corner where psi != phi).
+bool front_passed(const LevelSetGrid& phi, const LevelSetGrid& psi, const Vec3& x);
+
+/// Vertices of `fresh` where the front has not passed go back onto the old surface `old`:
+/// onto their patch (`old_patch` per old face, `patch_of_face` per new face), onto the old
+/// edges between their two patches, or onto the old corner of their three or more; moves
+/// longer than the grid spacing are not made. Returns, per vertex, whether it was moved.
+std::vector<char> snap_untouched_vertices(const SurfaceMesh& old, const std::vector<int>& old_patch,
+                                          const LevelSetGrid& phi, const LevelSetGrid& psi,
+                                          const std::vector<int>& patch_of_face,
+                                          SurfaceMesh& fresh);
+
+/// The vertices of the clamped and held faces of `fresh` (those not `restored`) go back onto
+/// the nearest clamped or held face of `old`, when it lies within `reach` [m].
+void snap_fixed_vertices(const SurfaceMesh& old, double reach, const std::vector<char>& restored,
+                         SurfaceMesh& fresh);
+
+/// Each `movable` vertex of `m` moves along its normal by the area-weighted mean gap of its
+/// faces to `reference` (the finer surface its vertices lie on), then all of them by one
+/// uniform offset, so that `m` encloses `target` [m^3]. Returns that uniform offset [m].
+double chord_restoring_offset(SurfaceMesh& m, const SurfaceMesh& reference,
+                              const std::vector<char>& movable, double target);
+
+} // namespace wear::meshes
