@@ -72,6 +72,13 @@ for name in sorted(os.listdir(index)):  # <folder>_stage_NNNN.xml: the entry of 
     with open(os.path.join(index, name), "rb") as f, h5py.File(os.path.join(folder, f"stage_{stage}.h5"), "w") as h:
         h.attrs["xdmf"] = numpy.bytes_(f.read())  # a fixed-length string, as wearsim writes it
 EOF
+  local t part
+  for t in "$keep"/tables/*+*; do # the parts' tables a resume reads back (keep_running.sh)
+    [ -f "$t" ] || continue
+    part=$(basename "$t" | cut -d+ -f1)
+    mkdir -p "$out/parts/$part" && cp "$t" "$out/parts/$part/$(basename "$t" | cut -d+ -f2-)" ||
+      { echo "restore: cannot put $t back into $out" >&2; return 2; }
+  done
   xz -dc "$keep/checkpoint.h5.xz" > "$out/checkpoint.h5.tmp" && mv "$out/checkpoint.h5.tmp" "$out/checkpoint.h5" ||
     { echo "restore: cannot unpack $keep/checkpoint.h5.xz into $out" >&2; return 2; }
   echo "$keep into $out ($(cat "$keep/kept.txt" 2>/dev/null))"

@@ -13,6 +13,9 @@
 #                      parts+sample+surface): the one thing a resume reads of them (it
 #                      re-lists every stage in history.xdmf); run.sh writes them back as stubs
 #   parameters.prm     the run's resolved parameters (its engine version and schedule)
+#   tables/<part>+<file>
+#                      each part's part_wear.csv and part_life.csv: rows a resume keeps
+#                      from the file it finds and does not rebuild from the checkpoint
 #   kept.txt           one line: the stages done of those planned, the engine, when kept
 # Nothing else: no volume or surface fields, no VTU, no history.h5, summary.csv or stages.csv
 # (the resumed run rewrites those from the checkpoint's records after its next stage; its
@@ -62,6 +65,15 @@ for base in [run] + sorted(glob.glob(os.path.join(run, "parts", "*"))):
 EOF
 }
 
+part_tables() { # <run folder> <tables folder>: each part's part_wear.csv and part_life.csv
+  local t
+  mkdir -p "$2" || return 1
+  for t in "$1"/parts/*/part_wear.csv "$1"/parts/*/part_life.csv; do
+    [ -f "$t" ] || continue
+    cp "$t" "$2/$(basename "$(dirname "$t")")+$(basename "$t")" || return 1
+  done
+}
+
 keep_one() { # <case>: its run's resume set into running_dir, or that deleted when it finished
   local out keep new done planned engine params
   out=$(out_dir "$1") keep=$(running_dir "$1")
@@ -86,6 +98,7 @@ keep_one() { # <case>: its run's resume set into running_dir, or that deleted wh
   new="$(dirname "$keep")/.$(basename "$keep").new"
   rm -rf "$new"
   mkdir -p "$new" && index_entries "$out" "$new/index" && cp "$params" "$new/parameters.prm" &&
+    part_tables "$out" "$new/tables" &&
     nice xz -6 -T1 -c "$out/checkpoint.h5" > "$new/checkpoint.h5.xz" ||
     { echo "keep_running.sh: $1: cannot write $new; $keep left as it is" >&2; rm -rf "$new"; return 1; }
   if [ "$(stat -c %s "$new/checkpoint.h5.xz")" -gt $((cap_mb * 1048576)) ]; then

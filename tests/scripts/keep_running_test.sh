@@ -3,7 +3,8 @@
 # restore_running) on a stand-in run: an unfinished run is kept as its compressed checkpoint,
 # the index entries of its stage files and its parameters, beside its case file; restored into
 # an output folder that holds no run, the checkpoint is the same bytes and each stage file a
-# stub with the same index entry (a fixed-length string, as wearsim reads it); a folder that
+# stub with the same index entry (a fixed-length string, as wearsim reads it), and the part's
+# part_wear.csv and part_life.csv come back as they were (a resume reads their rows); a folder that
 # holds a run is left alone; a checkpoint above CAP_MB is refused and the kept set left as it
 # is; a finished run's kept set is deleted.
 set -uo pipefail
@@ -34,17 +35,22 @@ PY
 keep() { bash "$root/cases/reference-study/keep_running.sh" "$prm" > "$tmp/out" 2>&1; }
 
 checkpoint 1
+printf 'stage,what\n1,part\n' > "$part/part_life.csv"
+printf 'stage,label\n1,base\n' > "$part/part_wear.csv"
 keep || fail "refused an unfinished run: $(cat "$tmp/out")"
 [ -f "$keep/checkpoint.h5.xz" ] && [ -f "$keep/parameters.prm" ] && grep -q "1 of 3 stages done, engine e1" "$keep/kept.txt" ||
   fail "the kept set is not complete: $(ls -R "$keep") $(cat "$tmp/out")"
 [ "$(ls "$keep/index")" = "$(printf 'parts+sample+surface_stage_0000.xml\nparts+sample+surface_stage_0001.xml\nparts+sample+volume_stage_0001.xml')" ] ||
   fail "the index entries kept are not the three stage files': $(ls "$keep/index")"
 cp "$out/checkpoint.h5" "$tmp/checkpoint.orig"
+cp "$part/part_life.csv" "$part/part_wear.csv" "$tmp/"
 
 rm -rf "$out"
 restored=$(cd "$root" && source cases/reference-study/case_paths.sh && restore_running "$prm") ||
   fail "the kept set was not restored"
 [ -n "$restored" ] && cmp -s "$tmp/checkpoint.orig" "$out/checkpoint.h5" || fail "the restored checkpoint differs"
+cmp -s "$tmp/part_life.csv" "$part/part_life.csv" && cmp -s "$tmp/part_wear.csv" "$part/part_wear.csv" ||
+  fail "the part's tables did not come back: $(ls -R "$out")"
 /usr/bin/python3 - "$out" <<'PY' || fail "the restored stubs do not hold the index entries"
 import sys, h5py
 for kind, stage in (("surface", 0), ("surface", 1), ("volume", 1)):
