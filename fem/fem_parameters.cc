@@ -12,9 +12,21 @@ WornSampleParameters worn_sample_parameters(const FemParameters& p,
                                             const meshes::SampleGeometry& sizes,
                                             const std::string& mesh_directory) {
   WornSampleParameters w = p.worn_sample;
+  w.evolution = surface_evolution(p.surface_evolution);
   w.remesh.sizes = sizes;
   w.mesh_directory = mesh_directory;
   return w;
+}
+
+SurfaceEvolution surface_evolution(const std::string& name) {
+  if (name == "explicit only")
+    return SurfaceEvolution::explicit_only;
+  if (name == "explicit then implicit")
+    return SurfaceEvolution::explicit_then_implicit;
+  if (name == "implicit")
+    return SurfaceEvolution::implicit;
+  throw std::invalid_argument("FEM/Surface evolution: '" + name +
+                              "' is none of explicit only, explicit then implicit, implicit");
 }
 
 void validate(const FemParameters& p) {
@@ -42,6 +54,17 @@ void validate(const FemParameters& p) {
   require(w.remesh.min_tet_quality > 0 && w.remesh.min_tet_quality < 1,
           "FEM/Remesh tetrahedron quality", "must lie in (0, 1)");
   require(w.worn_through_thickness > 0, "FEM/Worn-through thickness", "must be positive [m]");
+  surface_evolution(p.surface_evolution);
+  const auto& i = w.implicit;
+  require(i.spacing > 0 && i.spacing < i.max_edge, "FEM/Implicit recession/Grid spacing",
+          "must be positive and below the coarsening's longest edge, " +
+              std::to_string(i.max_edge * 1e3) + " mm [m]");
+  require(i.vanish_height >= 0 && std::isfinite(i.vanish_height),
+          "FEM/Implicit recession/Vanish height", "must be >= 0 [m]");
+  require(i.target_edge >= 2 * i.spacing && std::isfinite(i.target_edge),
+          "FEM/Implicit recession/Target edge", "must be at least twice the grid spacing [m]");
+  require(i.volume_tolerance > 0 && i.volume_tolerance < 0.1,
+          "FEM/Implicit recession/Volume tolerance", "must lie in (0, 0.1)");
 }
 
 } // namespace wear::fem

@@ -20,7 +20,13 @@ struct FemParameters {
   /// keep their defaults, except remesh.sizes and mesh_directory, which are the run's
   /// (worn_sample_parameters()).
   WornSampleParameters worn_sample;
+  /// worn_sample.evolution by name (surface_evolution below), as the case file spells it
+  std::string surface_evolution = "explicit then implicit";
 };
+
+/// The evolution a Surface evolution value names ("explicit only", "explicit then
+/// implicit", "implicit"); throws std::invalid_argument naming FEM/Surface evolution.
+SurfaceEvolution surface_evolution(const std::string& name);
 
 /// The worn sample's parameters of a run: those of `p`, remeshed with the mesh sizes and
 /// grading of `sizes` (the unworn sample's), remeshes written to `mesh_directory`.
@@ -61,6 +67,30 @@ void visit_parameters(FemParameters& f, Visitor& v) {
          "[m] A wear face with a vertex closer than this to the sample's clamped bottom is worn "
          "through: no material is left there, so the wear asked of it is recorded "
          "(stages.csv: worn_through_volume_m3) and not removed.");
+  v.selection("Surface evolution", f.surface_evolution,
+              "explicit only|explicit then implicit|implicit",
+              "How a stage's wear moves the worn surface (docs/theory.md section 6.3): "
+              "'explicit only' (vertices recede along their normals in increments, halved and "
+              "spread where the surface would fold; the run stops where it still folds); "
+              "'explicit then implicit' (the same, and where it would still fold the rest of "
+              "the stage is taken by the implicit recession: a grid's signed distance and a "
+              "union of balls, which cannot fold, lets elements vanish and holes open); "
+              "'implicit' (every stage so).");
+  auto& i = w.implicit;
+  v.enter("Implicit recession");
+  v.real("Grid spacing", i.spacing,
+         "[m] Spacing of the grid the implicit recession works on: the tolerance of the new "
+         "worn shape where the wear passed (the old surface stays where it did not).");
+  v.real("Vanish height", i.vanish_height,
+         "[m] A convex element standing at most this far above its foot is worn away: its "
+         "faces join the label around it (and Coupling/Worn out when = elements gone counts "
+         "it gone).");
+  v.real("Target edge", i.target_edge,
+         "[m] Edge length of the new surface's triangles (isotropic remeshing), which the "
+         "volume mesher keeps; at least twice the grid spacing.");
+  v.real("Volume tolerance", i.volume_tolerance,
+         "[-] Relative tolerance of each wearing label's removed volume.");
+  v.leave();
   v.leave();
 }
 

@@ -133,8 +133,8 @@ void visit_parameters(CouplingParameters& k, Visitor& v) {
               "'worn out at N h' (each stage writes the part's life to part_life.csv: every "
               "convex element's height above its foot and volume, the part's thinnest point "
               "and volume): 'never' (the schedule runs to its end); 'elements gone' (no convex "
-              "element stands higher than the implicit recession's vanish height, 0.25 mm, "
-              "above its foot); 'thickness' (the thinnest point above the clamped bottom "
+              "element stands higher than FEM/Implicit recession/Vanish height above its "
+              "foot); 'thickness' (the thinnest point above the clamped bottom "
               "reaches Worn-out thickness); 'worn through' (the wear has removed clamped area: "
               "a hole through the part).");
   v.real("Worn-out thickness", k.worn_out_thickness,

@@ -6,7 +6,8 @@ Usage: /usr/bin/python3 docs/results/holder_cases_report.py [--root DIR] [--out 
 
 --root    a folder holding the three summaries stress-plain, stress-convex and
           wear-out-convex (default: each beside its case, cases/stress/results/stress-plain,
-          cases/stress/results/stress-convex and cases/wear-out/results/wear-out-convex)
+          cases/stress/results/stress-convex and, for the wear-out run of the reference
+          study's engine, cases/wear-out/results/wear-out-convex-b13327c60d5d)
 --out     where holder-cases.md and its plots go (default docs/results)
 --engine  the engine version every run must name (default cases/reference-study/ENGINE, the
           reference study's engine, so that these results sit beside the study's)
@@ -44,6 +45,9 @@ NAMES = {"stress-plain": "cases/stress/plain.prm", "stress-convex": "cases/stres
          "wear-out-convex": "cases/wear-out/convex.prm"}
 # Each run's summary beside its case file: cases/<case>/results/<run>.
 SUMMARIES = {n: os.path.join(os.path.dirname(prm), "results", n) for n, prm in NAMES.items()}
+# The wear-out run this report shows is the one the reference study's engine made; the
+# wear-out study's own runs (cases/wear-out/ENGINE) write their summaries beside it.
+SUMMARIES["wear-out-convex"] += "-b13327c60d5d"
 
 
 def staged(run):
