@@ -43,11 +43,13 @@ TEST_CASE("every case file under cases/ parses, validates, passes the consistenc
   std::set<std::string> directories;
   int n_files = 0;
   for (const auto& e : std::filesystem::recursive_directory_iterator(WEAR_SOURCE_DIR "/cases")) {
-    // A folder that holds a checkpoint or a summary is a kept run (a run to be continued, or
+    // A folder that holds a checkpoint (or a kept, compressed one) or a summary is a kept run
+    // (a run to be continued, or
     // the calibration kept for the report): its parameters.prm is the resolved copy of a case,
     // naming that case's output folder, and its calibration.prm a written result, not a case.
     if (e.path().extension() != ".prm" ||
         std::filesystem::exists(e.path().parent_path() / "checkpoint.h5") ||
+        std::filesystem::exists(e.path().parent_path() / "checkpoint.h5.xz") ||
         std::filesystem::exists(e.path().parent_path() / "summary.csv"))
       continue;
     INFO(e.path().string());
