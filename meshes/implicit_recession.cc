@@ -553,11 +553,7 @@ ImplicitRecession implicit_recession(const SurfaceMesh& s,
   const auto movable = free_wearing_vertices(r.surface, restored);
   r.uniform_offset = chord_restoring_offset(r.surface, coarse_patches, movable, target);
   r.removed_volume = volume_before - enclosed_volume(r.surface);
-  r.min_face_quality = std::numeric_limits<double>::infinity();
-  for (const auto& t : r.surface.triangles)
-    r.min_face_quality = std::min(r.min_face_quality, triangle_quality(r.surface.vertices[t[0]],
-                                                                       r.surface.vertices[t[1]],
-                                                                       r.surface.vertices[t[2]]));
+  r.min_face_quality = min_triangle_quality(r.surface);
   const auto area_before = area_per_label(s), area_after = area_per_label(r.surface);
   for (const auto& [label, a] : area_before)
     if (s.roles.of(label) == FaceRole::clamped) {

@@ -23,7 +23,6 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
-#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -33,13 +32,6 @@ namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
-
-double worst_quality(const SurfaceMesh& m) {
-  double q = std::numeric_limits<double>::infinity();
-  for (const auto& t : m.triangles)
-    q = std::min(q, triangle_quality(m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]));
-  return q;
-}
 
 } // namespace
 
@@ -53,7 +45,7 @@ IsotropicRemeshReport isotropic_remesh(SurfaceMesh& m,
   m.validate("surface to remesh isotropically");
   IsotropicRemeshReport r;
   r.n_faces_before = m.n_faces();
-  r.min_quality_before = worst_quality(m);
+  r.min_quality_before = min_triangle_quality(m);
 
   Mesh mesh;
   std::vector<Mesh::Vertex_index> vertex(m.n_vertices());
@@ -134,7 +126,7 @@ IsotropicRemeshReport isotropic_remesh(SurfaceMesh& m,
   out.set_revision(m.revision());
   m = std::move(out);
   r.n_faces_after = m.n_faces();
-  r.min_quality_after = worst_quality(m);
+  r.min_quality_after = min_triangle_quality(m);
   r.seconds = clock.seconds();
   return r;
 }

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <unordered_map>
 
 namespace wear::meshes {
@@ -69,6 +70,13 @@ bool faces_intersect(const SurfaceMesh& m, std::uint32_t f, std::uint32_t g) {
 double triangle_quality(const Vec3& a, const Vec3& b, const Vec3& c) {
   const double l2 = norm2(b - a) + norm2(c - b) + norm2(a - c);
   return l2 > 0 ? 2 * std::sqrt(3.0) * norm(cross(b - a, c - a)) / l2 : 0;
+}
+
+double min_triangle_quality(const SurfaceMesh& m) {
+  double q = std::numeric_limits<double>::infinity();
+  for (const auto& t : m.triangles)
+    q = std::min(q, triangle_quality(m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]));
+  return q;
 }
 
 std::vector<std::pair<std::uint32_t, std::uint32_t>>

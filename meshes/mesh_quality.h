@@ -25,6 +25,8 @@ struct SurfaceQuality {
 
 /// 4 sqrt(3) A / (sum of the squared edges): 1 for an equilateral triangle, 0 for a flat one.
 double triangle_quality(const Vec3& a, const Vec3& b, const Vec3& c);
+/// The smallest triangle_quality of the faces of m (infinity without faces).
+double min_triangle_quality(const SurfaceMesh& m);
 
 /// `reference_normals` (one per face, e.g. the unworn normals) enables the inverted-face
 /// test; an edge whose two faces' normals are nearly opposite (cos < folded_edge_cos) is a

@@ -55,10 +55,30 @@ WearingSums wearing_sums(const SurfaceMesh& m, const std::vector<double>& remove
   return s;
 }
 
+// The area-weighted recession with the vertices the wear face shares with the unworn
+// surface kept on it: they slide down a flat side instead of leaving its plane.
+std::vector<Vec3> sliding_recession(const SurfaceMesh& surface,
+                                    const std::vector<double>& removed_volume) {
+  std::vector<Vec3> unit = area_weighted_recession(surface, removed_volume);
+  const auto constraint = sliding_constraints(surface);
+  for (std::size_t v = 0; v < unit.size(); ++v)
+    unit[v] = constraint[v].apply(unit[v]);
+  return unit;
+}
+
+// `unit` scaled so that the enclosed volume drops by r.removed_volume (set by the caller).
+void scale_recession(const SurfaceMesh& surface, const std::vector<Vec3>& unit, Recession& r,
+                     double first_guess) {
+  r.scale = scale_to_volume_loss(surface, unit, r.removed_volume, &r.swept_volume, first_guess);
+  for (std::size_t v = 0; v < surface.n_vertices(); ++v)
+    r.displacement[v] = unit[v] * r.scale;
+}
+} // namespace
+
 // The scale s of the displacement field `unit` at which the enclosed volume drops by
 // `target` (negative: grows), by secant steps from s = first_guess and s = 0.
 double scale_to_volume_loss(const SurfaceMesh& surface, const std::vector<Vec3>& unit,
-                            double target, double* achieved, double first_guess = 1) {
+                            double target, double* achieved, double first_guess) {
   const std::size_t nv = surface.n_vertices();
   const double v0 = enclosed_volume(surface);
   SurfaceMesh moved = surface;
@@ -86,26 +106,6 @@ double scale_to_volume_loss(const SurfaceMesh& surface, const std::vector<Vec3>&
   *achieved = g1 + target;
   return s1;
 }
-
-// The area-weighted recession with the vertices the wear face shares with the unworn
-// surface kept on it: they slide down a flat side instead of leaving its plane.
-std::vector<Vec3> sliding_recession(const SurfaceMesh& surface,
-                                    const std::vector<double>& removed_volume) {
-  std::vector<Vec3> unit = area_weighted_recession(surface, removed_volume);
-  const auto constraint = sliding_constraints(surface);
-  for (std::size_t v = 0; v < unit.size(); ++v)
-    unit[v] = constraint[v].apply(unit[v]);
-  return unit;
-}
-
-// `unit` scaled so that the enclosed volume drops by r.removed_volume (set by the caller).
-void scale_recession(const SurfaceMesh& surface, const std::vector<Vec3>& unit, Recession& r,
-                     double first_guess) {
-  r.scale = scale_to_volume_loss(surface, unit, r.removed_volume, &r.swept_volume, first_guess);
-  for (std::size_t v = 0; v < surface.n_vertices(); ++v)
-    r.displacement[v] = unit[v] * r.scale;
-}
-} // namespace
 
 std::vector<double> area_weighted_depth(const SurfaceMesh& m,
                                         const std::vector<double>& removed_volume) {

@@ -28,6 +28,13 @@ std::vector<double> area_weighted_depth(const SurfaceMesh& m,
 std::vector<Vec3> area_weighted_recession(const SurfaceMesh& m,
                                           const std::vector<double>& removed_volume);
 
+/// The scale s of the displacement field `unit` [m per unit of s] at which the enclosed
+/// volume drops by `target` [m^3] (negative: grows), by secant steps from s = first_guess and
+/// s = 0 (first_guess 0: a linearised first step), to round-off of the volume; the drop
+/// reached goes to `achieved`.
+double scale_to_volume_loss(const SurfaceMesh& surface, const std::vector<Vec3>& unit,
+                            double target, double* achieved, double first_guess = 1);
+
 struct Recession {
   std::vector<Vec3> displacement; ///< [m] per surface vertex (zero off the wear face)
   double removed_volume = 0;      ///< [m^3] requested (sum of the field)

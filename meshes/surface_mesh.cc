@@ -183,6 +183,11 @@ std::map<int, double> area_per_label(const SurfaceMesh& m) {
   return r;
 }
 
+long euler_characteristic(const SurfaceMesh& m) {
+  // closed: every edge has two faces, E = 3 F / 2
+  return long(m.n_vertices()) - long(m.n_faces()) * 3 / 2 + long(m.n_faces());
+}
+
 double enclosed_volume(const SurfaceMesh& m) {
   double v = 0;
   for (const auto& t : m.triangles) {

@@ -107,6 +107,9 @@ BoundingBox bounding_box(const Vec3* points, std::size_t n);
 double total_area(const SurfaceMesh& m);                    ///< [m^2]
 std::map<int, double> area_per_label(const SurfaceMesh& m); ///< [m^2]
 
+/// V - E + F of a closed triangle surface: 2 per sphere-like component, less 2 per handle
+/// (a hole through a plate).
+long euler_characteristic(const SurfaceMesh& m);
 /// Volume enclosed by a closed, outward-oriented surface (divergence theorem) [m^3].
 double enclosed_volume(const SurfaceMesh& m);
 /// Volume between the faces of one label and the horizontal plane z = z0:

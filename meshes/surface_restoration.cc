@@ -11,6 +11,7 @@
 // faces to that surface, and a uniform offset makes up what is left to the asked volume.
 #include "meshes/surface_restoration.h"
 
+#include "meshes/recession.h"
 #include "meshes/surface_locator.h"
 #include "meshes/triangle_geometry.h"
 
@@ -67,25 +68,15 @@ double chord_restoring_offset(SurfaceMesh& m, const SurfaceMesh& reference,
   for (std::size_t v = 0; v < m.n_vertices(); ++v)
     if (movable[v] && weight[v] > 0)
       m.vertices[v] += normal[v] * (sum[v] / weight[v]);
-  const std::vector<Vec3> start = m.vertices;
-  const auto volume_at = [&](double offset) {
-    for (std::size_t v = 0; v < m.n_vertices(); ++v)
-      if (movable[v])
-        m.vertices[v] = start[v] + normal[v] * offset;
-    return enclosed_volume(m);
-  };
-  double previous = 0, previous_volume = enclosed_volume(m);
-  double offset = 1e-6, volume = volume_at(offset);
-  for (int step = 0; step < 4 && std::abs(volume - target) > 1e-12 * std::abs(target) &&
-                     volume != previous_volume;
-       ++step) {
-    const double next =
-        offset + (target - volume) * (offset - previous) / (volume - previous_volume);
-    previous = offset;
-    previous_volume = volume;
-    offset = next;
-    volume = volume_at(offset);
-  }
+  std::vector<Vec3> outward(m.n_vertices());
+  for (std::size_t v = 0; v < m.n_vertices(); ++v)
+    if (movable[v])
+      outward[v] = normal[v];
+  double achieved = 0;
+  const double offset =
+      scale_to_volume_loss(m, outward, enclosed_volume(m) - target, &achieved, 1e-6);
+  for (std::size_t v = 0; v < m.n_vertices(); ++v)
+    m.vertices[v] += outward[v] * offset;
   return offset;
 }
 

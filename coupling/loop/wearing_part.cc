@@ -88,11 +88,6 @@ double equivalent_revolutions(const std::vector<StageRecord>& stages, int revolu
   return n;
 }
 
-/// V - E + F of a closed surface: 2 for a part without holes, 2 - 2 g with g holes through it.
-long euler_characteristic(const meshes::SurfaceMesh& m) {
-  return long(m.n_vertices()) - long(meshes::edge_faces(m).size()) + long(m.n_faces());
-}
-
 meshes::FaceField<double> von_mises_on(const meshes::SurfaceMesh& surface) {
   return meshes::FaceField<double>("von Mises", "Pa", meshes::Extensivity::intensive, surface);
 }
@@ -451,7 +446,7 @@ std::string WearingPart::worn_out(const CouplingParameters& c) const {
                   life.thinnest * 1e3, c.worn_out_thickness * 1e3);
   }
   case WornOutCriterion::worn_through: {
-    const bool hole = euler_characteristic(s) < 2;
+    const bool hole = meshes::euler_characteristic(s) < 2;
     const bool set_aside = std::any_of(stages_.begin(), stages_.end(), [](const StageRecord& r) {
       return r.worn_through_volume > 0;
     });

@@ -19,15 +19,7 @@
 #include <string>
 
 using namespace wear;
-
-namespace {
-
-// V - E + F of a closed surface: 2 - 2 g for genus g.
-long euler_characteristic(const meshes::SurfaceMesh& m) {
-  return long(m.n_vertices()) - long(meshes::edge_faces(m).size()) + long(m.n_faces());
-}
-
-} // namespace
+using meshes::euler_characteristic;
 
 TEST_CASE("a plate worn through opens a hole that the remesher meshes",
           "[fem][implicit_recession]") {

@@ -38,11 +38,6 @@ ImplicitRecession recede_uniformly(const SurfaceMesh& s, double d, double h,
   CHECK(r.removed_volume == Approx(sum(removed)).epsilon(1e-3));
   return r;
 }
-// Euler characteristic V - E + F of a closed triangle surface: 2 per sphere-like component,
-// 0 per handle (a hole through a plate).
-long euler_characteristic(const SurfaceMesh& m) {
-  return long(m.n_vertices()) - long(m.n_faces()) * 3 / 2 + long(m.n_faces());
-}
 } // namespace
 
 TEST_CASE("the zero set of a sphere's signed distance encloses the grid's volume",
