@@ -12,6 +12,7 @@
 // memory and contacts are then rank 0's.
 #include "coupling/app/bench_command.h"
 
+#include "coupling/app/bench_evolution.h"
 #include "coupling/app/bench_fem.h"
 #include "coupling/app/bench_ranks.h"
 #include "coupling/app/bench_tester.h"
@@ -298,9 +299,12 @@ int run_bench_command(const std::vector<std::string>& args, std::ostream& out_to
   std::ostream& out = ranks && ranks->rank() > 0 ? silent : out_to;
   if (!args.empty() && args[0] == "fem")
     return run_bench_fem({args.begin() + 1, args.end()}, out);
+  if (!args.empty() && args[0] == "evolution")
+    return run_bench_evolution({args.begin() + 1, args.end()}, out);
   if (args.empty() || args[0] != "dem")
-    throw std::invalid_argument("wearsim bench: 'wearsim bench dem [options]' or "
-                                "'wearsim bench fem [options]'");
+    throw std::invalid_argument("wearsim bench: 'wearsim bench dem [options]', "
+                                "'wearsim bench fem [options]' or 'wearsim bench evolution "
+                                "[options]'");
   const BenchDemArguments a = bench_dem_arguments(args);
   const int threads = *std::max_element(a.thread_counts.begin(), a.thread_counts.end());
   omp_set_num_threads(threads);

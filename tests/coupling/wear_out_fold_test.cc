@@ -7,12 +7,11 @@
 // apply it: the volume removed exactly (0.1 %), the clamped bottom where it was. The explicit
 // recession folds there, and the implicit one takes the rest of the stage ([long]: a stage of
 // increments, mesh motions and remeshes of 38,000 tetrahedra, about 4 min).
-#include "coupling/output/hdf5_file.h"
+#include "coupling/output/worn_stage_file.h"
 #include "fem/remesher.h"
 #include "fem/worn_sample.h"
 #include "meshes/implicit_recession.h"
 #include "meshes/mesh_quality.h"
-#include "meshes/sample_generator.h"
 #include "meshes/surface_locator.h"
 
 #include <catch2/catch.hpp>
@@ -25,45 +24,11 @@ using namespace wear;
 
 namespace {
 
-struct WearOutStage {
-  fem::WornSampleState state;
-  std::vector<double> removed_volume; ///< [m^3] per surface face
-};
+using WearOutStage = coupling::WornStage;
 
 WearOutStage read_stage23() {
-  const coupling::Hdf5Reader h5(std::string(WEAR_SOURCE_DIR) + "/tests/data/wear-out/stage23.h5");
-  WearOutStage s;
-  auto& st = s.state;
-  st.vertices = h5.doubles("vertices");
-  for (const int v : h5.ints("tetrahedra"))
-    st.tetrahedra.push_back(v);
-  const std::vector<int> triangles = h5.ints("triangles");
-  const std::vector<int> labels = h5.ints("labels");
-  for (const int v : triangles)
-    st.boundary_faces.push_back(v);
-  st.boundary_ids = labels;
-  // The surface: the boundary's triangles on their own vertices, in the file's face order
-  // (the order of removed_volume).
-  std::vector<int> surface_index(st.vertices.size() / 3, -1);
-  auto& m = st.surface;
-  for (std::size_t f = 0; f < labels.size(); ++f) {
-    meshes::Triangle t;
-    for (int k = 0; k < 3; ++k) {
-      const int v = triangles[3 * f + k];
-      if (surface_index[v] < 0) {
-        surface_index[v] = int(m.vertices.size());
-        m.vertices.push_back({st.vertices[3 * v], st.vertices[3 * v + 1], st.vertices[3 * v + 2]});
-      }
-      t[k] = std::uint32_t(surface_index[v]);
-    }
-    m.triangles.push_back(t);
-    m.face_labels.push_back(labels[f]);
-  }
-  m.roles = meshes::sample_roles(true); // the sample stands in its holder
-  st.removed_volume.assign(labels.size(), 0.0);
-  st.wear_depth.assign(labels.size(), 0.0);
-  s.removed_volume = h5.doubles("removed_volume");
-  return s;
+  return coupling::read_worn_stage(std::string(WEAR_SOURCE_DIR) +
+                                   "/tests/data/wear-out/stage23.h5");
 }
 
 } // namespace

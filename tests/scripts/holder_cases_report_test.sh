@@ -1,7 +1,7 @@
 #!/bin/bash
-# docs/results/holder_cases_report.py (issue 32, item 6) reports the wear-out and stress runs
-# it finds and lists the others as not run; it refuses a root with none of them, a run of
-# another engine version than the study's and a run that names none. Its arithmetic is checked
+# docs/results/holder_cases_report.py reports the wear-out and stress runs it finds and lists
+# the others as not run; it refuses a root with none of them, a run of another engine version
+# than its study's (each pair its own ENGINE file) and a run that names none. Its arithmetic is checked
 # on stand-in stages with known figures: two staged stages at 10x stand for 560 h, and a law
 # that scales the convex sample's wear by 1.2 and the plain one's by 1 turns a DEM ratio of
 # 0.5 into 0.6 (10 percentage points narrower); a run short of its schedule is told as stopped by
@@ -101,11 +101,73 @@ grep -q "Element heights after stage 2: .*(unworn 6.00;" "$tmp/e/report/holder-c
   grep -q "^| 1 | C11 2.50 | C21 -0.75 |" "$tmp/e/report/holder-cases.md" ||
   fail "the element heights are not 2.50 and -0.75 mm: $(grep -A4 'Element heights' "$tmp/e/report/holder-cases.md")"
 
+# The wear-out pair's life and ratio: the convex sample wears half the plain one's DEM wear in
+# both staged stages (ratio 0.500 a revolution and cumulative); its two elements of 100 mm^3
+# keep 70 % after 280 h and 25 % after 560 h, so half is gone at 280 + 280 x 0.2 / 0.45 = 404 h,
+# and one element (1 mm) of the two still stands above the 0.25 mm vanish height; the run ended
+# worn out, as its log says.
+run_folder "$tmp/f/wear-out-convex" e1 5e-8 1.0
+run_folder "$tmp/f/wear-out-plain" e1 1e-7 1.0
+printf 'stage,equivalent_revolutions,equivalent_hours,what,height_m,volume_m3\n%s\n' \
+  "1,0,0,C11,0.006,1e-07
+1,0,0,C21,0.006,1e-07
+1,0,0,part,0.01,1e-05
+2,10,280,C11,0.004,8e-08
+2,10,280,C21,0.003,6e-08
+2,10,280,part,0.0095,9.9e-06
+3,20,560,C11,0.001,3e-08
+3,20,560,C21,0.0002,2e-08
+3,20,560,part,0.009,9.8e-06" > "$tmp/f/wear-out-convex/part_life.csv"
+printf 'stage,equivalent_revolutions,equivalent_hours,what,height_m,volume_m3\n1,0,0,part,0.01,1e-05\n3,20,560,part,0.008,9e-06\n' \
+  > "$tmp/f/wear-out-plain/part_life.csv"
+printf '=== t0 wearsim run --overwrite c.prm\npart '"'"'sample'"'"' worn out at 560 h after stage 3: no convex element stands higher than 0.25 mm above its foot (Coupling/Worn out when = elements gone)\n' \
+  > "$tmp/f/wear-out-convex.log"
+sed -i 's/2 staged/5 staged/' "$tmp/f/wear-out-convex/parameters.prm"
+check "$tmp/f" --out "$tmp/f/report" || fail "refused the wear-out pair: $(cat "$tmp/out")"
+md="$tmp/f/report/holder-cases.md"
+[ -f "$tmp/f/report/wear_out.png" ] || fail "wrote no wear_out.png"
+grep -q "| worn out at 560 h after stage 3: no convex element stands higher than 0.25 mm above its foot |" "$md" ||
+  fail "the worn-out end is not told: $(grep '^| wear-out-convex' "$md")"
+grep -q "^| 3 | 560 | 1 | 50 | 25.0 | 1.00 / 0.20 | 9.00 | 8.00 |" "$md" ||
+  fail "the life after stage 3 is not 1 standing, 50 mm^3, 25 %: $(grep -A5 'pattern' "$md")"
+grep -q "^| 2 | 280 | 2 | 140 | 70.0 | 4.00 / 3.00 | 9.50 | 9.00 |" "$md" ||
+  fail "the life after stage 2 (plain interpolated at 280 h: 9.00 mm) is wrong: $(grep -A5 'pattern' "$md")"
+grep -q "Half the element volume gone\*\* at 404 h" "$md" || fail "half the volume is not gone at 404 h: $(grep 'Half' "$md")"
+grep -q "^| 3 | 280 | 50.00 | 100.00 | 0.500 |" "$md" || fail "the ratio a revolution is not 0.500: $(grep -A6 'Convex / plain' "$md")"
+grep -q "convex / plain 0.500\*\*" "$md" || fail "the cumulative ratio is not 0.500: $(grep '^Over the first' "$md")"
+# The convergence runs: at A/2 half the element volume is gone at 560 h, 38.5 % after the
+# wear-out run's 404 h; the run at h/2 is not run.
+run_folder "$tmp/f/wear-out-convex-a10" e1 5e-8 1.0
+printf 'stage,equivalent_revolutions,equivalent_hours,what,height_m,volume_m3\n%s\n' \
+  "1,0,0,C11,0.006,1e-07
+1,0,0,part,0.01,1e-05
+3,20,560,C11,0.002,5e-08
+3,20,560,part,0.009,9.8e-06" > "$tmp/f/wear-out-convex-a10/part_life.csv"
+check "$tmp/f" --out "$tmp/f/report" || fail "refused the convergence runs: $(cat "$tmp/out")"
+grep -q "^| wear-out-convex-a10 | h, A/2 | .* | 560 | +38.5 % |" "$md" ||
+  fail "the convergence at A/2 is not +38.5 %: $(grep -A6 'Convergence' "$md")"
+grep -q "^| wear-out-convex-fine | h/2, A | .* | not run | |" "$md" ||
+  fail "the run at h/2 is not listed as not run: $(grep -A6 'Convergence' "$md")"
+
+# Each pair its study's engine: without --engine a wear-out run of the reference study's engine
+# is refused (the wear-out pair's is cases/wear-out/ENGINE).
+ref=$(cat "$root/cases/reference-study/ENGINE")
+own=$(cat "$root/cases/wear-out/ENGINE")
+if [ "$ref" != "$own" ]; then
+  run_folder "$tmp/g/stress-plain" "$ref" 1e-7 1.0
+  run_folder "$tmp/g/wear-out-convex" "$ref" 5e-8 1.0
+  summarise_stand_ins "$tmp/g"
+  /usr/bin/python3 "$report" --root "$tmp/g.summaries" --check > "$tmp/out" 2>&1 &&
+    fail "accepted a wear-out run of the reference study's engine"
+  grep -q "wear-out-convex: $ref, not $own" "$tmp/out" && ! grep -q "stress-plain:" "$tmp/out" ||
+    fail "the refusal does not name the wear-out run alone: $(cat "$tmp/out")"
+fi
+
 # A run of another engine, named in the refusal.
 run_folder "$tmp/b/stress-plain" e1 1e-7 1.0
 run_folder "$tmp/b/wear-out-convex" e2 5e-8 1.0
 check "$tmp/b" --check && fail "accepted a run of another engine"
-grep -q "wear-out-convex: e2" "$tmp/out" || fail "the refusal does not name the odd run: $(cat "$tmp/out")"
+grep -q "wear-out-convex: e2, not e1" "$tmp/out" || fail "the refusal does not name the odd run: $(cat "$tmp/out")"
 
 # No run at all.
 mkdir -p "$tmp/c"

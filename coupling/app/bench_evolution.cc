@@ -1,0 +1,246 @@
+// `wearsim bench evolution`: the cost and accuracy of the worn surface's evolutions
+// (fem::SurfaceEvolution) on one stage of wear, side by side on the same input.
+//
+// Input, either
+//   - a worn stage file (--state, coupling/output/worn_stage_file.h): a worn sample and the
+//     removed volume per face of one of its stages, scaled by --scale (the wear-out's stage
+//     24, tests/data/wear-out/stage23.h5, is the surface on which the explicit recession
+//     folds), or
+//   - the unworn reference sample (--sample convex|plain, --mesh-size) with the pattern of
+//     `wearsim bench fem`: depth x n_z^2 per wearing face (tops and flats most, flanks less;
+//     --depth, default 20 um, a stage of the default case is about 1 um).
+// Each evolution applies the same stage to its own fresh copy of the sample
+// (WornSample::apply_wear) and is timed as a whole. Accuracy, per evolution:
+//   volume error   |V_before - V_after - (asked - worn through)| / asked, the mesh's volume
+//   unworn offset  the largest distance from a face that does not wear (held, clamped,
+//                  or out of the flow) to the surface before the stage; 0 where it stays
+//   worst triangle the smallest triangle quality of the surface handed on (meshes/mesh_quality.h)
+//   min scaled Jacobian of the volume mesh handed on
+// and between each pair that completed, the two-sided sampled Hausdorff distance of their
+// worn surfaces (meshes::one_sided_distance both ways): how far the evolutions disagree.
+// An evolution that gives up (the explicit recession where it still folds at its smallest
+// increment) is reported with its message, not as a failure of the benchmark.
+#include "coupling/app/bench_evolution.h"
+
+#include "coupling/output/text_format.h"
+#include "coupling/output/worn_stage_file.h"
+#include "fem/fem_parameters.h"
+#include "fem/worn_sample.h"
+#include "meshes/atomic_file.h"
+#include "meshes/mesh_quality.h"
+#include "meshes/sample_generator.h"
+#include "meshes/stopwatch.h"
+#include "meshes/surface_locator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <optional>
+#include <ostream>
+#include <stdexcept>
+#include <thread>
+
+namespace wear::coupling {
+
+namespace {
+
+struct BenchEvolutionArguments {
+  std::string state;                  ///< a worn stage file, or empty: the generated sample
+  double scale = 1;                   ///< [-] on the state's removed volume
+  meshes::SampleGeometry sample;      ///< the generated sample (convex unless --sample plain)
+  meshes::SampleGeometry state_sizes; ///< remesh sizes of the state (the wear-out case's)
+  double depth = 20e-6;               ///< [m] the generated stage's depth on a flat top
+  std::vector<std::string> evolutions{"explicit only", "explicit then implicit", "implicit"};
+  std::string directory = "output/bench-evolution";
+};
+
+double positive(const std::string& option, const std::string& value, double upper) {
+  double x = 0;
+  try {
+    x = std::stod(value);
+  } catch (const std::exception&) {
+    throw std::invalid_argument("wearsim bench evolution: " + option + " '" + value +
+                                "' is not a number");
+  }
+  if (!(x > 0 && x < upper))
+    throw std::invalid_argument("wearsim bench evolution: " + option + " must lie in (0, " +
+                                format("%g", upper) + ")");
+  return x;
+}
+
+BenchEvolutionArguments bench_evolution_arguments(const std::vector<std::string>& args) {
+  BenchEvolutionArguments a;
+  a.state_sizes.mesh_size = 0.003; // cases/wear-out: the stage-24 file's sizes
+  a.state_sizes.mesh_size_bottom = 0.005;
+  a.state_sizes.curvature_refinement = false;
+  a.sample.mesh_size = 0.002; // cases/quick's wear-face mesh
+  for (std::size_t k = 0; k < args.size(); k += 2) {
+    if (k + 1 >= args.size())
+      throw std::invalid_argument("wearsim bench evolution: option " + args[k] + " needs a value");
+    const std::string &f = args[k], &v = args[k + 1];
+    if (f == "--state")
+      a.state = v;
+    else if (f == "--scale")
+      a.scale = positive(f, v, 100);
+    else if (f == "--sample") {
+      if (v != "convex" && v != "plain")
+        throw std::invalid_argument("wearsim bench evolution: --sample is convex or plain");
+      a.sample.convex = v == "convex";
+    } else if (f == "--mesh-size")
+      a.sample.mesh_size = a.state_sizes.mesh_size = positive(f, v, 0.01);
+    else if (f == "--depth")
+      a.depth = positive(f, v, 0.005);
+    else if (f == "--evolutions") {
+      a.evolutions.clear();
+      for (std::size_t b = 0; b <= v.size();) {
+        const std::size_t e = std::min(v.find(',', b), v.size());
+        std::string name = v.substr(b, e - b);
+        std::replace(name.begin(), name.end(), '-', ' ');
+        try {
+          fem::surface_evolution(name);
+        } catch (const std::invalid_argument& e) {
+          throw std::invalid_argument("wearsim bench evolution: --evolutions: " +
+                                      std::string(e.what()));
+        }
+        a.evolutions.push_back(name);
+        b = e + 1;
+      }
+    } else if (f == "--output")
+      a.directory = v;
+    else
+      throw std::invalid_argument("wearsim bench evolution: unknown option '" + f + "'");
+  }
+  return a;
+}
+
+/// One worn sample and its stage, as every evolution starts from it.
+struct Workload {
+  fem::WornSampleState state;
+  std::vector<double> removed;  ///< [m^3] per face of state.surface
+  meshes::SampleGeometry sizes; ///< of the remeshes
+  std::string description;
+};
+
+Workload state_workload(const BenchEvolutionArguments& a) {
+  WornStage s = read_worn_stage(a.state);
+  Workload w{std::move(s.state), std::move(s.removed_volume), a.state_sizes, {}};
+  for (double& v : w.removed)
+    v *= a.scale;
+  w.description = "worn stage '" + a.state + "' x " + format("%g", a.scale);
+  return w;
+}
+
+Workload sample_workload(const BenchEvolutionArguments& a) {
+  const std::string msh = a.directory + "/unworn.msh";
+  const auto generated = meshes::generate_sample(a.sample, msh);
+  const fem::FemParameters defaults;
+  fem::WornSample unworn(msh, generated.surface,
+                         fem::worn_sample_parameters(defaults, a.sample, a.directory));
+  Workload w{unworn.state(), {}, a.sample, {}};
+  const auto& s = w.state.surface;
+  const auto area = meshes::face_areas(s);
+  const auto normal = meshes::face_normals(s);
+  w.removed.assign(s.n_faces(), 0.0);
+  for (std::size_t f = 0; f < s.n_faces(); ++f)
+    if (s.face_wears(f))
+      w.removed[f] = a.depth * normal[f].z * normal[f].z * area[f];
+  w.description =
+      std::string(a.sample.convex ? "convex" : "plain") + " sample, " +
+      format("%g mm mesh, %g um x n_z^2 a face", a.sample.mesh_size * 1e3, a.depth * 1e6);
+  return w;
+}
+
+struct Outcome {
+  std::string evolution, error;
+  double seconds = 0;
+  fem::WearStageReport report;
+  std::optional<meshes::SurfaceMesh> surface; ///< handed on, when the stage completed
+  double volume_error = 0, unworn_offset = 0, worst_triangle = 0;
+};
+
+Outcome run_evolution(const Workload& w, const std::string& name, const std::string& dir) {
+  Outcome o;
+  o.evolution = name;
+  fem::FemParameters fp;
+  fp.surface_evolution = name; // worn_sample_parameters() sets the evolution from its name
+  std::string sub = name;
+  std::replace(sub.begin(), sub.end(), ' ', '-');
+  meshes::ensure_directory(dir + "/" + sub);
+  fem::WornSample sample(w.state, fem::worn_sample_parameters(fp, w.sizes, dir + "/" + sub));
+  meshes::FaceField<double> removed("removed volume", "m^3", meshes::Extensivity::extensive,
+                                    sample.surface());
+  removed.values() = w.removed;
+  const meshes::Stopwatch clock;
+  try {
+    o.report = sample.apply_wear(removed);
+  } catch (const std::exception& e) {
+    o.seconds = clock.seconds();
+    o.error = e.what();
+    return o;
+  }
+  o.seconds = clock.seconds();
+  const auto& r = o.report;
+  o.volume_error = std::abs(r.volume_change - (r.removed_volume - r.worn_through_volume)) /
+                   std::max(r.removed_volume, 1e-300);
+  const meshes::SurfaceLocator before(w.state.surface);
+  const auto& s = sample.surface();
+  const auto centroid = meshes::face_centroids(s);
+  for (std::size_t f = 0; f < s.n_faces(); ++f)
+    if (!s.face_wears(f))
+      o.unworn_offset = std::max(o.unworn_offset, before.nearest(centroid[f]).distance);
+  o.worst_triangle = meshes::min_triangle_quality(s);
+  o.surface = s;
+  return o;
+}
+
+void report(const Workload& w, const std::vector<Outcome>& outcomes, std::ostream& out) {
+  double asked = 0;
+  for (const double v : w.removed)
+    asked += v;
+  out << "workload: " << w.description << ": " << w.state.surface.n_faces() << " faces, "
+      << w.state.tetrahedra.size() / 4 << " tetrahedra, " << format("%.2f", asked * 1e9)
+      << " mm^3 asked\n";
+  out << format("%-24s %9s %5s %7s %8s %9s %11s %10s %9s %8s\n", "evolution", "time [s]", "incr",
+                "remesh", "implicit", "implicit", "volume", "unworn", "worst", "min");
+  out << format("%-24s %9s %5s %7s %8s %9s %11s %10s %9s %8s\n", "", "", "", "(1st)", "steps",
+                "[s]", "error", "off [mm]", "triangle", "Jacobian");
+  for (const auto& o : outcomes) {
+    if (!o.surface) {
+      out << format("%-24s %9.1f  gave up: %s\n", o.evolution.c_str(), o.seconds, o.error.c_str());
+      continue;
+    }
+    const auto& r = o.report;
+    out << format("%-24s %9.1f %5d %3d (%d) %8d %9.1f %11.2e %10.4f %9.4f %8.4f\n",
+                  o.evolution.c_str(), o.seconds, r.increments, r.n_remeshes,
+                  r.n_first_attempt_remeshes, r.n_implicit, r.implicit_seconds, o.volume_error,
+                  o.unworn_offset * 1e3, o.worst_triangle, r.quality.min_scaled_jacobian);
+  }
+  for (std::size_t i = 0; i < outcomes.size(); ++i)
+    for (std::size_t j = i + 1; j < outcomes.size(); ++j)
+      if (outcomes[i].surface && outcomes[j].surface) {
+        const double d =
+            std::max(meshes::one_sided_distance(*outcomes[i].surface, *outcomes[j].surface),
+                     meshes::one_sided_distance(*outcomes[j].surface, *outcomes[i].surface));
+        out << format("surfaces of '%s' and '%s' apart by at most %.4f mm\n",
+                      outcomes[i].evolution.c_str(), outcomes[j].evolution.c_str(), d * 1e3);
+      }
+}
+
+} // namespace
+
+int run_bench_evolution(const std::vector<std::string>& args, std::ostream& out) {
+  const BenchEvolutionArguments a = bench_evolution_arguments(args);
+  meshes::ensure_directory(a.directory);
+  out << "machine: " << std::thread::hardware_concurrency() << " hardware threads\n";
+  const Workload w = a.state.empty() ? sample_workload(a) : state_workload(a);
+  std::vector<Outcome> outcomes;
+  for (const auto& name : a.evolutions) {
+    outcomes.push_back(run_evolution(w, name, a.directory));
+    out << "  " << name << ": " << format("%.1f s", outcomes.back().seconds)
+        << (outcomes.back().surface ? "" : ", gave up") << std::endl;
+  }
+  report(w, outcomes, out);
+  return 0;
+}
+
+} // namespace wear::coupling
