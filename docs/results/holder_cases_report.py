@@ -1,32 +1,34 @@
 #!/usr/bin/python3
-"""The wear-out and stress cases in the holder (issue 32, item 6), reported from their runs' summaries.
+"""The wear-out and stress cases in the holder, reported from their runs' summaries.
 
 Usage: /usr/bin/python3 docs/results/holder_cases_report.py [--root DIR] [--out DIR]
            [--engine VERSION] [--check]
 
---root    a folder holding the three summaries stress-plain, stress-convex and
-          wear-out-convex (default: each beside its case, cases/stress/results/stress-plain,
-          cases/stress/results/stress-convex and, for the wear-out run of the reference
-          study's engine, cases/wear-out/results/wear-out-convex-b13327c60d5d)
+--root    a folder holding the summaries stress-plain, stress-convex, wear-out-convex and
+          wear-out-plain (default: each beside its case, cases/<case>/results/<run>)
 --out     where holder-cases.md and its plots go (default docs/results)
---engine  the engine version every run must name (default cases/reference-study/ENGINE, the
-          reference study's engine, so that these results sit beside the study's)
+--engine  the engine version every run must name (default: each run its own study's, the
+          ENGINE file beside its case: cases/reference-study/ENGINE for the stress pair, so
+          that they sit beside the reference study's results, cases/wear-out/ENGINE for the
+          wear-out pair)
 --check   only read and check the summaries; print what would be reported, write nothing
 
 A summary folder is what docs/results/run_summary.py writes from a run folder
 (cases/reference-study/run.sh does after every call); its stages.csv, parameters.prm,
-elements.csv and ending.txt are read, nothing else. A run missing is listed as not run; a run
-of another engine version, or one that names none, is refused, as is a root with none of the
-three runs. A run still in progress is reported as far as it got (its stages done of those
-planned), and how it ended is the summary's ending.txt, from the log run.sh writes beside its
-run folder.
+elements.csv, part_life.csv and ending.txt are read, nothing else. A run missing is listed as
+not run; a run of another engine version than its study's, or one that names none, is refused,
+as is a root with none of the runs. A run still in progress is reported as far as it got (its
+stages done of those planned), and how it ended is the summary's ending.txt, from the log
+run.sh writes beside its run folder.
 
 A staged stage stands for (revolutions) x (amplification) x 28 h of the laboratory test
 (docs/wear-tester.md); `dem-only` stages wear nothing and stand for no hours. The stage's
 DEM wear (`dem_wear_volume_m3`, Archard alone, one revolution) and its applied volume
 (`applied_volume_m3`: amplified and, with the stress-informed law on, scaled by
 1 + c (sigma_vM / sigma_ref)^m per face) are told apart, so that the law's effect on the
-convex/plain comparison shows as the difference of the two ratios.
+convex/plain comparison shows as the difference of the two ratios. The wear-out pair's life
+(elements standing, element volume left, the hours at which half of it is gone) and its
+convex/plain ratio at equal hours are computed in wear_out_life.py.
 """
 import os
 import sys
@@ -34,36 +36,43 @@ import sys
 import matplotlib
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from reference_study_report import (HOURS_PER_REV, Run, fail, fmt, has_revolution, parse_args,  # noqa: E402
+from reference_study_report import (Run, fail, fmt, has_revolution, parse_args,  # noqa: E402
                                     prm_settings, write_atomic)
+from wear_out_life import Life, cumulative_ratio, hours_at_fraction, interpolate, rate_ratio, staged  # noqa: E402
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 PROG = os.path.basename(sys.argv[0])
+REPO = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+# Each run: its case file and the ENGINE file of its study (the one beside the case file).
 NAMES = {"stress-plain": "cases/stress/plain.prm", "stress-convex": "cases/stress/convex.prm",
-         "wear-out-convex": "cases/wear-out/convex.prm"}
+         "wear-out-convex": "cases/wear-out/convex.prm", "wear-out-plain": "cases/wear-out/plain.prm",
+         "wear-out-convex-fine": "cases/wear-out/convex-fine.prm",
+         "wear-out-convex-a10": "cases/wear-out/convex-a10.prm"}
+STUDY_ENGINE = {n: ("cases/wear-out/ENGINE" if n.startswith("wear-out") else "cases/reference-study/ENGINE")
+                for n in NAMES}
+# The convergence of the pattern's life: the wear-out's convex run (mesh size h, amplification
+# A) beside the same at h/2 and at A/2.
+CONVERGENCE = (("wear-out-convex", "h, A"), ("wear-out-convex-fine", "h/2, A"), ("wear-out-convex-a10", "h, A/2"))
 # Each run's summary beside its case file: cases/<case>/results/<run>.
-SUMMARIES = {n: os.path.join(os.path.dirname(prm), "results", n) for n, prm in NAMES.items()}
-# The wear-out run this report shows is the one the reference study's engine made; the
-# wear-out study's own runs (cases/wear-out/ENGINE) write their summaries beside it.
-SUMMARIES["wear-out-convex"] += "-b13327c60d5d"
+SUMMARIES = {n: os.path.join(REPO, os.path.dirname(prm), "results", n) for n, prm in NAMES.items()}
 
 
-def staged(run):
-    """The run's staged stages, each with the laboratory hours the stages up to it stand for."""
-    rows, hours = [], 0.0
-    for r in run.stages:
-        if r["scheme_name"] != "staged":
-            continue
-        hours += (r["last_revolution"] - r["first_revolution"] + 1) * r["amplification"] * HOURS_PER_REV
-        rows.append(dict(r, cumulative_hours=hours))
-    return rows
+def study_engines(engine):
+    """{run: the engine version it must name}: `engine` for all, or each its study's ENGINE file."""
+    if engine is not None:
+        return {n: engine for n in NAMES}
+    out = {}
+    for n, path in STUDY_ENGINE.items():
+        with open(os.path.join(REPO, path)) as f:
+            out[n] = f.read().strip()
+    return out
 
 
-def load(root, engine):
+def load(root, engines):
     """The runs found ({name: Run}, in root or, root None, beside their case files) and those
-    not found; stops when none is found or one names another engine."""
+    not found; stops when none is found or one names another engine than its study's."""
     runs, missing = {}, []
     for name in NAMES:
         path = os.path.join(root, name) if root else SUMMARIES[name]
@@ -74,11 +83,11 @@ def load(root, engine):
     if not runs:
         fail(f"none of the runs {', '.join(NAMES)} is in '{root or ', '.join(SUMMARIES.values())}' "
              f"(bash cases/reference-study/run.sh {' '.join(NAMES.values())})")
-    odd = {n: r.engine for n, r in runs.items() if r.engine != engine}
+    odd = {n: r.engine for n, r in runs.items() if r.engine != engines[n]}
     if odd:
-        fail("runs of another engine version than " + engine + " ("
-             + ", ".join(f"{n}: {e}" for n, e in odd.items()) + "); re-run them with the study's engine "
-             "(cases/reference-study/run.sh)")
+        fail("runs of another engine version than their study's ("
+             + ", ".join(f"{n}: {e}, not {engines[n]}" for n, e in odd.items())
+             + "); re-run them with the study's engine (cases/reference-study/run.sh)")
     return runs, missing
 
 
@@ -98,10 +107,18 @@ def mpa(r, key):
     return fmt(r[key] / 1e6, 3) if r[key] > 0 else "-"
 
 
+def save_figure(fig, out, name):
+    tmp = os.path.join(out, "." + name + ".tmp")
+    fig.savefig(tmp, dpi=120, format="png")
+    plt.close(fig)
+    os.replace(tmp, os.path.join(out, name))
+
+
 def plot(runs, out):
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4.0))
     styles = {"stress-plain": ("tab:blue", "o-"), "stress-convex": ("tab:orange", "o-"),
-              "wear-out-convex": ("tab:green", "s-")}
+              "wear-out-convex": ("tab:green", "s-"), "wear-out-plain": ("tab:purple", "s-"),
+              "wear-out-convex-fine": ("tab:olive", "^:"), "wear-out-convex-a10": ("tab:cyan", "v:")}
     for name, run in runs.items():
         rows = staged(run)
         if not rows:
@@ -119,37 +136,84 @@ def plot(runs, out):
     a2.set_ylabel("largest ball-averaged von Mises stress [MPa]")
     a2.legend(fontsize=8)
     fig.tight_layout()
-    tmp = os.path.join(out, ".holder_cases.png.tmp")
-    fig.savefig(tmp, dpi=120, format="png")
-    plt.close(fig)
-    os.replace(tmp, os.path.join(out, "holder_cases.png"))
+    save_figure(fig, out, "holder_cases.png")
+
+
+def plot_wear_out(runs, out):
+    """wear_out.png: the DEM wear of a revolution of both samples, their ratio at equal hours, and
+    the convex elements' volume left and elements standing, against the hours (with the
+    convergence runs' volume left)."""
+    C, P = runs.get("wear-out-convex"), runs.get("wear-out-plain")
+    fig, (a1, a2, a3) = plt.subplots(1, 3, figsize=(15, 4.0))
+    for run, colour, label in ((C, "tab:green", "convex"), (P, "tab:purple", "plain")):
+        if run is None:
+            continue
+        rows = staged(run)
+        a1.plot([r["start_hours"] for r in rows], [r["dem_wear_volume_m3"] * 1e9 for r in rows], "o-",
+                color=colour, ms=3, label=label)
+    a1.set_xlabel("laboratory hours before the stage [h]")
+    a1.set_ylabel("DEM wear of one revolution [mm$^3$]")
+    a1.legend(fontsize=8)
+    if C is not None and P is not None:
+        ratios = rate_ratio(C, P)
+        a2.plot([r[1] for r in ratios], [r[4] for r in ratios], "o-", color="tab:red", ms=3,
+                label="wear of a revolution")
+        cum = cumulative_ratio(C, P)
+        a2.plot([c[0] for c in cum], [c[3] for c in cum], "s--", color="tab:gray", ms=3,
+                label="cumulative applied wear")
+        a2.legend(fontsize=8)
+    a2.set_xlabel("laboratory hours [h]")
+    a2.set_ylabel("convex / plain at equal hours")
+    life = Life(C) if C is not None else None
+    if life:
+        f = life.element_fraction()
+        a3.plot([h for h, _ in f], [100 * x for _, x in f], "o-", color="tab:green", ms=3, label="h, A")
+        for (name, what), style in zip(CONVERGENCE[1:], (("tab:olive", "^:"), ("tab:cyan", "v:"))):
+            other = Life(runs[name]) if name in runs else None
+            if other:
+                g = other.element_fraction()
+                a3.plot([h for h, _ in g], [100 * x for _, x in g], style[1], color=style[0], ms=3, label=what)
+        a3.axhline(50, color="0.7", lw=0.8)
+        a3.legend(fontsize=8, loc="lower left")
+        a3.set_ylabel("element volume left [%]", color="tab:green")
+        b3 = a3.twinx()
+        b3.step([life.hours[k] for k in life.stages], [life.n_standing(k) for k in life.stages], where="post",
+                 color="tab:brown")
+        b3.set_ylabel(f"elements standing (of {life.n_elements()})", color="tab:brown")
+        b3.set_ylim(0, life.n_elements() + 1)
+        a3.set_ylim(0, 105)
+    a3.set_xlabel("laboratory hours after the stage [h]")
+    fig.tight_layout()
+    save_figure(fig, out, "wear_out.png")
 
 
 def ending(run):
     """How the run ended: finished, or as run.sh's last call left it (Run.last_call_ending),
-    a SIGTERM's checkpoint being where run.sh continues it."""
+    a SIGTERM's checkpoint being where run.sh continues it, or worn out (its end criterion met)."""
+    last = run.last_call_ending()
+    if last is not None and last.startswith("worn out at"):
+        return last
     if run.planned_stages("staged") == len(staged(run)):
         return "finished"
     if not run.has_log():
         return "in progress or stopped (no log beside the run folder)"
-    last = run.last_call_ending()
     if last is None:
         return "in progress, or killed without a message"
     return last + (", continued from its checkpoint by run.sh" if last.startswith("stopped by SIGTERM") else "")
 
 
 def run_table(runs, missing):
-    w = ["| run | case file | schedule | staged stages done | hours they stand for | wall time [h] | how it ended |",
-         "|---|---|---|---|---|---|---|"]
+    w = ["| run | case file | engine | schedule | staged stages done | hours they stand for | wall time [h] | how it ended |",
+         "|---|---|---|---|---|---|---|---|"]
     for name, r in runs.items():
         rows = staged(r)
         plan = r.planned_stages("staged")
         done = f"{len(rows)} of {plan}" if plan else str(len(rows))
         hours = rows[-1]["cumulative_hours"] if rows else 0.0
-        w.append(f"| {name} | `{r.case}` | {r.planned} | {done} | {hours:.0f} | {r.wall_hours():.1f} | {ending(r)} |")
+        w.append(f"| {name} | `{r.case}` | {r.engine} | {r.planned} | {done} | {hours:.0f} | {r.wall_hours():.1f} | {ending(r)} |")
     w.append("")
     if missing:
-        w.append("**Not run** with this engine: " + ", ".join(missing) + ".\n")
+        w.append("**Not run** with its study's engine: " + ", ".join(missing) + ".\n")
     return w
 
 
@@ -198,30 +262,131 @@ def stress_section(runs):
 
 
 def wear_out_section(runs):
-    W = runs.get("wear-out-convex")
-    w = ["## Wear-out of the convex sample (`cases/wear-out`)\n"]
-    if not W:
+    C, P = runs.get("wear-out-convex"), runs.get("wear-out-plain")
+    w = ["## Wear-out of the convex sample, beside the plain one (`cases/wear-out`)\n"]
+    if not C:
         w.append("Not run yet.\n")
         return w
-    rows = staged(W)
+    rows = staged(C)
     cols = [("stage", lambda r: f"{int(r['stage'])}"),
             ("amplification", lambda r: f"{r['amplification']:.2f}"),
             ("hours", lambda r: f"{r['cumulative_hours']:.0f}"),
             ("applied [mm^3]", lambda r: fmt(mm3(r, "applied_volume_m3"), 1)),
             ("cumulative [mm^3]", lambda r: fmt(mm3(r, "cumulative_applied_m3"), 1)),
             ("deepest recession [mm]", lambda r: fmt(r["max_depth_m"] * 1e3, 3)),
-            ("remeshes", lambda r: f"{int(r['remeshes'])}"),
+            ("remeshes (first attempt)",
+             lambda r: f"{int(r['remeshes'])} ({int(r.get('first_attempt_remeshes', r['remeshes']))})"),
             ("min scaled Jacobian", lambda r: fmt(r["min_scaled_jacobian"], 3)),
             ("von Mises [MPa]", lambda r: mpa(r, "max_von_mises_ball_Pa")),
             ("worn-through faces", lambda r: f"{int(r['worn_through_faces'])}")]
+    w.append("The convex run's staged stages (hours: after the stage):\n")
     w += stage_table(rows, cols)
     w.append("")
     if rows:
         last = rows[-1]
+        remeshes = sum(int(r["remeshes"]) for r in rows)
+        first = sum(int(r.get("first_attempt_remeshes", r["remeshes"])) for r in rows)
         w.append(f"After {len(rows)} staged stages ({last['cumulative_hours']:.0f} h of the laboratory test) "
                  f"the sample has lost {last['cumulative_applied_m3'] * 1e9:.1f} mm^3; the deepest recession of "
-                 f"the last stage was {last['max_depth_m'] * 1e3:.3f} mm. The run: {ending(W)}.\n")
-    w += heights_section(W)
+                 f"the last stage was {last['max_depth_m'] * 1e3:.3f} mm; "
+                 + (f"{first} of its {remeshes} remeshes met the quality floor at the first attempt "
+                    f"({100.0 * first / remeshes:.0f} %). " if remeshes else "no stage remeshed. ")
+                 + f"The run: {ending(C)}.\n")
+    w += life_section(C, P)
+    w += ratio_section(C, P)
+    w += heights_section(C)
+    w += convergence_section(runs)
+    return w
+
+
+def convergence_section(runs):
+    """The hours at which half the element volume is gone, at h and A, h/2 and A/2."""
+    w = ["**Convergence of the pattern's life**: the hours at which half the convex elements' volume is "
+         "gone (`part_life.csv`, linear between stages), with the sample mesh halved "
+         "(`convex-fine.prm`) and the amplification halved (`convex-a10.prm`); each differs from "
+         "the wear-out run by the percentage given.\n",
+         "| run | mesh size, amplification | sample mesh [mm] | amplification | staged stages | "
+         "half the element volume gone at [h] | against h, A |", "|---|---|---|---|---|---|---|"]
+    base = None
+    for name, what in CONVERGENCE:
+        run = runs.get(name)
+        if run is None:
+            w.append(f"| {name} | {what} | | | | not run | |")
+            continue
+        life = Life(run)
+        half = hours_at_fraction(life.element_fraction(), 0.5) if life else None
+        if name == "wear-out-convex":
+            base = half
+        left = (f"not yet ({100 * life.element_volume(life.stages[-1]) / life.element_volume(life.stages[0]):.1f} % "
+                f"left after {life.hours[life.stages[-1]]:.0f} h)" if life else "no part life")
+        diff = (f"{100 * (half / base - 1):+.1f} %" if half is not None and base and name != "wear-out-convex"
+                else "")
+        w.append(f"| {name} | {what} | {float(run.params.get('Mesh size', 'nan')) * 1e3:g} | "
+                 f"{run.params.get('Amplification', '?')} | {len(staged(run))} | "
+                 f"{f'{half:.0f}' if half is not None else left} | {diff} |")
+    w.append("")
+    return w
+
+
+def life_section(C, P):
+    """The convex elements' life per stage (part_life.csv), and the plain sample's thinnest point."""
+    life = Life(C)
+    if not life:
+        return ["The convex run records no part life (an engine older than `part_life.csv`).\n"]
+    v0, n0 = life.element_volume(life.stages[0]), life.n_elements()
+    w = [f"**The pattern's life** (`parts/sample/part_life.csv`): an element stands while its top is more than "
+         f"{life.vanish * 1e3:.2f} mm above its foot (the implicit recession's vanish height, also the end "
+         f"criterion `elements gone`); its volume is what lies above its foot, {v0 * 1e9:.0f} mm^3 for the "
+         f"{n0} unworn elements. The thinnest point is the part's lowest wear-face point above its clamped "
+         "bottom.\n",
+         "| stage | hours | elements standing | element volume left [mm^3] | left [%] | tallest / lowest element [mm] "
+         "| convex thinnest [mm] | plain thinnest at these hours [mm] |",
+         "|---|---|---|---|---|---|---|---|"]
+    plain = Life(P) if P is not None else None
+    for k in life.stages:
+        h = life.hours[k]
+        if h == 0 and k != life.stages[0] and life.hours.get(k - 1) == 0:
+            continue  # dem-only stages: nothing worn yet, the first row stands for them
+        heights = [e[0] * 1e3 for e in life.elements[k].values()]
+        thin = "-"
+        if plain:
+            xs = [plain.hours[j] for j in plain.stages]
+            t = interpolate(h, xs, [plain.part[j][0] for j in plain.stages])
+            thin = f"{t * 1e3:.2f}" if t is not None else "-"
+        ev = life.element_volume(k)
+        w.append(f"| {k} | {h:.0f} | {life.n_standing(k)} | {ev * 1e9:.0f} | {100 * ev / v0:.1f} | "
+                 f"{max(heights):.2f} / {min(heights):.2f} | {life.part[k][0] * 1e3:.2f} | {thin} |")
+    w.append("")
+    half = hours_at_fraction(life.element_fraction(), 0.5)
+    w.append("**Half the element volume gone** at "
+             + (f"{half:.0f} h (linear between the two stages around it).\n" if half is not None else
+                f"(not yet: {100 * life.element_volume(life.stages[-1]) / v0:.1f} % left after "
+                f"{life.hours[life.stages[-1]]:.0f} h).\n"))
+    return w
+
+
+def ratio_section(C, P):
+    """The convex/plain ratio at equal hours, of the wear of a revolution and cumulative."""
+    w = ["**Convex / plain at equal hours** (the plain run interpolated in hours at the convex run's, "
+         "nothing extrapolated; `wear_out.png`):\n", "![wear-out life and ratio](wear_out.png)\n"]
+    if P is None:
+        w.append("Not reported: the plain run is not run yet.\n")
+        return w
+    ratios = rate_ratio(C, P)
+    if not ratios:
+        w.append("Not reported yet: the plain run covers none of the convex run's staged stages.\n")
+        return w
+    w += ["| convex stage | hours before it | DEM wear of a revolution, convex [mm^3] | plain [mm^3] | convex / plain |",
+          "|---|---|---|---|---|"]
+    w += [f"| {k} | {h:.0f} | {c * 1e9:.2f} | {p * 1e9:.2f} | {r:.3f} |" for k, h, c, p, r in ratios]
+    w.append("")
+    cum = cumulative_ratio(C, P)
+    if cum:
+        h, c, p, r = cum[-1]
+        w.append(f"Over the first {h:.0f} h the convex sample lost {c * 1e9:.0f} mm^3 and the plain one "
+                 f"{p * 1e9:.0f} mm^3: **convex / plain {r:.3f}** of the wear applied to the geometry "
+                 f"(the wear of a revolution: {ratios[0][4]:.3f} on the unworn samples, {ratios[-1][4]:.3f} "
+                 f"at {ratios[-1][1]:.0f} h).\n")
     return w
 
 
@@ -258,12 +423,23 @@ def heights_section(run):
     return w
 
 
-def report(runs, missing, engine):
+def engines_line(runs):
+    """Which engine made which runs: the stress pair the reference study's, the wear-out pair its own."""
+    by = {}
+    for n, r in runs.items():
+        by.setdefault(r.engine, []).append(n)
+    return ("**Engine versions** " + "; ".join(f"{e}: {', '.join(ns)}" for e, ns in by.items())
+            + " (each run its study's, the ENGINE file beside its case: the stress pair the reference "
+            "study's, `cases/reference-study/ENGINE`, so that it sits beside the study's results; the "
+            "wear-out pair its own, `cases/wear-out/ENGINE`, which has the implicit recession and the "
+            "part's life).")
+
+
+def report(runs, missing):
     w = ["# The wear-out and stress cases in the holder\n",
-         "Generated by `/usr/bin/python3 docs/results/holder_cases_report.py` from the run folders; "
+         "Generated by `/usr/bin/python3 docs/results/holder_cases_report.py` from the run summaries; "
          "do not edit by hand.\n",
-         f"**Engine version** {engine} (every run below; the reference study's, "
-         "`cases/reference-study/ENGINE`). The cases: the study's samples in their holder in the "
+         engines_line(runs) + " The cases: the study's samples in their holder in the "
          "150-degree tester at s = 4 with a 3 mm sample mesh (`cases/stress/README.md`, "
          "`cases/wear-out/README.md`).\n"]
     w += run_table(runs, missing)
@@ -277,20 +453,18 @@ def report(runs, missing, engine):
 def main(argv):
     args, check_only = parse_args(argv, {"--root": None, "--out": "docs/results", "--engine": None},
                                   __doc__.splitlines()[2])
-    engine = args["--engine"]
-    if engine is None:
-        with open("cases/reference-study/ENGINE") as f:
-            engine = f.read().strip()
-    runs, missing = load(args["--root"], engine)
+    runs, missing = load(args["--root"], study_engines(args["--engine"]))
+    engines = ", ".join(sorted({r.engine for r in runs.values()}))
     if check_only:
         print(f"{PROG}: {len(runs)} runs ({', '.join(f'{n}: {len(staged(r))} staged' for n, r in runs.items())}), "
-              f"engine {engine}; not run: {', '.join(missing) or 'none'}")
+              f"engine {engines}; not run: {', '.join(missing) or 'none'}")
         return
     out = args["--out"]
     os.makedirs(out, exist_ok=True)
     plot(runs, out)
-    write_atomic(os.path.join(out, "holder-cases.md"), report(runs, missing, engine))
-    print(f"{PROG}: {os.path.join(out, 'holder-cases.md')} from {len(runs)} runs, engine {engine}")
+    plot_wear_out(runs, out)
+    write_atomic(os.path.join(out, "holder-cases.md"), report(runs, missing))
+    print(f"{PROG}: {os.path.join(out, 'holder-cases.md')} from {len(runs)} runs, engine {engines}")
 
 
 if __name__ == "__main__":

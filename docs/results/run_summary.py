@@ -20,7 +20,8 @@ folder is replaced by one that holds:
                    the last surface (the profile plot)
   elements.csv     each element's highest and lowest z on the stage-0 and the last surface
                    (the element heights)
-  ending.txt       how run.sh's last call on the run ended, from the log (no log: no file)
+  ending.txt       how run.sh's last call on the run ended, from the log (no log: no file):
+                   stopped by SIGTERM or an error, worn out, or nothing said
 
 A run of the 1 mm convex sample makes about 0.55 MB (0.35 MB of it the map, the same file for
 every run of that mesh), a plain one 30 to 50 kB, so that finished runs are kept in the
@@ -247,8 +248,9 @@ def surface_parts(run, old):
 def last_call_ending(log, stages):
     """How the last call of run.sh on the run ended, from its part of the log (from the last
     line starting "=== "): "stopped by SIGTERM in stage k of n", "stopped by an error in stage
-    k: <what>" (k the stage after the last in stages.csv, <what> the error's first clause), or
-    "" when it tells neither (finished, still running, or killed without a word)."""
+    k: <what>" (k the stage after the last in stages.csv, <what> the error's first clause),
+    "worn out at N h after stage k: <why>" (the end criterion Coupling/Worn out when met), or
+    "" when it tells none of them (finished, still running, or killed without a word)."""
     with open(log, errors="replace") as f:
         lines = [line.strip() for line in f]
     starts = [k for k, line in enumerate(lines) if line.startswith("=== ")]
@@ -257,6 +259,8 @@ def last_call_ending(log, stages):
     for line in reversed(last):
         if line.startswith("stopped by SIGTERM in stage"):
             return line.split(" (")[0].split(" at t = ")[0]  # older and current wording
+        if line.startswith("part '") and "' worn out at " in line:
+            return "worn out at " + line.split("' worn out at ", 1)[1].split(" (Coupling/")[0].split("; ")[0]
         if "error:" in line:
             what = line.split("error:", 1)[1].split("; ")[0].strip()
             return f"stopped by an error in stage {stage}: {what}"
