@@ -300,8 +300,8 @@ std::vector<int> old_patches(const SurfaceMesh& s, double feature_angle_deg) {
 }
 
 // The edges between two patches of one label (faces labelled by patch, `label_of_patch`) where
-// the front has not passed at any vertex of either face: the old sharp edges, chamfered by
-// the grid, which the isotropic remeshing keeps as curves.
+// the front has not passed at any vertex of either face, or whose label is clamped or held: the
+// old sharp edges, chamfered by the grid, which the isotropic remeshing keeps as curves.
 std::vector<std::pair<std::uint32_t, std::uint32_t>>
 untouched_patch_boundaries(const SurfaceMesh& m, const std::map<int, int>& label_of_patch,
                            const LevelSetGrid& phi, const LevelSetGrid& psi) {
@@ -313,10 +313,16 @@ untouched_patch_boundaries(const SurfaceMesh& m, const std::map<int, int>& label
     if (faces.size() != 2 || m.face_labels[faces[0]] == m.face_labels[faces[1]] ||
         label_of_patch.at(m.face_labels[faces[0]]) != label_of_patch.at(m.face_labels[faces[1]]))
       continue;
-    bool untouched = true;
-    for (const auto f : faces)
-      for (const auto v : m.triangles[f])
-        untouched &= !passed[v];
+    // Clamped and held faces never move, nor do the sharp edges between two of their patches
+    // (a corner of the holder's sides), wherever the front passed above them.
+    const FaceRole role = m.roles.of(label_of_patch.at(m.face_labels[faces[0]]));
+    bool untouched = role == FaceRole::clamped || role == FaceRole::held;
+    if (!untouched) {
+      untouched = true;
+      for (const auto f : faces)
+        for (const auto v : m.triangles[f])
+          untouched &= !passed[v];
+    }
     if (untouched)
       curves.push_back(edge);
   }

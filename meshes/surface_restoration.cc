@@ -80,8 +80,9 @@ double chord_restoring_offset(SurfaceMesh& m, const SurfaceMesh& reference,
   return offset;
 }
 
-// Where the front has not reached (every corner of a vertex's grid cell has psi = phi), the
-// new surface stands for the old one, and the grid only cut its edges into chamfers and its
+// Where the front has not reached (every corner of a vertex's grid cell has psi = phi), and on
+// the edges and corners between clamped and held patches everywhere, the new surface stands
+// for the old one, and the grid only cut its edges into chamfers and its
 // curved faces into chords: a vertex there goes back onto the old surface, onto its own patch
 // (faces of one patch only), onto the old edges between its two patches (a vertex on a patch
 // boundary), or onto the old vertex its three or more patches share (a corner). Moves longer
@@ -112,15 +113,27 @@ std::vector<char> snap_untouched_vertices(const SurfaceMesh& old, const std::vec
       if (std::find(list.begin(), list.end(), patch_of_face[f]) == list.end())
         list.push_back(patch_of_face[f]);
     }
+  std::vector<char> fixed_patch(old.n_faces(), 0); // by patch id (a face index)
+  for (std::size_t f = 0; f < old.n_faces(); ++f) {
+    const FaceRole role = old.face_role(f);
+    if (role == FaceRole::clamped || role == FaceRole::held)
+      fixed_patch[std::size_t(old_patch[f])] = 1;
+  }
   const double h = phi.spacing();
   std::vector<char> moved(fresh.n_vertices(), 0);
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::int64_t i = 0; i < std::int64_t(fresh.n_vertices()); ++i) {
     const auto v = std::size_t(i);
     Vec3& x = fresh.vertices[v];
-    if (front_passed(phi, psi, x))
-      continue;
     const auto& mine = patches[v];
+    // A vertex between fixed patches only (a corner of the holder's sides) goes back onto
+    // their old edge or corner wherever the front passed: fixed faces never move.
+    const bool between_fixed =
+        mine.size() >= 2 && std::all_of(mine.begin(), mine.end(), [&](int q) {
+          return fixed_patch[std::size_t(q)] != 0;
+        });
+    if (!between_fixed && front_passed(phi, psi, x))
+      continue;
     Vec3 target = x;
     double best = std::numeric_limits<double>::infinity();
     if (mine.size() == 1) {

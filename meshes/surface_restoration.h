@@ -12,7 +12,8 @@ namespace wear::meshes {
 /// Whether the front changed the part in the grid cell of x (a corner where psi != phi).
 bool front_passed(const LevelSetGrid& phi, const LevelSetGrid& psi, const Vec3& x);
 
-/// Vertices of `fresh` where the front has not passed go back onto the old surface `old`:
+/// Vertices of `fresh` where the front has not passed, and those between clamped and held
+/// patches only wherever it passed, go back onto the old surface `old`:
 /// onto their patch (`old_patch` per old face, `patch_of_face` per new face), onto the old
 /// edges between their two patches, or onto the old corner of their three or more; moves
 /// longer than the grid spacing are not made. Returns, per vertex, whether it was moved.

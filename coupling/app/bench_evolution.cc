@@ -156,6 +156,8 @@ struct Outcome {
   fem::WearStageReport report;
   std::optional<meshes::SurfaceMesh> surface; ///< handed on, when the stage completed
   double volume_error = 0, unworn_offset = 0, worst_triangle = 0;
+  meshes::Vec3 unworn_offset_at{0, 0, 0}; ///< [m] centroid of the unworn face farthest off
+  int unworn_offset_label = 0;
 };
 
 Outcome run_evolution(const Workload& w, const std::string& name, const std::string& dir) {
@@ -187,7 +189,11 @@ Outcome run_evolution(const Workload& w, const std::string& name, const std::str
   const auto centroid = meshes::face_centroids(s);
   for (std::size_t f = 0; f < s.n_faces(); ++f)
     if (!s.face_wears(f))
-      o.unworn_offset = std::max(o.unworn_offset, before.nearest(centroid[f]).distance);
+      if (const double d = before.nearest(centroid[f]).distance; d > o.unworn_offset) {
+        o.unworn_offset = d;
+        o.unworn_offset_at = centroid[f];
+        o.unworn_offset_label = s.face_labels[f];
+      }
   o.worst_triangle = meshes::min_triangle_quality(s);
   o.surface = s;
   return o;
@@ -215,6 +221,12 @@ void report(const Workload& w, const std::vector<Outcome>& outcomes, std::ostrea
                   r.n_first_attempt_remeshes, r.n_implicit, r.implicit_seconds, o.volume_error,
                   o.unworn_offset * 1e3, o.worst_triangle, r.quality.min_scaled_jacobian);
   }
+  for (const auto& o : outcomes)
+    if (o.surface && o.unworn_offset > 0)
+      out << format("'%s': the unworn face farthest off (%s) at (%.2f, %.2f, %.2f) mm\n",
+                    o.evolution.c_str(), meshes::label::name(o.unworn_offset_label).c_str(),
+                    o.unworn_offset_at.x * 1e3, o.unworn_offset_at.y * 1e3,
+                    o.unworn_offset_at.z * 1e3);
   for (std::size_t i = 0; i < outcomes.size(); ++i)
     for (std::size_t j = i + 1; j < outcomes.size(); ++j)
       if (outcomes[i].surface && outcomes[j].surface) {
