@@ -18,8 +18,12 @@ stage's amplification. 0.77 MB, gzip-compressed.
 
 usage: /usr/bin/python3 tests/data/wear-out/extract.py   (from the repository root; needs
 h5py, git and the history commit 7937c06)
+       /usr/bin/python3 tests/data/wear-out/extract.py <run folder> <stage> <engine> <out.h5>
+       the same from a run folder of the current layout (parts/sample/, the checkpoint after
+       that stage): stage15.h5 beside it from the coarse-grained wear-out's convex run
 """
 import io
+import os
 import subprocess
 import sys
 import tarfile
@@ -36,22 +40,41 @@ def member(tar, name):
     return io.BytesIO(tar.extractfile(name).read())
 
 
-def main():
+def from_archive():
+    """Stage 23 of the first wear-out run, from its archive in the repository's history."""
     blob = subprocess.run(["git", "show", f"{ARCHIVE_COMMIT}:{ARCHIVE}"], check=True,
                           capture_output=True).stdout
     with tarfile.open(fileobj=io.BytesIO(blob), mode="r:xz") as tar:
-        with h5py.File(member(tar, "./surface/stage_0023.h5"), "r") as s:
-            points = s["points"][:]
-            triangles = s["triangles"][:]
-            labels = s["cell/label"][:, 0]
-            removed = s["cell/stage_removed_volume"][:, 0]
-        with h5py.File(member(tar, "./checkpoint.h5"), "r") as c:
-            vertices = c["sample/vertices"][:]
-            tetrahedra = c["sample/tetrahedra"][:]
+        surface = h5py.File(member(tar, "./surface/stage_0023.h5"), "r")
+        checkpoint = h5py.File(member(tar, "./checkpoint.h5"), "r")
         stages = tar.extractfile("./stages.csv").read().decode().splitlines()
+        write(surface, checkpoint["sample"], stages, 23, "b13327c60d5d",
+              f"git show {ARCHIVE_COMMIT}:{ARCHIVE}, stage 23", OUT)
+
+
+def from_run(run, stage, engine, out):
+    """A stage of a run folder of the current engine (the sample's tables in parts/sample/,
+    its checkpoint after that stage)."""
+    part = os.path.join(run, "parts", "sample")
+    with open(os.path.join(part, "stages.csv")) as f:
+        stages = f.read().splitlines()
+    surface = h5py.File(os.path.join(part, "surface", f"stage_{stage:04d}.h5"), "r")
+    checkpoint = h5py.File(os.path.join(run, "checkpoint.h5"), "r")
+    write(surface, checkpoint["scene/part_0/sample"], stages, stage, engine,
+          f"{run}, stage {stage}", out)
+
+
+def write(surface, sample, stages, stage, engine, source, out):
+    """Writes the stage's surface (in volume-vertex numbers), volume mesh and removed volume."""
+    points = surface["points"][:]
+    triangles = surface["triangles"][:]
+    labels = surface["cell/label"][:, 0]
+    removed = surface["cell/stage_removed_volume"][:, 0]
+    vertices = sample["vertices"][:]
+    tetrahedra = sample["tetrahedra"][:]
     header = stages[0].split(",")
-    row = dict(zip(header, stages[23].split(",")))
-    assert row["stage"] == "23", row["stage"]
+    row = dict(zip(header, stages[stage].split(",")))
+    assert row["stage"] == str(stage), row["stage"]
     if not np.allclose(labels, np.round(labels)):
         sys.exit("extract.py: labels are not whole numbers")
     # The surface's vertices are volume vertices, the same doubles: the triangles are written
@@ -60,7 +83,7 @@ def main():
     to_volume = np.array([index.get(tuple(p), -1) for p in points])
     if (to_volume < 0).any():
         sys.exit("extract.py: a surface vertex is not a vertex of the volume mesh")
-    with h5py.File(OUT, "w") as f:
+    with h5py.File(out, "w") as f:
         opts = dict(compression="gzip", compression_opts=9, shuffle=True)
         f.create_dataset("vertices", data=vertices, **opts)
         f.create_dataset("tetrahedra", data=tetrahedra.astype(np.int32), **opts)
@@ -68,11 +91,20 @@ def main():
         f.create_dataset("labels", data=np.round(labels).astype(np.int32), **opts)
         f.create_dataset("removed_volume", data=removed, **opts)
         f.attrs["amplification"] = float(row["amplification"])
-        f.attrs["engine"] = "b13327c60d5d"
-        f.attrs["source"] = f"git show {ARCHIVE_COMMIT}:{ARCHIVE}, stage 23"
-    print(f"{OUT}: {len(vertices)} vertices, {len(tetrahedra)} tetrahedra, "
+        f.attrs["engine"] = engine
+        f.attrs["source"] = source
+    print(f"{out}: {len(vertices)} vertices, {len(tetrahedra)} tetrahedra, "
           f"{len(triangles)} surface faces, {removed.sum() * 1e9:.3f} mm^3 on "
           f"{int((removed > 0).sum())} faces, amplification {float(row['amplification'])}")
+
+
+def main():
+    if len(sys.argv) == 1:
+        from_archive()
+    elif len(sys.argv) == 5:
+        from_run(sys.argv[1], int(sys.argv[2]), sys.argv[3], sys.argv[4])
+    else:
+        sys.exit(__doc__)
 
 
 if __name__ == "__main__":
