@@ -280,17 +280,17 @@ WearStageReport WornSample::apply_wear(const meshes::FaceField<double>& removed)
     const Verdict verdict = judge_increment(s, inc, floor_z, split, p_);
     const bool gives_up =
         verdict.step == NextStep::folds || verdict.step == NextStep::missed_volume;
-    if (gives_up && p_.evolution == SurfaceEvolution::explicit_then_implicit) {
-      take_implicit(remaining, r);
+    if (gives_up && p_.evolution == SurfaceEvolution::explicit_then_implicit &&
+        try_implicit(remaining, r))
       break;
-    }
     if (verdict.step != NextStep::take) {
       retry_increment(verdict, inc, split, remaining.values(), r);
       continue;
     }
     split.spreadings = 0;
     --split.n_left;
-    take_increment(inc, remaining, r);
+    if (take_increment(inc, remaining, r))
+      break;
   }
   r.volume_change = volume_before - mesh_volume(*tria_);
   r.quality = volume_quality(*tria_);
@@ -328,24 +328,69 @@ void WornSample::retry_increment(const Verdict& verdict, const StageIncrement& i
   }
 }
 
-void WornSample::take_increment(const StageIncrement& inc, meshes::FaceField<double>& remaining,
+bool WornSample::take_increment(const StageIncrement& inc, meshes::FaceField<double>& remaining,
                                 WearStageReport& r) {
-  accumulate(inc.part, remaining.values());
   MotionReport motion;
   auto moved = move_mesh(*tria_, *map_, inc.displacement, &motion);
   r.motion_seconds += motion.seconds;
-  ++r.increments;
-  if (motion.quality.n_inverted > 0 ||
-      motion.quality.min_scaled_jacobian < p_.remesh_min_scaled_jacobian) {
-    // The moved triangulation is discarded: only its surface (valid, checked) is used.
-    remaining.follow(moved);
-    record_remesh(remesh_from(moved), r);
-    remaining = meshes::FaceTransfer(moved, surface()).apply(remaining);
-  } else {
+  const bool remeshes = motion.quality.n_inverted > 0 ||
+                        motion.quality.min_scaled_jacobian < p_.remesh_min_scaled_jacobian;
+  if (!remeshes) {
+    accumulate(inc.part, remaining.values());
+    ++r.increments;
     map_->follow(*tria_, std::move(moved));
     removed_.follow(surface());
     depth_.follow(surface());
     remaining.follow(surface());
+    return false;
+  }
+  // The moved triangulation is discarded: only its surface (valid, checked) is used. Its
+  // accumulated wear is taken back if every attempt to remesh it fails (the remesher throws
+  // before the sample changes), so that the implicit step can take the whole of what was
+  // left before this increment, from the surface before it.
+  const meshes::FaceField<double> removed_before = removed_, depth_before = depth_,
+                                  remaining_before = remaining;
+  accumulate(inc.part, remaining.values());
+  remaining.follow(moved);
+  try {
+    record_remesh(remesh_from(moved), r);
+  } catch (const std::exception& e) {
+    if (p_.evolution != SurfaceEvolution::explicit_then_implicit)
+      throw;
+    r.explicit_remesh_failures.push_back(e.what());
+    removed_ = removed_before;
+    depth_ = depth_before;
+    remaining = remaining_before;
+    try {
+      take_implicit(remaining, r);
+    } catch (const std::exception& implicit) {
+      throw std::runtime_error("the moved surface could not be remeshed (" + std::string(e.what()) +
+                               "), nor could the implicit recession take the rest of the stage (" +
+                               implicit.what() + ")");
+    }
+    return true;
+  }
+  ++r.increments;
+  remaining = meshes::FaceTransfer(moved, surface()).apply(remaining);
+  return false;
+}
+
+bool WornSample::try_implicit(meshes::FaceField<double>& remaining, WearStageReport& r) {
+  const meshes::FaceField<double> removed_before = removed_, depth_before = depth_,
+                                  remaining_before = remaining;
+  const WearStageReport report_before = r;
+  try {
+    take_implicit(remaining, r);
+    return true;
+  } catch (const std::exception& e) {
+    // The sample is as it was (the remesher throws before it changes); the fields and the
+    // report are put back, and the explicit path goes on.
+    removed_ = removed_before;
+    depth_ = depth_before;
+    remaining = remaining_before;
+    r = report_before;
+    r.implicit_failures.push_back(e.what());
+    return false;
   }
 }
 

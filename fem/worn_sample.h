@@ -76,6 +76,13 @@ struct WearStageReport {
   double implicit_seconds = 0; ///< [s] spent in them
   /// [m^3] grid volume the implicit recessions took from the wear (their grid_loss)
   double implicit_grid_loss = 0;
+  /// why each remesh of an explicit increment failed with every attempt (in explicit then
+  /// implicit the implicit recession then took the rest of the stage from the surface before
+  /// the increment)
+  std::vector<std::string> explicit_remesh_failures;
+  /// why each implicit recession that failed did (in explicit then implicit the explicit path
+  /// then went on, and stopped the stage only where it folds)
+  std::vector<std::string> implicit_failures;
   std::vector<int> vanished_labels; ///< convex elements worn away in the stage
   double worn_through_area = 0;     ///< [m^2] clamped area the implicit recessions removed
   RemeshReport last_remesh;         ///< valid when n_remeshes > 0
@@ -148,8 +155,10 @@ private:
   void set_surface(const meshes::SurfaceMesh& surface);
   /// Takes an increment the verdict accepted: accumulates its wear (and takes it off
   /// `remaining`), moves the mesh, and remeshes when the moved mesh holds an inverted or poor
-  /// cell; `remaining` follows onto the new surface.
-  void take_increment(const StageIncrement& inc, meshes::FaceField<double>& remaining,
+  /// cell; `remaining` follows onto the new surface. In explicit then implicit, a remesh that
+  /// fails with every attempt is taken back and the implicit recession takes the rest of the
+  /// stage instead; then true is returned (the stage is done).
+  bool take_increment(const StageIncrement& inc, meshes::FaceField<double>& remaining,
                       WearStageReport& r);
   /// Changes the split (or `remaining`, by spreading) as the verdict on an increment asks;
   /// throws when the stage gives up.
@@ -161,6 +170,9 @@ private:
   /// Takes the whole of `remaining` by the implicit recession and remeshes the result; the
   /// accumulated fields follow onto the new surface.
   void take_implicit(meshes::FaceField<double>& remaining, WearStageReport& r);
+  /// take_implicit, or, when it throws, the sample, its fields, `remaining` and `r` as they
+  /// were with the failure added to r.implicit_failures; returns whether it took the stage.
+  bool try_implicit(meshes::FaceField<double>& remaining, WearStageReport& r);
   /// Remeshes the volume bounded by `surface`, split into patches along `features` when given
   /// (fem::remesh_sample).
   RemeshReport

@@ -311,6 +311,23 @@ void WearingPart::log_geometry_notes(const StageRecord& r, const fem::WearStageR
         << format("%.3g mm^3 of chord volume not given back after remeshing (the restoring "
                   "offset folded or fell short)\n",
                   report.volume_not_restored * 1e9);
+  for (const auto& failure : report.explicit_remesh_failures)
+    log << where << "the recession's moved surface could not be remeshed (" << failure
+        << "); the implicit recession took the rest of the stage\n";
+  for (const auto& failure : report.implicit_failures)
+    log << where << "the implicit recession failed (" << failure
+        << "); the explicit recession went on\n";
+  if (report.n_implicit > 0)
+    log << where << report.n_implicit << " implicit recession(s), "
+        << format("%.1f s, grid loss %.3g mm^3", report.implicit_seconds,
+                  report.implicit_grid_loss * 1e9);
+  if (!report.vanished_labels.empty()) {
+    log << (report.n_implicit > 0 ? "; " : where) << "worn away:";
+    for (const int label : report.vanished_labels)
+      log << " " << meshes::label::name(label);
+  }
+  if (report.n_implicit > 0 || !report.vanished_labels.empty())
+    log << "\n";
   for (const auto& refusal : report.remesh_refusals)
     log << where << "a remesh needed more than one attempt; refused:" << refusal << "\n";
 }
