@@ -315,8 +315,7 @@ untouched_patch_boundaries(const SurfaceMesh& m, const std::map<int, int>& label
       continue;
     // Clamped and held faces never move, nor do the sharp edges between two of their patches
     // (a corner of the holder's sides), wherever the front passed above them.
-    const FaceRole role = m.roles.of(label_of_patch.at(m.face_labels[faces[0]]));
-    bool untouched = role == FaceRole::clamped || role == FaceRole::held;
+    bool untouched = m.roles.fixed(label_of_patch.at(m.face_labels[faces[0]]));
     if (!untouched) {
       untouched = true;
       for (const auto f : faces)
@@ -344,8 +343,7 @@ std::vector<char> free_wearing_vertices(const SurfaceMesh& m, const std::vector<
   std::vector<char> movable(m.n_vertices(), 0), fixed(m.n_vertices(), 0);
   for (std::size_t f = 0; f < m.n_faces(); ++f)
     for (const auto v : m.triangles[f]) {
-      const FaceRole role = m.face_role(f);
-      if (role == FaceRole::clamped || role == FaceRole::held)
+      if (m.face_fixed(f))
         fixed[v] = 1;
       else if (m.face_wears(f))
         movable[v] = 1;

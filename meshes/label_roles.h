@@ -31,6 +31,8 @@ public:
   bool wears(int label) const { return of(label) == FaceRole::wearing; }
   bool clamped(int label) const { return of(label) == FaceRole::clamped; }
   bool held(int label) const { return of(label) == FaceRole::held; }
+  /// Clamped or held: faces that never move, whatever wears beside them.
+  bool fixed(int label) const { return clamped(label) || held(label); }
   /// True when any label has `role`.
   bool any(FaceRole role) const;
   /// (label, role) sorted by label.

@@ -131,4 +131,19 @@ double one_sided_distance(const SurfaceMesh& from, const SurfaceMesh& to) {
   return worst;
 }
 
+UnwornOffset farthest_unworn_face(const SurfaceMesh& moved, const SurfaceMesh& original) {
+  const SurfaceLocator locator(original);
+  const auto centroid = face_centroids(moved);
+  UnwornOffset o;
+  for (std::size_t f = 0; f < moved.n_faces(); ++f)
+    if (!moved.face_wears(f))
+      if (const double d = locator.nearest(centroid[f]).distance; d > o.distance) {
+        o.distance = d;
+        o.face = std::int64_t(f);
+        o.centroid = centroid[f];
+        o.label = moved.face_labels[f];
+      }
+  return o;
+}
+
 } // namespace wear::meshes

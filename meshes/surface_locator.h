@@ -41,4 +41,15 @@ private:
 /// `to`: the one-sided Hausdorff distance sampled at those points. [m]
 double one_sided_distance(const SurfaceMesh& from, const SurfaceMesh& to);
 
+/// The face of `moved` that does not wear (FaceRole other than wearing) whose centroid lies
+/// farthest from the surface `original`: how far an evolution of the worn surface moved what
+/// must stay where it was. distance 0 and face -1 when every face wears.
+struct UnwornOffset {
+  double distance = 0; ///< [m]
+  std::int64_t face = -1;
+  Vec3 centroid; ///< [m] of that face
+  int label = 0; ///< of that face
+};
+UnwornOffset farthest_unworn_face(const SurfaceMesh& moved, const SurfaceMesh& original);
+
 } // namespace wear::meshes

@@ -73,6 +73,8 @@ public:
 
   FaceRole face_role(std::size_t f) const { return roles.of(face_labels[f]); }
   bool face_wears(std::size_t f) const { return roles.wears(face_labels[f]); }
+  /// Clamped or held: the face never moves (LabelRoles::fixed).
+  bool face_fixed(std::size_t f) const { return roles.fixed(face_labels[f]); }
 
   std::size_t n_vertices() const { return vertices.size(); }
   std::size_t n_faces() const { return triangles.size(); }

@@ -114,11 +114,9 @@ std::vector<char> snap_untouched_vertices(const SurfaceMesh& old, const std::vec
         list.push_back(patch_of_face[f]);
     }
   std::vector<char> fixed_patch(old.n_faces(), 0); // by patch id (a face index)
-  for (std::size_t f = 0; f < old.n_faces(); ++f) {
-    const FaceRole role = old.face_role(f);
-    if (role == FaceRole::clamped || role == FaceRole::held)
+  for (std::size_t f = 0; f < old.n_faces(); ++f)
+    if (old.face_fixed(f))
       fixed_patch[std::size_t(old_patch[f])] = 1;
-  }
   const double h = phi.spacing();
   std::vector<char> moved(fresh.n_vertices(), 0);
 #pragma omp parallel for schedule(dynamic, 256)
@@ -129,9 +127,8 @@ std::vector<char> snap_untouched_vertices(const SurfaceMesh& old, const std::vec
     // A vertex between fixed patches only (a corner of the holder's sides) goes back onto
     // their old edge or corner wherever the front passed: fixed faces never move.
     const bool between_fixed =
-        mine.size() >= 2 && std::all_of(mine.begin(), mine.end(), [&](int q) {
-          return fixed_patch[std::size_t(q)] != 0;
-        });
+        mine.size() >= 2 && std::all_of(mine.begin(), mine.end(),
+                                        [&](int q) { return fixed_patch[std::size_t(q)] != 0; });
     if (!between_fixed && front_passed(phi, psi, x))
       continue;
     Vec3 target = x;
@@ -182,18 +179,14 @@ std::vector<char> snap_untouched_vertices(const SurfaceMesh& old, const std::vec
 void snap_fixed_vertices(const SurfaceMesh& old, double reach, const std::vector<char>& restored,
                          SurfaceMesh& fresh) {
   SurfaceMesh fixed_faces = old;
-  for (std::size_t f = 0; f < old.n_faces(); ++f) {
-    const FaceRole role = old.face_role(f);
-    fixed_faces.face_labels[f] = role == FaceRole::clamped || role == FaceRole::held ? 1 : 0;
-  }
+  for (std::size_t f = 0; f < old.n_faces(); ++f)
+    fixed_faces.face_labels[f] = old.face_fixed(f) ? 1 : 0;
   const SurfaceLocator locate(fixed_faces);
   std::vector<char> on_fixed(fresh.n_vertices(), 0);
-  for (std::size_t f = 0; f < fresh.n_faces(); ++f) {
-    const FaceRole role = fresh.face_role(f);
-    if (role == FaceRole::clamped || role == FaceRole::held)
+  for (std::size_t f = 0; f < fresh.n_faces(); ++f)
+    if (fresh.face_fixed(f))
       for (const auto v : fresh.triangles[f])
         on_fixed[v] = !restored[v];
-  }
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::int64_t v = 0; v < std::int64_t(fresh.n_vertices()); ++v) {
     if (!on_fixed[std::size_t(v)])

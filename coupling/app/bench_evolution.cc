@@ -184,16 +184,11 @@ Outcome run_evolution(const Workload& w, const std::string& name, const std::str
   const auto& r = o.report;
   o.volume_error = std::abs(r.volume_change - (r.removed_volume - r.worn_through_volume)) /
                    std::max(r.removed_volume, 1e-300);
-  const meshes::SurfaceLocator before(w.state.surface);
   const auto& s = sample.surface();
-  const auto centroid = meshes::face_centroids(s);
-  for (std::size_t f = 0; f < s.n_faces(); ++f)
-    if (!s.face_wears(f))
-      if (const double d = before.nearest(centroid[f]).distance; d > o.unworn_offset) {
-        o.unworn_offset = d;
-        o.unworn_offset_at = centroid[f];
-        o.unworn_offset_label = s.face_labels[f];
-      }
+  const auto unworn = meshes::farthest_unworn_face(s, w.state.surface);
+  o.unworn_offset = unworn.distance;
+  o.unworn_offset_at = unworn.centroid;
+  o.unworn_offset_label = unworn.label;
   o.worst_triangle = meshes::min_triangle_quality(s);
   o.surface = s;
   return o;

@@ -69,12 +69,7 @@ TEST_CASE("the wear-out's stage-24 surface takes the stage's wear without foldin
   // The faces that do not wear (the holder's sides, the bottom) stay within 0.05 of the 3 mm
   // mesh size of where they were, through the increments, their remeshes and the implicit step
   // (0.052 mm measured; 0.28 mm when the implicit step cut the sides' corners).
-  const meshes::SurfaceLocator before(data.state.surface);
-  const auto centroid = meshes::face_centroids(s);
-  double off = 0;
-  for (std::size_t f = 0; f < s.n_faces(); ++f)
-    if (!s.face_wears(f))
-      off = std::max(off, before.nearest(centroid[f]).distance);
+  const double off = meshes::farthest_unworn_face(s, data.state.surface).distance;
   INFO("farthest unworn face " << off * 1e3 << " mm");
   CHECK(off < 0.05 * 3e-3);
   std::filesystem::remove_all(dir);
@@ -111,12 +106,7 @@ TEST_CASE("the implicit recession takes the wear-out's stage-24 wear whole, with
   // plane. The sharp edges between the holder's sides stay curves wherever the front passed
   // above them, so the corners are not cut either: 0.047 mm measured, 0.135 mm when only the
   // untouched edges were curves, hence the check at 0.02 of the mesh size.
-  const meshes::SurfaceLocator old(s);
-  const auto centroid = meshes::face_centroids(r.surface);
-  double off = 0;
-  for (std::size_t f = 0; f < r.surface.n_faces(); ++f)
-    if (!r.surface.face_wears(f))
-      off = std::max(off, old.nearest(centroid[f]).distance);
+  const double off = meshes::farthest_unworn_face(r.surface, s).distance;
   for (const auto& x : r.surface.vertices)
     if (std::abs(x.z) < 1e-6)
       CHECK(x.z == 0.0);

@@ -112,3 +112,44 @@ TEST_CASE("face fields transfer conservatively between two triangulations", "[me
   CHECK_THROWS_WITH(transfer.apply(FaceField<double>("x", "m^3", Extensivity::extensive, moved)),
                     Catch::Contains("revision"));
 }
+
+TEST_CASE("the farthest unworn face is the one moved farthest off the original surface",
+          "[meshes][locator]") {
+  // The plate's base half does not wear, its C11 half does. The C11 half is lowered by 2 mm
+  // (wear: not counted; the seam stays) and one base face by 0.3 mm beside it (an evolution that
+  // moved what must stay): the farthest unworn face is that one, 0.3 mm off, at its own centroid.
+  auto original = wavy_plate(30, 20, Diagonals::alternating);
+  original.roles.set(label::convex_element(1, 1), FaceRole::wearing);
+  original.roles.set(label::base, FaceRole::free);
+  CHECK(farthest_unworn_face(original, original).distance < 1e-15);
+  auto moved = original;
+  const auto centroid = face_centroids(original);
+  std::size_t lowered = 0;
+  // Vertices on the seam belong to base faces too and stay.
+  std::vector<char> on_base(moved.n_vertices(), 0);
+  for (std::size_t f = 0; f < moved.n_faces(); ++f)
+    if (!moved.face_wears(f))
+      for (const auto v : moved.triangles[f])
+        on_base[v] = 1;
+  for (std::size_t v = 0; v < moved.n_vertices(); ++v)
+    if (!on_base[v])
+      moved.vertices[v].z -= 2e-3;
+  // A base face away from the seam, all three vertices lowered.
+  for (std::size_t f = 0; f < moved.n_faces(); ++f)
+    if (!moved.face_wears(f) && std::abs(centroid[f].x - 0.015) < 1e-3 &&
+        std::abs(centroid[f].y - 0.02) < 1e-3) {
+      lowered = f;
+      break;
+    }
+  for (const auto v : moved.triangles[lowered])
+    moved.vertices[v].z -= 0.3e-3;
+  const auto o = farthest_unworn_face(moved, original);
+  REQUIRE(o.face >= 0);
+  CHECK(std::size_t(o.face) == lowered);
+  CHECK(o.label == label::base);
+  // The lowered face lies 0.3 mm below its old place, nearer to the slopes of the wave:
+  // between 0.15 and 0.3 mm from the old surface.
+  CHECK(o.distance <= 0.3e-3 + 1e-12);
+  CHECK(o.distance > 0.15e-3);
+  CHECK(norm(o.centroid - face_centroids(moved)[lowered]) < 1e-15);
+}
