@@ -3,10 +3,13 @@
 # machine, so that a study longer than a working session goes on in the next one (run.sh
 # restores it into an output folder that holds no run of its case). Per run,
 # cases/<case>/running/<run>/ (case_paths.sh), replaced in place at every call, holds:
-#   checkpoint.h5.xz   the run's checkpoint, xz-compressed: the particles with their contact
-#                      histories, the worn sample (its surface, its tetrahedra and the wear
-#                      fields on it), the per-face stress of the last stage and every
-#                      revolution and stage record
+#   checkpoint.h5.xz   the run's checkpoint at its latest stage's end without the particle
+#                      bed, xz-compressed: the worn sample (its surface, its tetrahedra and
+#                      the wear fields on it), the per-face stress of the last stage and every
+#                      revolution and stage record (a few hundred kB). The resume fills the
+#                      bed anew on the worn surfaces and runs it for the schedule's leading
+#                      dem-only stages before the next stage (docs/user-guide.md, "Runs
+#                      longer than a session"): the particles' state would take 5 MB a run
 #   index/<folder>_stage_NNNN.xml
 #                      the index entry (the "xdmf" attribute) of each surface/ and volume/
 #                      stage file of each part (<folder> its folder in the run, "/" as "+":
@@ -28,12 +31,12 @@
 # usage: bash cases/reference-study/keep_running.sh [case ...]
 #        case: as for run.sh (default: every case here and in cases/wear-out and cases/stress
 #              whose output folder exists)
-#        CAP_MB=<n>: refuse a compressed checkpoint above n MB (default 50, the cap the
-#        repository's size test allows under cases/*/running, tests/scripts/file_sizes_test.sh)
+#        CAP_MB=<n>: refuse a compressed checkpoint above n MB (default 1, the cap of every
+#        file in the repository, tests/scripts/file_sizes_test.sh)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 source cases/reference-study/case_paths.sh
-cap_mb=${CAP_MB:-50}
+cap_mb=${CAP_MB:-1}
 
 stages_of() { # <checkpoint>: "<stages done> <stages planned>" from the checkpoint itself
   /usr/bin/python3 - "$1" <<'EOF'
@@ -43,6 +46,39 @@ with h5py.File(sys.argv[1], "r") as h:
 text = text.decode() if isinstance(text, bytes) else str(text)
 schedule = re.search(r"^\s*set Schedule\s*=\s*([^#\n]*)", text, re.M)
 print(done, sum(int(n) for n in re.findall(r"\d+", schedule.group(1))) if schedule else 0)
+EOF
+}
+
+without_bed() { # <run folder> <file>: its checkpoint at the latest stage's end without the
+  # particle bed (/dem left out, the root's attribute without_bed = 1; every other object and
+  # attribute as written): checkpoint.h5, or checkpoint.previous.h5 when the latest lies
+  # inside a stage; refused when neither lies at a stage's end
+  /usr/bin/python3 - "$1" "$2" <<'EOF'
+import sys, h5py, numpy as np
+run, kept = sys.argv[1:]
+def at_stage_end(h):
+    scene = h["scene"]
+    return all(scene[p]["open_loads/impulse"].attrs["duration"] == 0
+               for p in scene if p.startswith("part_"))
+for name in ("checkpoint.h5", "checkpoint.previous.h5"):
+    try:
+        src = h5py.File(f"{run}/{name}", "r")
+    except OSError:
+        continue
+    with src:
+        if not at_stage_end(src):
+            continue
+        with h5py.File(kept, "w") as dst:
+            for key in src.attrs:
+                dst.attrs.create(key, src.attrs[key], dtype=src.attrs.get_id(key).dtype)
+            dst.attrs["without_bed"] = np.float64(1)
+            for key in src:
+                if key != "dem":
+                    src.copy(src[key], dst, name=key)
+        print(f"keep_running.sh: {run}/{name} kept without its bed", file=sys.stderr)
+        sys.exit(0)
+sys.exit(f"keep_running.sh: neither checkpoint of {run} lies at a stage's end (let the run "
+         "finish its stage, or stop it by a signal right after one)")
 EOF
 }
 
@@ -99,7 +135,9 @@ keep_one() { # <case>: its run's resume set into running_dir, or that deleted wh
   rm -rf "$new"
   mkdir -p "$new" && index_entries "$out" "$new/index" && cp "$params" "$new/parameters.prm" &&
     part_tables "$out" "$new/tables" &&
-    nice xz -6 -T1 -c "$out/checkpoint.h5" > "$new/checkpoint.h5.xz" ||
+    without_bed "$out" "$new/checkpoint.h5" &&
+    read -r done planned < <(stages_of "$new/checkpoint.h5") &&
+    nice xz -6 -T1 "$new/checkpoint.h5" ||
     { echo "keep_running.sh: $1: cannot write $new; $keep left as it is" >&2; rm -rf "$new"; return 1; }
   if [ "$(stat -c %s "$new/checkpoint.h5.xz")" -gt $((cap_mb * 1048576)) ]; then
     echo "keep_running.sh: $1: the compressed checkpoint is $(du -m "$new/checkpoint.h5.xz" | cut -f1) MB, above CAP_MB=$cap_mb; $keep left as it is" >&2

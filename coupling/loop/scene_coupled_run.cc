@@ -205,13 +205,17 @@ std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::resume() {
     walls[part_walls_[i]].surface.mesh = parts_.back().wall_surface();
     open.loads.push_back(loads_of(s.parts[i].open, parts_.back().surface()));
   }
+  const bool inside = std::any_of(s.parts.begin(), s.parts.end(),
+                                  [](const PartCheckpoint& k) { return k.open.duration > 0; });
   scene_ = std::make_unique<dem::SceneRun>(p_.scene, p_.dem, std::move(walls));
-  const dem::SceneRunState state = scene_run_state(s, c.dem);
   scene_->set_rank_link(options_.ranks);
+  n_records_ = s.n_records;
+  if (!c.has_bed)
+    return refill(checkpoint_path(), inside);
+  const dem::SceneRunState state = scene_run_state(s, c.dem);
   if (moves_nodes_) // from the unmoved surfaces, moved as the state says
     move_part_nodes();
   scene_->resume(state);
-  n_records_ = s.n_records;
   if (ranks_.writer())
     series_ = std::make_unique<SceneSeries>(p_.output.directory, *scene_, s.n_records);
   if (c.dem_ranks != part.n_ranks)
@@ -220,12 +224,50 @@ std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::resume() {
          << "on " << c.dem_ranks << ")" << std::endl;
   if (part.n_ranks > 1)
     log_ << "scene: " << scene_->rank_layout() << "; rank 0 writes" << std::endl;
-  const bool inside = std::any_of(s.parts.begin(), s.parts.end(),
-                                  [](const PartCheckpoint& k) { return k.open.duration > 0; });
   log_ << "resumed after stage " << n_stages_done_ << " of " << plan_.size()
        << (inside ? ", inside stage " + std::to_string(n_stages_done_ + 1) : std::string())
        << " at t = " << s.time << " s (" << s.n_records << " records)" << std::endl;
   return open;
+}
+
+SceneCoupledRun::OpenSceneStage SceneCoupledRun::refill(const std::string& path, bool inside) {
+  const std::string next = std::to_string(n_stages_done_ + 1);
+  if (inside)
+    throw std::runtime_error("--resume: checkpoint '" + path + "' holds no particle bed and " +
+                             "was written inside stage " + next + "; a checkpoint is kept " +
+                             "without its bed only at a stage's end");
+  if (moves_nodes_)
+    throw std::runtime_error("--resume: checkpoint '" + path + "' holds no particle bed; the " +
+                             "reference scheme's parts move inside the DEM and need it");
+  // The bed as the run's start made it: the fill settled on the worn surfaces, then the DEM
+  // for as long as the schedule's leading dem-only stages, which bring a new bed to its flow.
+  const auto first_worn =
+      std::find_if(plan_.begin(), plan_.end(), [](Scheme s) { return s != Scheme::dem_only; });
+  OpenSceneStage open = next_stage();
+  open.warm_up = double(first_worn - plan_.begin()) * p_.scene.stage_duration;
+  log_ << "resumed after stage " << n_stages_done_ << " of " << plan_.size() << " from '" << path
+       << "', a checkpoint without its particle bed: the bed is filled anew on the worn "
+       << "surfaces and runs " << format("%.4g", open.warm_up) << " s (the schedule's leading "
+       << "dem-only stages) before stage " << next << " begins; its clock starts again, so the "
+       << "stages' times from here on are the new bed's" << std::endl;
+  scene_->setup([&](const std::string& text) { log_ << "scene: " << text << "\n" << std::flush; });
+  if (options_.ranks && options_.ranks->n_ranks() > 1)
+    log_ << "scene: " << scene_->rank_layout() << "; rank 0 writes" << std::endl;
+  if (ranks_.writer())
+    series_ = std::make_unique<SceneSeries>(p_.output.directory, *scene_, n_records_);
+  return open;
+}
+
+bool SceneCoupledRun::warm_up(double duration, const StopSignals& signals) {
+  const double every = p_.scene.output_interval;
+  const double end = scene_->time() + duration;
+  while (scene_->time() < end - 1e-9 * every) {
+    const dem::SceneWindow w = scene_->advance(std::min(end, scene_->time() + every));
+    log_ << "warm-up of the new bed: " << window_summary(w) << "\n" << std::flush;
+    if (ranks_.agreed_signal(signals) != 0)
+      return false;
+  }
+  return true;
 }
 
 void SceneCoupledRun::record(const dem::SceneWindow& w) {
@@ -265,6 +307,11 @@ SceneCoupledRun::run_dem(StageRecord& r, std::optional<OpenSceneStage> open,
                          const StopSignals& signals) {
   const meshes::Stopwatch clock;
   OpenSceneStage stage = open ? std::move(*open) : next_stage();
+  if (stage.warm_up > 0) {
+    if (!warm_up(stage.warm_up, signals))
+      return std::nullopt;
+    stage = next_stage(); // the stage begins where the warm-up ends
+  }
   const double every = p_.scene.output_interval;
   const double interval = p_.output.checkpoint_interval;
   meshes::Stopwatch since_checkpoint;

@@ -48,11 +48,20 @@ private:
   struct OpenSceneStage {
     std::vector<dem::WallLoads> loads; ///< per part, in its frame
     double end = 0;                    ///< [s]
+    /// [s] the DEM runs this long on a bed filled anew before the stage begins (a resume from
+    /// a checkpoint without its bed); its windows count for no stage
+    double warm_up = 0;
   };
   /// The parts meshed, the scene set up (its fill settled), the output started; or,
   /// resuming, everything as the checkpoint left it (then returns the open stage).
   std::optional<OpenSceneStage> setup();
   std::optional<OpenSceneStage> resume();
+  /// The resume from a checkpoint without its particle bed (`path`, written at a stage's end,
+  /// not `inside` one): the fill on the worn surfaces, and the stage to come with its warm-up.
+  OpenSceneStage refill(const std::string& path, bool inside);
+  /// The DEM of a bed filled anew run for `duration` [s], each window logged and counted for
+  /// nothing; false when a signal stopped it (the checkpoint without the bed stays in place).
+  bool warm_up(double duration, const StopSignals& signals);
   StageRecord begin_stage(std::size_t k) const;
   /// The stage's DEM windows, a record each, their loads on each part summed; none when a
   /// signal stopped the run between two windows (after a checkpoint).

@@ -11,7 +11,9 @@
 //                   fields as attributes, rank_ghosts, rank_sent_up, its continuation),
 //                   gathered to rank 0 and written by it. A reader on N ranks takes its own
 //                   part; on another count all parts, merged into the bed of one process
-//                   (dem::merge_rank_states), which it decomposes again
+//                   (dem::merge_rank_states), which it decomposes again. Absent in a
+//                   checkpoint kept without its bed (Checkpoint::has_bed), whose root has
+//                   the attribute without_bed = 1
 //   /scene/...      the scene run's own part and its wearing parts (scene_checkpoint.cc)
 // The checkpoint a write replaces is kept as checkpoint.previous.h5 (a hard link taken
 // before the rename), and a resume falls back to it when the latest one does not read.
@@ -415,7 +417,11 @@ std::vector<std::string> stage_columns() {
 void write_checkpoint(const std::string& path, const Checkpoint& c,
                       const std::vector<dem::SystemState>& dem_parts) {
   Hdf5File h5(path);
-  if (dem_parts.empty()) {
+  if (!c.has_bed) {
+    if (!dem_parts.empty())
+      throw std::invalid_argument("write_checkpoint: DEM parts given for a checkpoint without "
+                                  "its bed");
+  } else if (dem_parts.empty()) {
     write_dem(h5, "/dem", c.dem);
     write_continuation(h5, "/dem", c.dem);
   } else {
@@ -428,6 +434,8 @@ void write_checkpoint(const std::string& path, const Checkpoint& c,
   h5.attribute("/", "stages_done", double(c.stages_done));
   h5.attribute("/", "parameters", c.parameters);
   h5.attribute("/", "has_scene", 1.0);
+  if (!c.has_bed)
+    h5.attribute("/", "without_bed", 1.0);
   write_scene(h5, c.scene);
   h5.commit(previous_checkpoint_path(path));
 }
@@ -473,6 +481,12 @@ Checkpoint read_checkpoint(const std::string& path, const DemPart& part) {
   try {
     c.stages_done = int(h5.attribute("/", "stages_done"));
     c.parameters = h5.text_attribute("/", "parameters");
+    c.has_bed = !h5.has_attribute("/", "without_bed") || h5.attribute("/", "without_bed") == 0;
+    c.scene = read_scene(h5);
+    if (!c.has_bed)
+      return c;
+    if (!h5.has_object("/dem"))
+      throw std::runtime_error("/dem is missing (and the attribute without_bed is not set)");
     c.dem_ranks = h5.has_attribute("/dem", "n_ranks") ? int(h5.attribute("/dem", "n_ranks")) : 1;
     if (c.dem_ranks < 1)
       throw std::runtime_error("/dem: n_ranks below 1");
@@ -490,7 +504,6 @@ Checkpoint read_checkpoint(const std::string& path, const DemPart& part) {
         parts.push_back(part_of(r));
       c.dem = dem::merge_rank_states(parts);
     }
-    c.scene = read_scene(h5);
   } catch (const std::exception& e) {
     throw std::runtime_error("checkpoint '" + path + "' is damaged or incomplete: " + e.what());
   }

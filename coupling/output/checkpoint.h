@@ -31,7 +31,12 @@ struct Checkpoint {
   int dem_ranks = 1;
   std::string parameters; ///< fully resolved case of the run (resume refuses another)
   dem::SystemState dem;   ///< with its continuation (a checkpoint lies between two steps)
-  SceneCheckpoint scene;  ///< the scene's own part and its wearing parts
+  /// False for a checkpoint kept without its particle bed (no /dem in the file, the root's
+  /// attribute without_bed = 1; `dem` empty):
+  /// a kept run carried between machines (cases/reference-study/keep_running.sh), written at
+  /// a stage's end. Its resume fills the bed anew (SceneCoupledRun).
+  bool has_bed = true;
+  SceneCheckpoint scene; ///< the scene's own part and its wearing parts
 };
 
 /// Where the checkpoint before the latest one is kept: "<path without .h5>.previous.h5".
@@ -41,7 +46,8 @@ std::string previous_checkpoint_path(const std::string& path);
 /// it replaces is kept as previous_checkpoint_path(path), so two complete ones exist at every
 /// moment once two were written.
 /// Over ranks `dem_parts` holds every rank's DEM state in rank order (dem::gather_rank_states,
-/// on rank 0, which alone writes) and is written instead of c.dem.
+/// on rank 0, which alone writes) and is written instead of c.dem. Without c.has_bed no DEM
+/// state is written.
 void write_checkpoint(const std::string& path, const Checkpoint& c,
                       const std::vector<dem::SystemState>& dem_parts = {});
 /// Throws naming the file and what is missing or inconsistent. `part`: the rank that reads;

@@ -197,6 +197,10 @@ bool Hdf5Reader::has_attribute(const std::string& object, const std::string& nam
   return H5Aexists_by_name(file_, object.c_str(), name.c_str(), H5P_DEFAULT) > 0;
 }
 
+bool Hdf5Reader::has_object(const std::string& name) const {
+  return H5Lexists(file_, name.c_str(), H5P_DEFAULT) > 0;
+}
+
 std::string Hdf5Reader::text_attribute(const std::string& object, const std::string& name) const {
   const hid_t a = H5Aopen_by_name(file_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT);
   check(a >= 0, path_, "find the attribute '" + name + "' of '" + object + "'");

@@ -55,6 +55,8 @@ public:
   std::vector<int> ints(const std::string& name) const;
   double attribute(const std::string& object, const std::string& name) const;
   bool has_attribute(const std::string& object, const std::string& name) const;
+  /// Whether a group or dataset `name` ("/dem") exists.
+  bool has_object(const std::string& name) const;
   std::string text_attribute(const std::string& object, const std::string& name) const;
   const std::string& path() const { return path_; }
 

@@ -1,11 +1,11 @@
 #!/bin/bash
 # No file of the repository is over 1 MB (1,048,576 bytes) but those allowed: every file git
 # tracks and every untracked file it does not ignore (about to be added) is checked, so that
-# run outputs and archives stay out of the tree and its history. Allowed:
-#   - a test's data file (tests/<module>/data/) named in tests/data-files.md or in the README
-#     of its data folder, which say why it is kept at that size;
-#   - a running run's kept checkpoint (cases/<case>/running/, cases/reference-study/
-#     keep_running.sh) up to 50 MB (52,428,800 bytes) a file; it leaves the tree when its run ends.
+# run outputs and archives stay out of the tree and its history. Allowed: a test's data file
+# (tests/<module>/data/) named in tests/data-files.md or in the README of its data folder,
+# which say why it is kept at that size. A running run's kept checkpoint (cases/<case>/running/,
+# cases/reference-study/keep_running.sh) is held to the 1 MB of every file: it is kept without
+# its particle bed.
 # Each file over its limit is printed with its size and what to do; the test fails then, and
 # when git or a git checkout is missing (it cannot list the files without them).
 #
@@ -13,7 +13,6 @@
 set -uo pipefail
 root=$(cd "${1:-$(dirname "$0")/../..}" && pwd)
 limit=1048576
-running_cap=52428800
 fail() { echo "file_sizes_test: $*" >&2; exit 1; }
 
 command -v git > /dev/null ||
@@ -35,7 +34,7 @@ advice() { # <path>: what to do about a file over its limit
     tests/*/data/*)
       echo "a test's data file: name it in tests/data-files.md with the test that reads it and why it cannot be smaller" ;;
     cases/*/running/*)
-      echo "a kept checkpoint above the 50 MB cap: keep a smaller run (a coarser case), or let it finish before the session ends" ;;
+      echo "a kept checkpoint over 1 MB: keep_running.sh keeps it without its bed; a part's mesh this large needs a coarser case, or the run finished before the session ends" ;;
     *)
       echo "keep it out of the tree: run outputs belong in output/ (ignored); a finished run is kept as its summary (docs/results/run_summary.py, a few hundred kB), an unfinished one by cases/reference-study/keep_running.sh" ;;
   esac
@@ -53,7 +52,6 @@ while IFS=$'\t' read -r -d '' size f; do
   [ "$size" -gt "$limit" ] || continue
   case "$f" in
     tests/*/data/*) named_in_data_docs "$f" && continue ;;
-    cases/*/running/*) [ "$size" -le "$running_cap" ] && continue ;;
   esac
   over=$((over + 1))
   printf '%s: %d bytes (%s MB): %s\n' "$f" "$size" "$(awk -v s="$size" 'BEGIN { printf "%.2f", s / 1048576 }')" \
