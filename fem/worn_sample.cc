@@ -348,8 +348,7 @@ bool WornSample::take_increment(const StageIncrement& inc, meshes::FaceField<dou
   // accumulated wear is taken back if every attempt to remesh it fails (the remesher throws
   // before the sample changes), so that the implicit step can take the whole of what was
   // left before this increment, from the surface before it.
-  const meshes::FaceField<double> removed_before = removed_, depth_before = depth_,
-                                  remaining_before = remaining;
+  const FieldSnapshot before = snapshot(remaining);
   accumulate(inc.part, remaining.values());
   remaining.follow(moved);
   try {
@@ -358,9 +357,7 @@ bool WornSample::take_increment(const StageIncrement& inc, meshes::FaceField<dou
     if (p_.evolution != SurfaceEvolution::explicit_then_implicit)
       throw;
     r.explicit_remesh_failures.push_back(e.what());
-    removed_ = removed_before;
-    depth_ = depth_before;
-    remaining = remaining_before;
+    restore(before, remaining);
     try {
       take_implicit(remaining, r);
     } catch (const std::exception& implicit) {
@@ -376,8 +373,7 @@ bool WornSample::take_increment(const StageIncrement& inc, meshes::FaceField<dou
 }
 
 bool WornSample::try_implicit(meshes::FaceField<double>& remaining, WearStageReport& r) {
-  const meshes::FaceField<double> removed_before = removed_, depth_before = depth_,
-                                  remaining_before = remaining;
+  const FieldSnapshot before = snapshot(remaining);
   const WearStageReport report_before = r;
   try {
     take_implicit(remaining, r);
@@ -385,9 +381,7 @@ bool WornSample::try_implicit(meshes::FaceField<double>& remaining, WearStageRep
   } catch (const std::exception& e) {
     // The sample is as it was (the remesher throws before it changes); the fields and the
     // report are put back, and the explicit path goes on.
-    removed_ = removed_before;
-    depth_ = depth_before;
-    remaining = remaining_before;
+    restore(before, remaining);
     r = report_before;
     r.implicit_failures.push_back(e.what());
     return false;

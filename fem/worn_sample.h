@@ -152,6 +152,18 @@ public:
   RemeshReport remesh();
 
 private:
+  /// The accumulated fields and a stage's remaining volume at one moment: put back when a
+  /// step that changed them fails (the sample itself is unchanged then, the remesher throws
+  /// before it changes).
+  struct FieldSnapshot {
+    meshes::FaceField<double> removed, depth, remaining;
+  };
+  FieldSnapshot snapshot(const meshes::FaceField<double>& remaining) const {
+    return {removed_, depth_, remaining};
+  }
+  void restore(const FieldSnapshot& s, meshes::FaceField<double>& remaining) {
+    removed_ = s.removed, depth_ = s.depth, remaining = s.remaining;
+  }
   void set_surface(const meshes::SurfaceMesh& surface);
   /// Takes an increment the verdict accepted: accumulates its wear (and takes it off
   /// `remaining`), moves the mesh, and remeshes when the moved mesh holds an inverted or poor
