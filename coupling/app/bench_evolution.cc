@@ -216,6 +216,15 @@ void report(const Workload& w, const std::vector<Outcome>& outcomes, std::ostrea
                   r.n_first_attempt_remeshes, r.n_implicit, r.implicit_seconds, o.volume_error,
                   o.unworn_offset * 1e3, o.worst_triangle, r.quality.min_scaled_jacobian);
   }
+  for (const auto& o : outcomes) { // where a path handed over, and why
+    for (const auto& why : o.report.explicit_remesh_failures)
+      out << format("'%s': an explicit increment's remesh failed, the implicit step took the "
+                    "rest: %s\n",
+                    o.evolution.c_str(), why.c_str());
+    for (const auto& why : o.report.implicit_failures)
+      out << format("'%s': an implicit step failed, the explicit increments went on: %s\n",
+                    o.evolution.c_str(), why.c_str());
+  }
   for (const auto& o : outcomes)
     if (o.surface && o.unworn_offset > 0)
       out << format("'%s': the unworn face farthest off (%s) at (%.2f, %.2f, %.2f) mm\n",
