@@ -169,6 +169,10 @@ WornSample::WornSample(const std::string& msh_path, const meshes::SurfaceMesh& s
 }
 
 WornSample::WornSample(const WornSampleState& st, const WornSampleParameters& p) : p_(p) {
+  if (st.vertices.empty() && st.tetrahedra.empty() && st.boundary_ids.empty()) {
+    mesh_kept_surface(st);
+    return;
+  }
   const std::size_t nv = st.vertices.size() / 3, nc = st.tetrahedra.size() / 4;
   if (st.vertices.size() != 3 * nv || st.tetrahedra.size() != 4 * nc || nc == 0 ||
       st.boundary_faces.size() != 3 * st.boundary_ids.size())
@@ -211,6 +215,24 @@ WornSample::WornSample(const WornSampleState& st, const WornSampleParameters& p)
     throw std::runtime_error("worn sample state: face fields do not match the surface");
   removed_.values() = st.removed_volume;
   depth_.values() = st.wear_depth;
+  n_remeshes_ = st.n_remeshes;
+}
+
+void WornSample::mesh_kept_surface(const WornSampleState& st) {
+  // The kept surface is gmsh's own from the last remesh (or the generated sample's): its
+  // triangles are kept and only the volume is meshed (the attempt order of an isotropic
+  // surface, with no sharp edges to add); another attempt remeshes it and the fields follow
+  // by the conservative face transfer, the volume restored as after every remesh.
+  if (st.removed_volume.size() != st.surface.n_faces() ||
+      st.wear_depth.size() != st.surface.n_faces())
+    throw std::runtime_error("worn sample state: face fields do not match the surface");
+  removed_ = meshes::FaceField<double>("removed volume", "m^3", meshes::Extensivity::extensive,
+                                       st.surface);
+  depth_ = meshes::FaceField<double>("wear depth", "m", meshes::Extensivity::intensive, st.surface);
+  removed_.values() = st.removed_volume;
+  depth_.values() = st.wear_depth;
+  const std::vector<std::pair<std::uint32_t, std::uint32_t>> no_sharp_edges;
+  remesh_from(st.surface, &no_sharp_edges);
   n_remeshes_ = st.n_remeshes;
 }
 

@@ -95,6 +95,9 @@ struct WearStageReport {
 
 /// A worn sample as plain arrays, for checkpoints: the volume mesh, its boundary surface
 /// (with the revision the face fields refer to) and the accumulated fields.
+/// A worn sample's state. Kept without its volume mesh (vertices, tetrahedra and boundary
+/// arrays empty; a run carried between machines keeps the surface and its fields, a fraction
+/// of the size), the sample is meshed anew from its surface when it is read back.
 struct WornSampleState {
   std::vector<double> vertices;                   ///< [m] n x 3, sample frame
   std::vector<std::int64_t> tetrahedra;           ///< n x 4 vertex indices
@@ -165,6 +168,9 @@ private:
     removed_ = s.removed, depth_ = s.depth, remaining = s.remaining;
   }
   void set_surface(const meshes::SurfaceMesh& surface);
+  /// The sample of a state kept without its volume mesh: meshed from its surface, the fields
+  /// carried onto the result.
+  void mesh_kept_surface(const WornSampleState& st);
   /// Takes an increment the verdict accepted: accumulates its wear (and takes it off
   /// `remaining`), moves the mesh, and remeshes when the moved mesh holds an inverted or poor
   /// cell; `remaining` follows onto the new surface. In explicit then implicit, a remesh that

@@ -4,12 +4,13 @@
 # restores it into an output folder that holds no run of its case). Per run,
 # cases/<case>/running/<run>/ (case_paths.sh), replaced in place at every call, holds:
 #   checkpoint.h5.xz   the run's checkpoint at its latest stage's end without the particle
-#                      bed, xz-compressed: the worn sample (its surface, its tetrahedra and
-#                      the wear fields on it), the per-face stress of the last stage and every
-#                      revolution and stage record (a few hundred kB). The resume fills the
-#                      bed anew on the worn surfaces and runs it for the schedule's leading
-#                      dem-only stages before the next stage (docs/user-guide.md, "Runs
-#                      longer than a session"): the particles' state would take 5 MB a run
+#                      bed and without the parts' volume meshes, xz-compressed: each worn
+#                      surface with its wear fields, the per-face stress of the last stage and
+#                      every revolution and stage record (a few hundred kB). The resume meshes
+#                      each part from its surface, fills the bed anew on the worn surfaces and
+#                      runs it for the schedule's leading dem-only stages before the next
+#                      stage (docs/user-guide.md, "Runs longer than a session"): the
+#                      particles' state would take 5 MB a run, a worn part's tetrahedra 0.5
 #   index/<folder>_stage_NNNN.xml
 #                      the index entry (the "xdmf" attribute) of each surface/ and volume/
 #                      stage file of each part (<folder> its folder in the run, "/" as "+":
@@ -50,12 +51,15 @@ EOF
 }
 
 without_bed() { # <run folder> <file>: its checkpoint at the latest stage's end without the
-  # particle bed (/dem left out, the root's attribute without_bed = 1; every other object and
-  # attribute as written): checkpoint.h5, or checkpoint.previous.h5 when the latest lies
-  # inside a stage; refused when neither lies at a stage's end
+  # particle bed (/dem left out, the root's attribute without_bed = 1) and without each part's
+  # volume mesh (scene/part_<k>/sample/{vertices,tetrahedra,boundary_faces,boundary_ids}: the
+  # resume meshes it from the kept surface); every other object and attribute as written:
+  # checkpoint.h5, or checkpoint.previous.h5 when the latest lies inside a stage; refused when
+  # neither lies at a stage's end
   /usr/bin/python3 - "$1" "$2" <<'EOF'
-import sys, h5py, numpy as np
+import os, sys, h5py, numpy as np
 run, kept = sys.argv[1:]
+VOLUME_MESH = ("vertices", "tetrahedra", "boundary_faces", "boundary_ids")
 def at_stage_end(h):
     scene = h["scene"]
     return all(scene[p]["open_loads/impulse"].attrs["duration"] == 0
@@ -72,9 +76,18 @@ for name in ("checkpoint.h5", "checkpoint.previous.h5"):
             for key in src.attrs:
                 dst.attrs.create(key, src.attrs[key], dtype=src.attrs.get_id(key).dtype)
             dst.attrs["without_bed"] = np.float64(1)
-            for key in src:
-                if key != "dem":
-                    src.copy(src[key], dst, name=key)
+            def keep(name, obj):  # the sample's volume mesh is left out too
+                if name.startswith("dem") or (
+                        name.startswith("scene/part_") and name.split("/")[2:3] == ["sample"]
+                        and name.split("/")[-1] in VOLUME_MESH and len(name.split("/")) == 4):
+                    return
+                if isinstance(obj, h5py.Group):
+                    group = dst.require_group(name)
+                    for key in obj.attrs:
+                        group.attrs.create(key, obj.attrs[key], dtype=obj.attrs.get_id(key).dtype)
+                else:
+                    src.copy(obj, dst[os.path.dirname(name) or "/"], name=os.path.basename(name))
+            src.visititems(keep)
         print(f"keep_running.sh: {run}/{name} kept without its bed", file=sys.stderr)
         sys.exit(0)
 sys.exit(f"keep_running.sh: neither checkpoint of {run} lies at a stage's end (let the run "

@@ -253,8 +253,16 @@ SceneCoupledRun::OpenSceneStage SceneCoupledRun::refill(const std::string& path,
   scene_->setup([&](const std::string& text) { log_ << "scene: " << text << "\n" << std::flush; });
   if (options_.ranks && options_.ranks->n_ranks() > 1)
     log_ << "scene: " << scene_->rank_layout() << "; rank 0 writes" << std::endl;
-  if (ranks_.writer())
-    series_ = std::make_unique<SceneSeries>(p_.output.directory, *scene_, n_records_);
+  if (ranks_.writer()) {
+    // A run carried to another machine brings its checkpoint, not its scene tables.
+    const bool kept = std::filesystem::exists(p_.output.directory + "/scene_series.csv");
+    if (!kept)
+      log_ << "scene: '" << p_.output.directory << "' holds no scene_series.csv: the scene's "
+           << "tables start again at record " << n_records_ + 1 << std::endl;
+    series_ = std::make_unique<SceneSeries>(p_.output.directory, *scene_, n_records_,
+                                            kept ? SceneSeries::EarlierRows::read
+                                                 : SceneSeries::EarlierRows::absent);
+  }
   return open;
 }
 

@@ -63,10 +63,12 @@ void write_doubles(Hdf5File& h5, const std::string& name, const std::vector<doub
 }
 
 void write_sample_state(Hdf5File& h5, const std::string& g, const fem::WornSampleState& s) {
-  h5.write(g + "/vertices", s.vertices, {s.vertices.size() / 3, 3});
-  h5.write(g + "/tetrahedra", s.tetrahedra, {s.tetrahedra.size() / 4, 4});
-  h5.write(g + "/boundary_faces", s.boundary_faces, {s.boundary_faces.size() / 3, 3});
-  h5.write(g + "/boundary_ids", s.boundary_ids, {s.boundary_ids.size()});
+  if (!s.tetrahedra.empty()) {
+    h5.write(g + "/vertices", s.vertices, {s.vertices.size() / 3, 3});
+    h5.write(g + "/tetrahedra", s.tetrahedra, {s.tetrahedra.size() / 4, 4});
+    h5.write(g + "/boundary_faces", s.boundary_faces, {s.boundary_faces.size() / 3, 3});
+    h5.write(g + "/boundary_ids", s.boundary_ids, {s.boundary_ids.size()});
+  }
   const auto& m = s.surface;
   write_vec3(h5, g + "/surface/vertices", m.vertices);
   std::vector<std::int64_t> tri;
@@ -90,10 +92,12 @@ void write_sample_state(Hdf5File& h5, const std::string& g, const fem::WornSampl
 
 fem::WornSampleState read_sample_state(const Hdf5Reader& h5, const std::string& g) {
   fem::WornSampleState s;
-  s.vertices = h5.doubles(g + "/vertices");
-  s.tetrahedra = h5.int64s(g + "/tetrahedra");
-  s.boundary_faces = h5.int64s(g + "/boundary_faces");
-  s.boundary_ids = h5.ints(g + "/boundary_ids");
+  if (h5.has_object(g + "/tetrahedra")) { // else kept without its volume mesh (WornSampleState)
+    s.vertices = h5.doubles(g + "/vertices");
+    s.tetrahedra = h5.int64s(g + "/tetrahedra");
+    s.boundary_faces = h5.int64s(g + "/boundary_faces");
+    s.boundary_ids = h5.ints(g + "/boundary_ids");
+  }
   auto& m = s.surface;
   m.vertices = vec3s(h5.doubles(g + "/surface/vertices"), g + "/surface/vertices");
   const auto tri = h5.int64s(g + "/surface/triangles");

@@ -110,8 +110,12 @@ std::vector<std::string> lines_of(const std::string& path) {
 }
 } // namespace
 
-SceneSeries::SceneSeries(std::string directory, const dem::SceneRun& run, int n_records)
+SceneSeries::SceneSeries(std::string directory, const dem::SceneRun& run, int n_records,
+                         EarlierRows earlier)
     : SceneSeries(std::move(directory), run) {
+  n_records_ = n_records;
+  if (earlier == EarlierRows::absent)
+    return;
   const auto series = lines_of(directory_ + "/scene_series.csv");
   if (int(series.size()) < n_records + 1)
     throw std::runtime_error("--resume: '" + directory_ + "/scene_series.csv' holds " +
@@ -132,7 +136,6 @@ SceneSeries::SceneSeries(std::string directory, const dem::SceneRun& run, int n_
     time = t;
     wear_ += wear[k] + "\n";
   }
-  n_records_ = n_records;
   for (int k = 1; run.fields() && k <= n_records; ++k) {
     char name[64];
     std::snprintf(name, sizeof name, "/fields/record_%04d.h5", k);

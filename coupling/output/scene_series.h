@@ -25,10 +25,16 @@ public:
   /// `directory`/walls/ and starts the tables; a wall moving as a rigid body goes to
   /// walls_<k>/ at every record k.
   SceneSeries(std::string directory, const dem::SceneRun& run);
+  /// Whether a resumed run's folder holds the tables of its earlier records: a run carried
+  /// to another machine without them (cases/reference-study/keep_running.sh) starts them
+  /// again at its next record.
+  enum class EarlierRows { read, absent };
   /// Continues the records of a resumed run: the tables as they stood after its first
   /// `n_records` records (later rows, written after the checkpoint, are dropped) and the
-  /// fields files up to that record. Throws naming a table that holds fewer.
-  SceneSeries(std::string directory, const dem::SceneRun& run, int n_records);
+  /// fields files up to that record. Throws naming a table that holds fewer. With
+  /// EarlierRows::absent the tables start with their header and record n_records + 1.
+  SceneSeries(std::string directory, const dem::SceneRun& run, int n_records,
+              EarlierRows earlier = EarlierRows::read);
   /// The next record, of window w, with the run as it stands at the window's end and its
   /// `particles` then (the scene's own, or over ranks every rank's gathered), written to
   /// particles_<k>.vtu when `snapshot` (and there are particles).

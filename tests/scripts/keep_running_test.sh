@@ -3,7 +3,7 @@
 # restore_running) on a stand-in run: an unfinished run is kept as its compressed checkpoint,
 # the index entries of its stage files and its parameters, beside its case file; restored into
 # an output folder that holds no run, the checkpoint is the run's at its latest stage's end
-# without its bed (every other object and attribute the same; the one before it when the run
+# without its bed and its parts' volume meshes (every other object and attribute the same; the one before it when the run
 # stopped inside a stage; refused when neither lies at a stage's end) and each stage file a
 # stub with the same index entry (a fixed-length string, as wearsim reads it), and the part's
 # part_wear.csv and part_life.csv come back as they were (a resume reads their rows); a folder that
@@ -34,6 +34,8 @@ with h5py.File(out + "/checkpoint.h5", "w") as h:
     h["scene/part_0/open_loads/impulse"] = np.zeros((4, 3))
     h["scene/part_0/open_loads/impulse"].attrs["duration"] = duration
     h["scene/part_0/sample/removed_volume"] = np.full(4, 1e-9 * done)
+    h["scene/part_0/sample/tetrahedra"] = np.arange(8).reshape(2, 4)  # the volume mesh
+    h["scene/part_0/sample/surface/vertices"] = np.zeros((4, 3))
 for kind, stage in (("surface", 0), ("surface", 1), ("volume", 1)):
     with h5py.File(f"{out}/parts/sample/{kind}/stage_{stage:04d}.h5", "w") as h:
         h.attrs["xdmf"] = np.bytes_(f"<Grid Name=\"{kind}_{stage}\"/>\n".encode())
@@ -41,6 +43,7 @@ for kind, stage in (("surface", 0), ("surface", 1), ("volume", 1)):
 PY
 }
 same_but_bed() { # <kept checkpoint> <checkpoint>: the first is the second without its bed
+  # and its part's volume mesh (the surface kept)
   /usr/bin/python3 - "$1" "$2" <<'PY'
 import sys, h5py, numpy as np
 with h5py.File(sys.argv[1], "r") as k, h5py.File(sys.argv[2], "r") as c:
@@ -51,7 +54,8 @@ with h5py.File(sys.argv[1], "r") as k, h5py.File(sys.argv[2], "r") as c:
         found = []
         h.visititems(lambda n, o: found.append(n) if isinstance(o, h5py.Dataset) else None)
         return found
-    assert walk(k) == [n for n in walk(c) if not n.startswith("dem")]
+    assert walk(k) == [n for n in walk(c) if not n.startswith("dem") and not n.endswith("/sample/tetrahedra")]
+    assert "scene/part_0/sample/surface/vertices" in walk(k)
     assert all(np.array_equal(k[n][()], c[n][()]) for n in walk(k))
     assert k["scene/part_0/open_loads/impulse"].attrs["duration"] == c["scene/part_0/open_loads/impulse"].attrs["duration"]
 PY
