@@ -64,6 +64,14 @@ def at_stage_end(h):
     scene = h["scene"]
     return all(scene[p]["open_loads/impulse"].attrs["duration"] == 0
                for p in scene if p.startswith("part_"))
+def copy_attributes(src, dst):  # each with its own type (fixed-length strings stay so)
+    for key in src.attrs:
+        dst.attrs.create(key, src.attrs[key], dtype=src.attrs.get_id(key).dtype)
+def left_out(path):  # the bed, and a part's volume mesh: scene/part_<k>/sample/<array>
+    parts = path.split("/")
+    return parts[0] == "dem" or (len(parts) == 4 and parts[0] == "scene" and
+                                 parts[1].startswith("part_") and parts[2] == "sample" and
+                                 parts[3] in VOLUME_MESH)
 for name in ("checkpoint.h5", "checkpoint.previous.h5"):
     try:
         src = h5py.File(f"{run}/{name}", "r")
@@ -73,20 +81,15 @@ for name in ("checkpoint.h5", "checkpoint.previous.h5"):
         if not at_stage_end(src):
             continue
         with h5py.File(kept, "w") as dst:
-            for key in src.attrs:
-                dst.attrs.create(key, src.attrs[key], dtype=src.attrs.get_id(key).dtype)
+            copy_attributes(src, dst)
             dst.attrs["without_bed"] = np.float64(1)
-            def keep(name, obj):  # the sample's volume mesh is left out too
-                if name.startswith("dem") or (
-                        name.startswith("scene/part_") and name.split("/")[2:3] == ["sample"]
-                        and name.split("/")[-1] in VOLUME_MESH and len(name.split("/")) == 4):
+            def keep(path, obj):
+                if left_out(path):
                     return
                 if isinstance(obj, h5py.Group):
-                    group = dst.require_group(name)
-                    for key in obj.attrs:
-                        group.attrs.create(key, obj.attrs[key], dtype=obj.attrs.get_id(key).dtype)
+                    copy_attributes(obj, dst.require_group(path))
                 else:
-                    src.copy(obj, dst[os.path.dirname(name) or "/"], name=os.path.basename(name))
+                    src.copy(obj, dst[os.path.dirname(path) or "/"], name=os.path.basename(path))
             src.visititems(keep)
         print(f"keep_running.sh: {run}/{name} kept without its bed", file=sys.stderr)
         sys.exit(0)

@@ -1,17 +1,16 @@
 // A run continued from a checkpoint kept without its particle bed (Checkpoint::has_bed, what
 // cases/reference-study/keep_running.sh carries between machines): the small tester case of
-// the stop-and-resume test (30-degree sector, s = 4, one dem-only and two staged stages, wear
-// amplified 20 times) with two dem-only and two staged stages, run to the end of stage 3 and
-// continued twice, once from its checkpoint with the bed (the uninterrupted run) and once from
-// the same checkpoint without it (nor the sample's volume mesh). The second meshes the sample
-// from its kept surface, fills the bed anew on the worn surface, runs it
-// for the schedule's two dem-only stages and then wears stage 4 from the same surface: stages
-// 1 to 3 stay as they were, bit for bit; stage 4's wear-law volume lies within 50 % of the
-// uninterrupted run's mean per stage (the same flow, another bed: measured +9 %, where the
-// uninterrupted stages themselves scatter by +-24 %); the volume applied is the amplified DEM
-// volume, taken off the kept surface's volume; the checkpoint after it holds a bed and a
-// volume mesh again. A checkpoint without its bed written
-// inside a stage is refused, naming the file.
+// the stop-and-resume test (30-degree sector, s = 4, wear amplified 20 times) with two
+// dem-only and two staged stages, run to the end of stage 3 and continued twice, once from its
+// checkpoint with the bed (the uninterrupted run) and once from the same checkpoint without
+// it (nor the sample's volume mesh). The second meshes the sample from its kept surface,
+// fills the bed anew on the worn surface, runs it for the schedule's two dem-only stages and
+// then wears stage 4 from the same surface: stages 1 to 3 stay as they were, bit for bit;
+// stage 4's wear-law volume lies within 50 % of the uninterrupted run's mean per stage (the
+// same flow, another bed: measured +9 %, where the uninterrupted stages themselves scatter by
+// +-24 %); the volume applied is the amplified DEM volume, taken off the kept surface's
+// volume; the checkpoint after it holds a bed and a volume mesh again. A checkpoint without
+// its bed written inside a stage is refused, naming the file.
 #include "coupling/app/run_command.h"
 #include "coupling/output/checkpoint.h"
 #include "coupling/parameters/tester_scene_case.h"
@@ -71,7 +70,6 @@ TEST_CASE("wearsim run: a checkpoint kept without its particle bed continues wit
 
   // The same run continued from the checkpoint without its bed.
   fs::rename(kept, dir);
-  fs::remove(dir + "/checkpoint.previous.h5");
   c.has_bed = false;
   c.dem = {};
   auto& sample = c.scene.parts.at(0).sample; // kept without its volume mesh too
@@ -112,11 +110,10 @@ TEST_CASE("wearsim run: a checkpoint kept without its particle bed continues wit
         Approx(20 * continued).epsilon(1e-8)); // the amplified DEM volume, as in every stage
   // The part meshed anew from its kept surface encloses the same volume: stage 4 takes the
   // volume it applied off the kept one (the stage's own volume change is exact to 1e-3).
-  const double volume_after =
-      wear::meshes::enclosed_volume(read_checkpoint(checkpoint).scene.parts.at(0).sample.surface);
+  const Checkpoint after = read_checkpoint(checkpoint);
+  const double volume_after = wear::meshes::enclosed_volume(after.scene.parts.at(0).sample.surface);
   CHECK(volume_kept - volume_after ==
         Approx(stage_value(b, 4, "geometry_volume_change_m3")).epsilon(1e-6));
-  const Checkpoint after = read_checkpoint(checkpoint);
   CHECK(after.stages_done == 4);
   CHECK_FALSE(after.scene.parts.at(0).sample.tetrahedra.empty());
   CHECK(after.has_bed);
