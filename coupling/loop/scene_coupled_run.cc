@@ -56,6 +56,14 @@ std::vector<std::size_t> wearing_walls(const dem::SceneParameters& scene) {
   return wearing;
 }
 
+// The scene filled and settled as a new run fills it (also the bed of a run resumed without
+// one), its progress and over ranks its layout logged.
+void fill_bed(dem::SceneRun& scene, const RunOptions& options, std::ostream& log) {
+  scene.setup([&](const std::string& text) { log << "scene: " << text << "\n" << std::flush; });
+  if (options.ranks && options.ranks->n_ranks() > 1)
+    log << "scene: " << scene.rank_layout() << "; rank 0 writes" << std::endl;
+}
+
 } // namespace
 
 SceneCoupledRun::SceneCoupledRun(const CaseParameters& p, std::ostream& log,
@@ -165,14 +173,12 @@ std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::setup() {
   }
   scene_ = std::make_unique<dem::SceneRun>(p_.scene, p_.dem, std::move(walls));
   scene_->set_rank_link(options_.ranks);
-  scene_->setup([&](const std::string& text) { log_ << "scene: " << text << "\n" << std::flush; });
+  fill_bed(*scene_, options_, log_);
   if (moves_nodes_) {
     move_part_nodes();
     log_ << "scene: the wearing parts' nodes move inside the DEM every "
          << p_.deformation.update_interval << " steps (reference scheme)\n";
   }
-  if (options_.ranks && options_.ranks->n_ranks() > 1)
-    log_ << "scene: " << scene_->rank_layout() << "; rank 0 writes" << std::endl;
   for (auto& part : parts_)
     part.record_initial(scene_->time());
   log_ << "scene: " << scene_->walls().size() << " walls (" << parts_.size() << " wearing), "
@@ -250,9 +256,7 @@ SceneCoupledRun::OpenSceneStage SceneCoupledRun::refill(const std::string& path,
        << "surfaces and runs " << format("%.4g", open.warm_up) << " s (the schedule's leading "
        << "dem-only stages) before stage " << next << " begins; its clock starts again, so the "
        << "stages' times from here on are the new bed's" << std::endl;
-  scene_->setup([&](const std::string& text) { log_ << "scene: " << text << "\n" << std::flush; });
-  if (options_.ranks && options_.ranks->n_ranks() > 1)
-    log_ << "scene: " << scene_->rank_layout() << "; rank 0 writes" << std::endl;
+  fill_bed(*scene_, options_, log_);
   if (ranks_.writer()) {
     // A run carried to another machine brings its checkpoint, not its scene tables.
     const bool kept = std::filesystem::exists(p_.output.directory + "/scene_series.csv");
@@ -313,13 +317,13 @@ StageRecord SceneCoupledRun::begin_stage(std::size_t k) const {
 std::optional<std::vector<dem::WallLoads>>
 SceneCoupledRun::run_dem(StageRecord& r, std::optional<OpenSceneStage> open,
                          const StopSignals& signals) {
-  const meshes::Stopwatch clock;
   OpenSceneStage stage = open ? std::move(*open) : next_stage();
   if (stage.warm_up > 0) {
     if (!warm_up(stage.warm_up, signals))
       return std::nullopt;
     stage = next_stage(); // the stage begins where the warm-up ends
   }
+  const meshes::Stopwatch clock; // the stage's own DEM time, without a warm-up
   const double every = p_.scene.output_interval;
   const double interval = p_.output.checkpoint_interval;
   meshes::Stopwatch since_checkpoint;
