@@ -50,6 +50,15 @@
 namespace wear::fem {
 
 namespace {
+
+/// The two accumulated fields of a sample on `surface`, zero: the volume each face has lost
+/// (extensive) and the depth it has receded (intensive).
+meshes::FaceField<double> removed_volume_field(const meshes::SurfaceMesh& surface) {
+  return {"removed volume", "m^3", meshes::Extensivity::extensive, surface};
+}
+meshes::FaceField<double> wear_depth_field(const meshes::SurfaceMesh& surface) {
+  return {"wear depth", "m", meshes::Extensivity::intensive, surface};
+}
 // The stage's removed volume on the wear face only (sides and bottom do not recede); its sum
 // goes to r.removed_volume.
 meshes::FaceField<double> wear_face_share(const meshes::FaceField<double>& removed,
@@ -226,9 +235,8 @@ void WornSample::mesh_kept_surface(const WornSampleState& st) {
   if (st.removed_volume.size() != st.surface.n_faces() ||
       st.wear_depth.size() != st.surface.n_faces())
     throw std::runtime_error("worn sample state: face fields do not match the surface");
-  removed_ = meshes::FaceField<double>("removed volume", "m^3", meshes::Extensivity::extensive,
-                                       st.surface);
-  depth_ = meshes::FaceField<double>("wear depth", "m", meshes::Extensivity::intensive, st.surface);
+  removed_ = removed_volume_field(st.surface);
+  depth_ = wear_depth_field(st.surface);
   removed_.values() = st.removed_volume;
   depth_.values() = st.wear_depth;
   const std::vector<std::pair<std::uint32_t, std::uint32_t>> no_sharp_edges;
@@ -275,9 +283,8 @@ void WornSample::set_surface(const meshes::SurfaceMesh& surface) {
                              "clamped: the sample's bottom, a part's Clamped surfaces); the FEM "
                              "would have nothing to hold it");
   map_ = std::make_unique<BoundaryFaceMap>(*tria_, surface);
-  removed_ =
-      meshes::FaceField<double>("removed volume", "m^3", meshes::Extensivity::extensive, surface);
-  depth_ = meshes::FaceField<double>("wear depth", "m", meshes::Extensivity::intensive, surface);
+  removed_ = removed_volume_field(surface);
+  depth_ = wear_depth_field(surface);
 }
 
 WearStageReport WornSample::apply_wear(const meshes::FaceField<double>& removed) {

@@ -94,10 +94,10 @@ struct WearStageReport {
 };
 
 /// A worn sample as plain arrays, for checkpoints: the volume mesh, its boundary surface
-/// (with the revision the face fields refer to) and the accumulated fields.
-/// A worn sample's state. Kept without its volume mesh (vertices, tetrahedra and boundary
-/// arrays empty; a run carried between machines keeps the surface and its fields, a fraction
-/// of the size), the sample is meshed anew from its surface when it is read back.
+/// (with the revision the face fields refer to) and the accumulated fields. The volume mesh
+/// may be left out (vertices, tetrahedra and boundary arrays empty: a run carried between
+/// machines keeps the surface and its fields, a fraction of the size); the sample is then
+/// meshed anew from its surface when it is read back.
 struct WornSampleState {
   std::vector<double> vertices;                   ///< [m] n x 3, sample frame
   std::vector<std::int64_t> tetrahedra;           ///< n x 4 vertex indices

@@ -32,9 +32,9 @@ struct Checkpoint {
   std::string parameters; ///< fully resolved case of the run (resume refuses another)
   dem::SystemState dem;   ///< with its continuation (a checkpoint lies between two steps)
   /// False for a checkpoint kept without its particle bed (no /dem in the file, the root's
-  /// attribute without_bed = 1; `dem` empty):
-  /// a kept run carried between machines (cases/reference-study/keep_running.sh), written at
-  /// a stage's end. Its resume fills the bed anew (SceneCoupledRun).
+  /// attribute without_bed = 1; `dem` empty): a kept run carried between machines
+  /// (cases/reference-study/keep_running.sh), written at a stage's end. Its resume fills the
+  /// bed anew (SceneCoupledRun).
   bool has_bed = true;
   SceneCheckpoint scene; ///< the scene's own part and its wearing parts
 };
