@@ -162,4 +162,19 @@ void NeighborList::concatenate(int n_threads) {
   }
 }
 
+void NeighborList::drop_pairs_within(const std::vector<std::int32_t>& group) {
+  const std::size_t n = group.size();
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < pair_i.size(); ++k) {
+    const std::uint32_t i = pair_i[k], j = pair_j[k];
+    if (j < n && group[i] >= 0 && group[i] == group[j])
+      continue;
+    pair_i[kept] = i;
+    pair_j[kept] = j;
+    ++kept;
+  }
+  pair_i.resize(kept);
+  pair_j.resize(kept);
+}
+
 } // namespace wear::dem

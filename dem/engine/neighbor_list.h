@@ -16,6 +16,9 @@ public:
   /// Rebuilds from the current positions (real and ghost slots). Reuses its buffers.
   void build(const Particles& p, double skin);
   std::size_t n_pairs() const { return pair_i.size(); }
+  /// Removes, keeping the order, the pairs of two real slots of one group (group[slot] >= 0
+  /// and equal; `group` covers the real slots, ghosts belong to none).
+  void drop_pairs_within(const std::vector<std::int32_t>& group);
 
 private:
   struct CellGrid;

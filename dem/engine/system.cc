@@ -25,10 +25,6 @@
 
 namespace wear::dem {
 
-namespace {
-enum ErrorKind { no_error = 0, not_finite = 1, too_fast = 2, outside = 3, too_many_walls = 4 };
-} // namespace
-
 int System::add_wall(const MeshWall& wall) {
   const int w = register_wall(WallKind::mesh, walls_.size(), wall.name(), wall.material());
   walls_.push_back(wall);
@@ -115,6 +111,10 @@ void System::setup() {
     throw std::invalid_argument(
         "DEM: walls with a rigid motion cannot be combined with a periodic boundary");
   next_id_ = first_free_id(p.id.data(), p.n_real);
+  if (!clumps_.empty() && (rank_link_ || periodic()))
+    throw std::invalid_argument("DEM: clumps are stepped in one process without a periodic "
+                                "boundary; a bed of clumps over ranks or across a periodic "
+                                "boundary is not available");
   if (rank_link_)
     check_ranks_at_setup();
   set_n_threads(omp_get_max_threads());
@@ -127,6 +127,7 @@ void System::setup() {
   compute_forces();
   if (rank_link_)
     return_ghost_forces();
+  gather_clump_forces();
 }
 
 void System::set_n_threads(int n) {
@@ -233,7 +234,7 @@ void System::advance(bool close_previous) {
   {
     const int thread = omp_get_thread_num();
     const auto [i0, i1] = kick_range(thread);
-    for (std::size_t i = i0; i < i1; ++i) {
+    const auto drift = [&](std::size_t i) {
       const Vec3 f = p.force[i], t = p.torque[i];
       if (close_previous)
         closing_kick(i, f, t);
@@ -257,6 +258,16 @@ void System::advance(bool close_previous) {
         }
       }
       max_moved2 = std::max(max_moved2, meshes::norm2(p.position[i] - reference_position_[i]));
+    };
+    if (clumps_.empty()) {
+      for (std::size_t i = i0; i < i1; ++i)
+        drift(i);
+    } else {
+      // Members move with their bodies (drift_clumps), the free spheres as before.
+      for (std::size_t i = i0; i < i1; ++i)
+        if (body_of_slot_[i] < 0)
+          drift(i);
+      drift_clumps(thread, close_previous, max_moved2);
     }
   }
   if (close_previous) {
@@ -287,6 +298,7 @@ void System::advance(bool close_previous) {
       phase_times_.integration += omp_get_wtime() - t_drift;
     }
     compute_forces();
+    gather_clump_forces();
   }
   for (int t = 0; t < n_threads_; ++t)
     if (error_kind_[t] != no_error)
@@ -298,9 +310,17 @@ void System::close_step() {
   const double t_begin = omp_get_wtime();
 #pragma omp parallel num_threads(n_threads_)
   {
-    const auto [i0, i1] = kick_range(omp_get_thread_num());
-    for (std::size_t i = i0; i < i1; ++i)
-      closing_kick(i, p.force[i], p.torque[i]);
+    const int thread = omp_get_thread_num();
+    const auto [i0, i1] = kick_range(thread);
+    if (clumps_.empty()) {
+      for (std::size_t i = i0; i < i1; ++i)
+        closing_kick(i, p.force[i], p.torque[i]);
+    } else {
+      for (std::size_t i = i0; i < i1; ++i)
+        if (body_of_slot_[i] < 0)
+          closing_kick(i, p.force[i], p.torque[i]);
+      close_clumps(thread);
+    }
   }
   phase_times_.integration += omp_get_wtime() - t_begin;
   time_ += dt_;
@@ -364,8 +384,13 @@ void System::apply_foreign_forces() {
 void System::reset_forces() {
   auto& p = particles;
   for (std::size_t i = 0; i < p.n_real; ++i) {
-    p.force[i] = settings.gravity * p.mass[i];
+    // A member's force holds its contacts only; gravity acts on its body.
+    p.force[i] = clumps_.empty() || body_of_slot_[i] < 0 ? settings.gravity * p.mass[i] : Vec3{};
     p.torque[i] = {};
+  }
+  for (std::size_t b = 0; b < clumps_.size(); ++b) {
+    clumps_.force[b] = settings.gravity * clumps_.mass[b];
+    clumps_.torque[b] = {};
   }
 }
 
@@ -373,9 +398,17 @@ Energy System::energy() const {
   const auto& p = particles;
   Energy e;
   for (std::size_t i = 0; i < p.n_real; ++i) {
+    if (!clumps_.empty() && body_of_slot_[i] >= 0)
+      continue; // its body's motion is counted below
     e.kinetic += 0.5 * p.mass[i] * meshes::norm2(p.velocity[i]);
     e.rotational += 0.5 * p.inertia[i] * meshes::norm2(p.angular_velocity[i]);
     e.potential -= p.mass[i] * meshes::dot(settings.gravity, p.position[i]);
+  }
+  for (std::size_t b = 0; b < clumps_.size(); ++b) {
+    e.kinetic += 0.5 * clumps_.mass[b] * meshes::norm2(clumps_.velocity[b]);
+    e.rotational +=
+        rotational_energy(clumps_.orientation[b], clumps_.moments[b], clumps_.angular_momentum[b]);
+    e.potential -= clumps_.mass[b] * meshes::dot(settings.gravity, clumps_.position[b]);
   }
   // Hertz elastic energy 8/15 E* sqrt(R*) delta^(5/2), plus the tangential springs.
   for (std::size_t k = 0; k < neighbors_.n_pairs(); ++k) {
@@ -413,7 +446,7 @@ std::size_t System::RebuildScratch::bytes() const {
   std::size_t b = of(old_histories) + of(old_by_id.bucket) + of(old_by_id.entry) + of(bucket_fill) +
                   of(slots_of_id) + of(wrap) + of(n_candidates) + of(slots) + of(pair_touch) +
                   of(sort_key) + of(sort_perm) + of(gather_vec3) + of(gather_double) +
-                  of(gather_int) + of(gather_id);
+                  of(gather_int) + of(gather_id) + of(clump_slot_of_id);
   for (const auto& v : chunk_candidates)
     b += of(v);
   return b;

@@ -1,5 +1,7 @@
 #pragma once
 // The DEM system: particles, walls, materials and the time loop (velocity Verlet).
+#include "dem/engine/clump_shape.h"
+#include "dem/engine/clumps.h"
 #include "dem/engine/material.h"
 #include "dem/engine/mesh_wall.h"
 #include "dem/engine/neighbor_list.h"
@@ -249,6 +251,17 @@ public:
   /// The stable id the next inserted particle gets: ids are never reused.
   std::int64_t next_id() const { return next_id_; }
 
+  /// Adds a rigid clump of `shape` (its body frame and size as they are) before setup():
+  /// its members become particles of `material` with the next ids, the body's mass is
+  /// density x the union's volume, its moments density x the shape's. The centre of mass at
+  /// x, orientation q (body -> space), velocity v and angular velocity w (space frame).
+  /// Returns the body's index. Throws std::invalid_argument for a non-positive density, an
+  /// unknown material or a shape without members, and std::logic_error after setup().
+  std::size_t add_clump(const ClumpShape& shape, double density, int material, const Vec3& x,
+                        const Quaternion& q, const Vec3& v = {}, const Vec3& w = {});
+  /// The bodies (empty for a bed of spheres).
+  const Clumps& clumps() const { return clumps_; }
+
   /// The state that decides the continuation (see SystemState).
   SystemState export_state() const;
   /// Takes over a state exported from a System with the same particles (radii, materials),
@@ -355,6 +368,19 @@ private:
   /// message of a run that stops on it (system_diagnostics.cc).
   std::string describe_surroundings(std::size_t i) const;
   void close_step(); ///< closing half-kick, clock
+  // Clumps (system_clumps.cc): members move with their bodies, their forces act on them.
+  Clumps clumps_;
+  std::vector<std::int32_t> body_of_slot_; ///< per real slot: its body, -1 for a free sphere
+  /// Bodies [first, second) of `thread` in the drift and kick: equal counts.
+  std::pair<std::size_t, std::size_t> body_range(int thread) const;
+  /// The drift pass for the bodies of `thread`: closing half-kick of the previous step if
+  /// `close_previous`, opening half-kick, drift and rotation, the members placed and packed,
+  /// their forces zeroed and the bodies' set to gravity; the members' largest squared
+  /// displacement since the last rebuild into max_moved2.
+  void drift_clumps(int thread, bool close_previous, double& max_moved2);
+  void close_clumps(int thread); ///< closing half-kick of the bodies of `thread`
+  /// The members' forces and torques onto their bodies (after the force evaluation).
+  void gather_clump_forces();
   /// Particles [first, second) of `thread` in the drift and kick: equal counts.
   std::pair<std::size_t, std::size_t> kick_range(int thread) const;
   /// v += dt/2 F/m, w += dt/2 T/I for particle i.
@@ -517,7 +543,8 @@ private:
     std::vector<double> gather_double;
     std::vector<int> gather_int;
     std::vector<std::int64_t> gather_id;
-    std::size_t bytes() const; ///< [B] the storage held
+    std::vector<std::int64_t> clump_slot_of_id; ///< Clumps::index_members' table
+    std::size_t bytes() const;                  ///< [B] the storage held
   };
   RebuildScratch rebuild_scratch_;
   /// The history of the untaken old slot (of a near-wall particle) of this wall whose normal
@@ -530,6 +557,8 @@ private:
   PhaseTimes phase_times_;
   std::vector<double> thread_pair_seconds_, thread_wall_seconds_; // of the last evaluation
 
+  /// What a step's check found wrong with a particle (error_kind_).
+  enum ErrorKind { no_error = 0, not_finite = 1, too_fast = 2, outside = 3, too_many_walls = 4 };
   // First problem seen inside a parallel loop (smallest particle index wins).
   std::vector<long> error_particle_;
   std::vector<int> error_kind_;

@@ -369,7 +369,7 @@ void System::wall_forces(int thread, Vec3* F, Vec3* T) {
     }
     if (overflow && (error_particle_[thread] < 0 || long(i) < error_particle_[thread])) {
       error_particle_[thread] = long(i);
-      error_kind_[thread] = 4; // too many wall contacts (system.cc)
+      error_kind_[thread] = too_many_walls;
     }
     WallSlot* slot = &slots_[wall_slots * q];
     for (int s = 0; s < n_new; ++s)

@@ -37,6 +37,8 @@ std::int64_t first_free_id(const std::int64_t* id, std::size_t n) {
 void System::insert_particles(const std::vector<NewParticle>& batch) {
   if (!set_up_)
     throw std::logic_error("System::insert_particles() before setup(): add them to particles");
+  if (!clumps_.empty())
+    throw std::logic_error("DEM: particles are not inserted into a bed of clumps");
   for (std::size_t k = 0; k < batch.size(); ++k) {
     const NewParticle& q = batch[k];
     const std::string what = "DEM: inserted particle " + std::to_string(k) + " of the batch";
@@ -62,6 +64,8 @@ std::vector<RemovedParticle>
 System::remove_particles(const std::function<bool(const Vec3&, double)>& remove) {
   if (!set_up_)
     throw std::logic_error("System::remove_particles() before setup()");
+  if (!clumps_.empty())
+    throw std::logic_error("DEM: particles are not removed from a bed of clumps");
   std::vector<RemovedParticle> removed;
   double any = 0;
   for (std::size_t i = 0; i < particles.n_real && any == 0; ++i)

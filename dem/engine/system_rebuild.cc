@@ -113,6 +113,11 @@ void System::relist(const std::vector<CarriedHistory>& old,
   make_ghosts();
   check_particles_or_throw("at a neighbour-list rebuild");
   neighbors_.build(particles, skin_);
+  if (!clumps_.empty()) {
+    // The members of one body never touch: their pairs leave the list.
+    clumps_.index_members(particles, scratch.clump_slot_of_id, body_of_slot_);
+    neighbors_.drop_pairs_within(body_of_slot_);
+  }
   carry_pair_histories(old_by_id);
   find_wall_candidates(scratch.n_candidates);
   index_wall_particles(scratch.n_candidates);

@@ -37,6 +37,8 @@ namespace wear::dem {
 SystemState System::export_state() const {
   if (!set_up_)
     throw std::logic_error("System::export_state() before setup()");
+  if (!clumps_.empty())
+    throw std::logic_error("DEM: the state of a bed of clumps is not exported or imported");
   const auto& p = particles;
   const std::size_t n = p.n_real;
   SystemState s;
@@ -216,6 +218,8 @@ void System::take_particles(const SystemState& s) {
 void System::import_state(const SystemState& s) {
   if (!set_up_)
     throw std::logic_error("System::import_state() before setup()");
+  if (!clumps_.empty())
+    throw std::logic_error("DEM: the state of a bed of clumps is not exported or imported");
   if (rank_link_ && s.n_ranks == 1) {
     import_whole_state(s);
     return;
@@ -251,6 +255,8 @@ void System::add_wear_window(const SystemState& s) {
 void System::resume_state(const SystemState& s) {
   if (!set_up_)
     throw std::logic_error("System::resume_state() before setup()");
+  if (!clumps_.empty())
+    throw std::logic_error("DEM: the state of a bed of clumps is not exported or imported");
   check_importable(s);
   check_resumable(s);
   take_particles(s);

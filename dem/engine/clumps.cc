@@ -1,0 +1,80 @@
+// Rigid clumps in the engine: members placed by their body's pose, member forces gathered
+// onto the body.
+//
+// A member i of body b at the body-frame offset c_i sits at x_i = x_b + R(q_b) c_i and moves
+// with the rigid motion, v_i = v_b + omega_b x (x_i - x_b), spinning at omega_b; its particle
+// carries the body's mass, so that a contact's effective mass is that of the bodies that meet.
+// The contact forces on the members sum to the body's force and, with their levers about the
+// centre of mass, to its torque:
+//   F_b = m_b g + sum_i F_i,   T_b = sum_i ((x_i - x_b) x F_i + T_i).
+// Pairs of members of one body never touch (the System leaves them out of its pair list).
+#include "dem/engine/clumps.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace wear::dem {
+
+void Clumps::add_body(const Vec3& x, const Vec3& v, const Quaternion& q, const Vec3& L, double m,
+                      const Vec3& principal_moments, const std::vector<std::int64_t>& ids,
+                      const std::vector<Vec3>& offsets) {
+  position.push_back(x);
+  velocity.push_back(v);
+  orientation.push_back(q);
+  angular_momentum.push_back(L);
+  force.push_back({});
+  torque.push_back({});
+  mass.push_back(m);
+  moments.push_back(principal_moments);
+  member_id.insert(member_id.end(), ids.begin(), ids.end());
+  member_offset.insert(member_offset.end(), offsets.begin(), offsets.end());
+  member_slot.resize(member_id.size(), 0);
+  member_begin.push_back(std::uint32_t(member_id.size()));
+}
+
+void Clumps::index_members(const Particles& p, std::vector<std::int64_t>& slot_of_id,
+                           std::vector<std::int32_t>& body_of_slot) {
+  // Slot by id, through a table as long as the largest id (ids are dense: never reused).
+  std::int64_t bound = 0;
+  for (std::size_t i = 0; i < p.n_real; ++i)
+    bound = std::max(bound, p.id[i] + 1);
+  slot_of_id.assign(std::size_t(bound), -1);
+  for (std::size_t i = 0; i < p.n_real; ++i)
+    slot_of_id[std::size_t(p.id[i])] = std::int64_t(i);
+  body_of_slot.assign(p.n_real, -1);
+  for (std::size_t b = 0; b < size(); ++b)
+    for (std::uint32_t k = member_begin[b]; k < member_begin[b + 1]; ++k) {
+      const std::int64_t id = member_id[k];
+      const std::int64_t slot = id >= 0 && id < bound ? slot_of_id[std::size_t(id)] : -1;
+      if (slot < 0)
+        throw std::logic_error("DEM: member particle " + std::to_string(id) + " of clump " +
+                               std::to_string(b) + " is missing");
+      member_slot[k] = std::uint32_t(slot);
+      body_of_slot[std::size_t(slot)] = std::int32_t(b);
+    }
+}
+
+void Clumps::place_members(std::size_t b, Particles& p) const {
+  const Vec3 w = angular_velocity(b);
+  for (std::uint32_t k = member_begin[b]; k < member_begin[b + 1]; ++k) {
+    const std::uint32_t i = member_slot[k];
+    const Vec3 arm = rotate(orientation[b], member_offset[k]);
+    p.position[i] = position[b] + arm;
+    p.velocity[i] = velocity[b] + meshes::cross(w, arm);
+    p.angular_velocity[i] = w;
+  }
+}
+
+void Clumps::gather_forces(std::size_t b, const Particles& p) {
+  Vec3 f = force[b], t = torque[b];
+  for (std::uint32_t k = member_begin[b]; k < member_begin[b + 1]; ++k) {
+    const std::uint32_t i = member_slot[k];
+    f += p.force[i];
+    t += meshes::cross(p.position[i] - position[b], p.force[i]) + p.torque[i];
+  }
+  force[b] = f;
+  torque[b] = t;
+}
+
+} // namespace wear::dem
