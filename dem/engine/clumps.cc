@@ -56,10 +56,22 @@ void Clumps::index_members(const Particles& p, std::vector<std::int64_t>& slot_o
 }
 
 void Clumps::place_members(std::size_t b, Particles& p) const {
-  const Vec3 w = angular_velocity(b);
+  // The rotation as a matrix (rows r0, r1, r2), built once for the body's members.
+  const Quaternion& q = orientation[b];
+  const double xx = q.x * q.x, yy = q.y * q.y, zz = q.z * q.z, xy = q.x * q.y, xz = q.x * q.z,
+               yz = q.y * q.z, wx = q.w * q.x, wy = q.w * q.y, wz = q.w * q.z;
+  const Vec3 r0{1 - 2 * (yy + zz), 2 * (xy - wz), 2 * (xz + wy)};
+  const Vec3 r1{2 * (xy + wz), 1 - 2 * (xx + zz), 2 * (yz - wx)};
+  const Vec3 r2{2 * (xz - wy), 2 * (yz + wx), 1 - 2 * (xx + yy)};
+  const auto turn = [&](const Vec3& v) {
+    return Vec3{meshes::dot(r0, v), meshes::dot(r1, v), meshes::dot(r2, v)};
+  };
+  const Vec3& L = angular_momentum[b];
+  const Vec3 l = r0 * L.x + r1 * L.y + r2 * L.z; // R^T L
+  const Vec3 w = turn({l.x / moments[b].x, l.y / moments[b].y, l.z / moments[b].z});
   for (std::uint32_t k = member_begin[b]; k < member_begin[b + 1]; ++k) {
     const std::uint32_t i = member_slot[k];
-    const Vec3 arm = rotate(orientation[b], member_offset[k]);
+    const Vec3 arm = turn(member_offset[k]);
     p.position[i] = position[b] + arm;
     p.velocity[i] = velocity[b] + meshes::cross(w, arm);
     p.angular_velocity[i] = w;

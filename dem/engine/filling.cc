@@ -138,6 +138,54 @@ std::size_t insert_random(Particles& p, const FillRegion& region, const SizeDist
   return added;
 }
 
+std::size_t insert_random_clumps(System& system, const FillRegion& region,
+                                 const SizeDistribution& psd, const ClumpShape& shape,
+                                 std::size_t n, double density, int material, std::uint64_t seed,
+                                 std::size_t max_attempts) {
+  psd.validate();
+  if (shape.members.empty() || !(shape.volume > 0))
+    throw std::invalid_argument("DEM: clump shape '" + shape.name + "' has no members");
+  Particles& p = system.particles;
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> ux(region.lo.x, region.hi.x), uy(region.lo.y, region.hi.y),
+      uz(region.lo.z, region.hi.z), u01(0, 1);
+  // Cells of the largest member diameter at the largest scale: a member's overlaps lie in
+  // its own cell and the 26 around it.
+  double r_member = 0;
+  for (const auto& m : shape.members)
+    r_member = std::max(r_member, m.radius);
+  const double largest_scale = psd.max_diameter() / shape.equivalent_diameter();
+  InsertionGrid grid(p, 2 * r_member * largest_scale);
+  const std::vector<double> diameters = diameters_to_place(psd, n, rng);
+  std::vector<Vec3> placed(shape.members.size());
+  std::size_t added = 0, fails = 0;
+  while (added < n && fails < max_attempts) {
+    const double scale = diameters[added] * psd.scaling_factor / shape.equivalent_diameter();
+    const Vec3 x{ux(rng), uy(rng), uz(rng)};
+    // A uniform random rotation (Shoemake 1992).
+    const double u1 = u01(rng), u2 = 2 * pi * u01(rng), u3 = 2 * pi * u01(rng);
+    const Quaternion q{std::sqrt(u1) * std::cos(u3), std::sqrt(1 - u1) * std::sin(u2),
+                       std::sqrt(1 - u1) * std::cos(u2), std::sqrt(u1) * std::sin(u3)};
+    bool clear = true;
+    for (std::size_t k = 0; k < shape.members.size() && clear; ++k) {
+      placed[k] = x + rotate(q, shape.members[k].centre * scale);
+      clear =
+          region.inside(placed[k]) && !grid.overlaps(p, placed[k], shape.members[k].radius * scale);
+    }
+    if (!clear) {
+      ++fails;
+      continue;
+    }
+    fails = 0;
+    const std::size_t first = p.n_real;
+    system.add_clump(shape.scaled(scale), density, material, x, q);
+    for (std::size_t k = 0; k < shape.members.size(); ++k)
+      grid.add(p.position[first + k], std::uint32_t(first + k));
+    ++added;
+  }
+  return added;
+}
+
 std::size_t insert_lattice(Particles& p, const FillRegion& region, double a, double diameter,
                            double density, int material, double jitter, std::uint64_t seed,
                            std::size_t max_n) {

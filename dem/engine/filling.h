@@ -49,6 +49,17 @@ std::size_t insert_lattice(Particles& p, const FillRegion& region, double a, dou
                            std::size_t max_n = ~std::size_t(0));
 
 class System;
+struct ClumpShape;
+
+/// Inserts up to n rigid clumps of `shape` into `system` (before its setup) at random centres
+/// and orientations (uniform over rotations), without overlap of any member with a particle
+/// already there or a member of another clump, every member's centre inside `region`; each
+/// clump scaled so that its equivalent-volume diameter is one drawn from the PSD (deterministic
+/// for a seed). Returns the number inserted; stops after max_attempts consecutive failures.
+std::size_t insert_random_clumps(System& system, const FillRegion& region,
+                                 const SizeDistribution& psd, const ClumpShape& shape,
+                                 std::size_t n, double density, int material, std::uint64_t seed,
+                                 std::size_t max_attempts = 200000);
 
 /// Result of fill_to_height.
 struct FillReport {
