@@ -237,6 +237,14 @@ void report_memory(const dem::System& s, std::ostream& out) {
 // wall contacts are the filled history slots of the exported state (after the peak memory
 // was read: the export is a copy).
 void report_contacts(const dem::System& s, std::ostream& out) {
+  if (!s.clumps().empty()) { // a bed of clumps has no state export (yet): pairs only
+    out << format("contacts per particle: %.3f pair contacts; %zu particles (members of %zu "
+                  "clumps)\n",
+                  double(s.n_pair_contacts()) /
+                      double(std::max<std::size_t>(1, s.particles.n_real)),
+                  s.particles.n_real, s.clumps().size());
+    return;
+  }
   const auto state = s.export_state();
   const std::size_t n_near = state.wall_particles.size();
   const std::size_t per = n_near > 0 ? state.slot_wall.size() / n_near : 0;

@@ -3,8 +3,8 @@
 // and nz = round(45000 / sites per layer) layers, giving the anchor's 44,448 particles.
 #include "dem/engine/benchmark.h"
 
-#include "meshes/constants.h"
 #include "dem/engine/filling.h"
+#include "meshes/constants.h"
 #include "meshes/structured_grid.h"
 #include "meshes/tester_walls.h"
 
@@ -126,6 +126,30 @@ void add_sector(System& s, int g, std::size_t target, bool with_plate, bool mesh
                     }};
   insert_lattice(s.particles, region, a, d0, 2650, g, 1e-4, 15485863);
 }
+/// The annulus of add_annulus with rigid clumps of four spheres instead of spheres: as many
+/// member spheres (44,448 in 11,112 clumps), members of 7.95 mm mean diameter (the
+/// irregular tetrahedron of the shape library's "crushed stone 4", scaled), inserted at random
+/// orientations into the annulus up to 0.25 m and settled by the benchmark's settle steps.
+void add_annulus_clumps(System& s, int g) {
+  add_revolution_walls(s, g, 0.3, false);
+  const ClumpTemplate t{
+      "crushed stone 4",
+      {{{0.7, 0, 0}, 1}, {{-0.6, 0.4, 0.1}, 0.9}, {{-0.3, -0.5, 0}, 0.85}, {{0, 0.1, 0.45}, 0.8}}};
+  const double mean_radius = (1 + 0.9 + 0.85 + 0.8) / 4;
+  const ClumpShape shape = clump_shape(t);
+  SizeDistribution psd;
+  psd.diameters = {d0 / (2 * mean_radius) * shape.equivalent_diameter()};
+  psd.mass_fractions = {1};
+  const double margin = 0.5 * d0 / mean_radius; // the largest member's radius
+  FillRegion region{{-ro, -ro, 0}, {ro, ro, 0.25}, [=](const Vec3& x) {
+                      const double r = std::hypot(x.x, x.y);
+                      return ri + margin < r && r < ro - margin && x.z > margin && x.z < 0.25;
+                    }};
+  const std::size_t n = insert_random_clumps(s, region, psd, shape, 11112, 2650, g, 15485863);
+  if (n != 11112)
+    throw std::runtime_error("benchmark annulus-clumps: only " + std::to_string(n) +
+                             " of 11112 clumps found room");
+}
 } // namespace
 
 void build_benchmark(System& s, const BenchmarkOptions& o) {
@@ -142,6 +166,12 @@ void build_benchmark(System& s, const std::string& workload, bool mesh_walls) {
     add_annulus(s, g, mesh_walls);
     return;
   }
+  if (workload == "annulus-clumps") {
+    if (mesh_walls)
+      throw std::invalid_argument("benchmark annulus-clumps: revolution walls only");
+    add_annulus_clumps(s, g);
+    return;
+  }
   std::size_t target = 0;
   if (workload == "sector5k")
     target = 5000;
@@ -151,7 +181,8 @@ void build_benchmark(System& s, const std::string& workload, bool mesh_walls) {
     target = 45000;
   else
     throw std::invalid_argument("unknown benchmark workload '" + workload +
-                                "' (annulus, sector5k, sector20k, sector45k, sample45k)");
+                                "' (annulus, annulus-clumps, sector5k, sector20k, sector45k, "
+                                "sample45k)");
   add_sector(s, g, target, workload == "sample45k", mesh_walls);
 }
 

@@ -8,7 +8,8 @@
 namespace wear::dem {
 
 struct BenchmarkOptions {
-  std::string workload = "annulus";   ///< annulus | sector5k | sector20k | sector45k | sample45k
+  /// annulus | annulus-clumps | sector5k | sector20k | sector45k | sample45k
+  std::string workload = "annulus";
   std::uint64_t settle_steps = 24000; ///< as the anchor's NSETTLE, floor rotating
   std::uint64_t warm_steps = 500;
   std::uint64_t timed_steps = 2000;
@@ -22,6 +23,9 @@ struct BenchmarkOptions {
 /// nu = 0.25, e = 0.5, mu = 0.5, mu_r = 0.1, rho = 2650, dt = 20 % of the Rayleigh time,
 /// skin 2 mm, simple cubic lattice a = 1.03 d with 0.1 mm jitter, floor rotating at 90 deg/s.
 /// annulus: the full annulus 0.29..0.50 m with static cylinders (anchor annulus45k);
+/// annulus-clumps: the same walls and as many spheres as members of 11,112 rigid clumps of
+/// four (7.95 mm mean member diameter, random orientations, inserted loose and settled by the
+/// settle steps);
 /// sectorNk: the cylindrical periodic sector (our geometry for the anchor's periodic
 /// channels monoNk), 14 lattice layers, angle chosen for about N particles, rotating walls;
 /// sample45k: sector45k plus the anchor's 100 x 100 mm plate of 3200 triangles facing the flow.

@@ -55,6 +55,45 @@ void Clumps::index_members(const Particles& p, std::vector<std::int64_t>& slot_o
     }
 }
 
+void Clumps::order_by_members() {
+  const std::size_t n = size();
+  std::vector<std::uint32_t> order(n);
+  for (std::size_t b = 0; b < n; ++b)
+    order[b] = std::uint32_t(b);
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return member_slot[member_begin[a]] < member_slot[member_begin[b]];
+  });
+  const auto permute = [&](auto& v) {
+    auto old = v;
+    for (std::size_t b = 0; b < n; ++b)
+      v[b] = old[order[b]];
+  };
+  permute(position);
+  permute(velocity);
+  permute(orientation);
+  permute(angular_momentum);
+  permute(force);
+  permute(torque);
+  permute(mass);
+  permute(moments);
+  std::vector<std::uint32_t> begin{0};
+  std::vector<std::int64_t> ids;
+  std::vector<Vec3> offsets;
+  std::vector<std::uint32_t> slots;
+  for (const std::uint32_t b : order) {
+    for (std::uint32_t k = member_begin[b]; k < member_begin[b + 1]; ++k) {
+      ids.push_back(member_id[k]);
+      offsets.push_back(member_offset[k]);
+      slots.push_back(member_slot[k]);
+    }
+    begin.push_back(std::uint32_t(ids.size()));
+  }
+  member_begin = std::move(begin);
+  member_id = std::move(ids);
+  member_offset = std::move(offsets);
+  member_slot = std::move(slots);
+}
+
 void Clumps::place_members(std::size_t b, Particles& p) const {
   // The rotation as a matrix (rows r0, r1, r2), built once for the body's members.
   const Quaternion& q = orientation[b];

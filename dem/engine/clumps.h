@@ -45,6 +45,10 @@ struct Clumps {
   void index_members(const Particles& p, std::vector<std::int64_t>& slot_of_id,
                      std::vector<std::int32_t>& body_of_slot);
 
+  /// Reorders the bodies by the slot of their first member (after index_members), so that the
+  /// bodies' pass walks the particle arrays in their order instead of at random.
+  void order_by_members();
+
   /// [rad/s] The angular velocity of body b in the space frame.
   Vec3 angular_velocity(std::size_t b) const {
     return dem::angular_velocity(orientation[b], moments[b], angular_momentum[b]);

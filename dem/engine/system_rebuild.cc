@@ -108,7 +108,10 @@ void System::relist(const std::vector<CarriedHistory>& old,
   bucket_by_lower_id(old, old_by_id);
   // Every few rebuilds, reorder particles along the cell grid so that neighbours are
   // neighbours in memory (histories are keyed by id, so nothing is lost).
-  if (n >= 1000 && n_rebuilds_ % 10 == 0)
+  const bool sorted = n >= 1000 && n_rebuilds_ % 10 == 0;
+  if (sorted && !clumps_.empty() && body_of_slot_.size() != n) // the first rebuild
+    clumps_.index_members(particles, scratch.clump_slot_of_id, body_of_slot_);
+  if (sorted)
     sort_spatially();
   make_ghosts();
   check_particles_or_throw("at a neighbour-list rebuild");
@@ -116,6 +119,10 @@ void System::relist(const std::vector<CarriedHistory>& old,
   if (!clumps_.empty()) {
     // The members of one body never touch: their pairs leave the list.
     clumps_.index_members(particles, scratch.clump_slot_of_id, body_of_slot_);
+    if (sorted) { // the bodies follow their members' new order
+      clumps_.order_by_members();
+      clumps_.index_members(particles, scratch.clump_slot_of_id, body_of_slot_);
+    }
     neighbors_.drop_pairs_within(body_of_slot_);
   }
   carry_pair_histories(old_by_id);
@@ -395,9 +402,17 @@ void System::sort_spatially() {
   std::vector<std::uint32_t>& perm = rebuild_scratch_.sort_perm;
   key.resize(n);
   perm.resize(n);
+  // A clump's members take its centre's cell, so that they stay together (equal keys keep
+  // their order, and a clump's members are inserted together).
+  const bool clumps = !clumps_.empty();
 #pragma omp parallel for schedule(static) num_threads(n_threads_)
   for (std::size_t i = 0; i < n; ++i) {
-    const Vec3 q = (p.position[i] - lo) / cell;
+    const Vec3& x = clumps && body_of_slot_[i] >= 0
+                        ? clumps_.position[std::size_t(body_of_slot_[i])]
+                        : p.position[i];
+    // (A clump's centre may lie outside its members' centres' box: clamped to it.)
+    const Vec3 q{std::max(0.0, x.x - lo.x) / cell, std::max(0.0, x.y - lo.y) / cell,
+                 std::max(0.0, x.z - lo.z) / cell};
     key[i] = (std::uint64_t(q[axis[0]]) << 42) | (std::uint64_t(q[axis[1]]) << 21) |
              std::uint64_t(q[axis[2]]);
     perm[i] = std::uint32_t(i);
