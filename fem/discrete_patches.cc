@@ -13,6 +13,8 @@
 // plane graph in which each path lies on a cycle, so every piece it bounds is a disk.
 #include "fem/discrete_patches.h"
 
+#include "meshes/symmetric_eigen.h"
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -25,45 +27,6 @@
 namespace wear::fem {
 
 namespace {
-
-// Eigenvector of the smallest eigenvalue of the symmetric 3x3 matrix a (Jacobi rotations).
-meshes::Vec3 smallest_eigenvector(double a[3][3]) {
-  double v[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-  for (int sweep = 0; sweep < 50; ++sweep) {
-    const double off = std::abs(a[0][1]) + std::abs(a[0][2]) + std::abs(a[1][2]);
-    const double diag = std::abs(a[0][0]) + std::abs(a[1][1]) + std::abs(a[2][2]);
-    if (!(off > 1e-15 * diag))
-      break;
-    for (int p = 0; p < 2; ++p)
-      for (int q = p + 1; q < 3; ++q) {
-        if (a[p][q] == 0)
-          continue;
-        const double theta = (a[q][q] - a[p][p]) / (2 * a[p][q]);
-        const double t = (theta >= 0 ? 1 : -1) / (std::abs(theta) + std::sqrt(theta * theta + 1));
-        const double c = 1 / std::sqrt(t * t + 1), s = t * c;
-        for (int k = 0; k < 3; ++k) {
-          const double kp = a[k][p], kq = a[k][q];
-          a[k][p] = c * kp - s * kq;
-          a[k][q] = s * kp + c * kq;
-        }
-        for (int k = 0; k < 3; ++k) {
-          const double pk = a[p][k], qk = a[q][k];
-          a[p][k] = c * pk - s * qk;
-          a[q][k] = s * pk + c * qk;
-        }
-        for (int k = 0; k < 3; ++k) {
-          const double kp = v[k][p], kq = v[k][q];
-          v[k][p] = c * kp - s * kq;
-          v[k][q] = s * kp + c * kq;
-        }
-      }
-  }
-  int m = 0;
-  for (int k = 1; k < 3; ++k)
-    if (a[k][k] < a[m][m])
-      m = k;
-  return {v[0][m], v[1][m], v[2][m]};
-}
 
 // The patch's edges with the number of its faces on each, and its boundary loops: the
 // vertices of each loop and the loop's length [m].
@@ -140,7 +103,9 @@ PatchShape patch_shape(const meshes::SurfaceMesh& m, const std::vector<std::uint
         hi[i] = std::max(hi[i], m.vertices[v][i]);
       }
     }
-  auto n = smallest_eigenvector(a);
+  meshes::Vec3 values, vectors[3];
+  meshes::symmetric_eigen(a, values, vectors);
+  auto n = vectors[0]; // the smallest eigenvalue's
   if (meshes::dot(n, area_vector) < 0)
     n = -n;
   double deviation = 0;

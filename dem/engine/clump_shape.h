@@ -47,8 +47,4 @@ struct ClumpShape {
 /// for no members, a non-positive or non-finite radius or a non-finite centre.
 ClumpShape clump_shape(const ClumpTemplate& t, int cells_per_radius = 200);
 
-/// Eigenvalues (ascending) and unit eigenvectors of the symmetric 3 x 3 matrix a (cyclic
-/// Jacobi rotations to round-off); the vectors form a right-handed triad.
-void symmetric_eigen(const double a[3][3], Vec3& values, Vec3 vectors[3]);
-
 } // namespace wear::dem
