@@ -57,41 +57,49 @@ void Clumps::index_members(const Particles& p, std::vector<std::int64_t>& slot_o
 
 void Clumps::order_by_members() {
   const std::size_t n = size();
-  std::vector<std::uint32_t> order(n);
+  auto& order = scratch_.order;
+  order.resize(n);
   for (std::size_t b = 0; b < n; ++b)
     order[b] = std::uint32_t(b);
   std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
     return member_slot[member_begin[a]] < member_slot[member_begin[b]];
   });
-  const auto permute = [&](auto& v) {
-    auto old = v;
+  // Each array gathered in the new order into the buffer of its type, then swapped in (the
+  // buffer keeps the old array's storage for the next time).
+  const auto permute = [&](auto& v, auto& buffer) {
+    buffer.resize(n);
     for (std::size_t b = 0; b < n; ++b)
-      v[b] = old[order[b]];
+      buffer[b] = v[order[b]];
+    v.swap(buffer);
   };
-  permute(position);
-  permute(velocity);
-  permute(orientation);
-  permute(angular_momentum);
-  permute(force);
-  permute(torque);
-  permute(mass);
-  permute(moments);
-  std::vector<std::uint32_t> begin{0};
-  std::vector<std::int64_t> ids;
-  std::vector<Vec3> offsets;
-  std::vector<std::uint32_t> slots;
-  for (const std::uint32_t b : order) {
-    for (std::uint32_t k = member_begin[b]; k < member_begin[b + 1]; ++k) {
-      ids.push_back(member_id[k]);
-      offsets.push_back(member_offset[k]);
-      slots.push_back(member_slot[k]);
+  permute(position, scratch_.vec3);
+  permute(velocity, scratch_.vec3);
+  permute(orientation, scratch_.quaternion);
+  permute(angular_momentum, scratch_.vec3);
+  permute(force, scratch_.vec3);
+  permute(torque, scratch_.vec3);
+  permute(mass, scratch_.real);
+  permute(moments, scratch_.vec3);
+  // The members follow their bodies.
+  const std::size_t m = member_id.size();
+  scratch_.begin.resize(n + 1);
+  scratch_.id.resize(m);
+  scratch_.offset.resize(m);
+  scratch_.slot.resize(m);
+  std::uint32_t next = 0;
+  scratch_.begin[0] = 0;
+  for (std::size_t b = 0; b < n; ++b) {
+    for (std::uint32_t k = member_begin[order[b]]; k < member_begin[order[b] + 1]; ++k, ++next) {
+      scratch_.id[next] = member_id[k];
+      scratch_.offset[next] = member_offset[k];
+      scratch_.slot[next] = member_slot[k];
     }
-    begin.push_back(std::uint32_t(ids.size()));
+    scratch_.begin[b + 1] = next;
   }
-  member_begin = std::move(begin);
-  member_id = std::move(ids);
-  member_offset = std::move(offsets);
-  member_slot = std::move(slots);
+  member_begin.swap(scratch_.begin);
+  member_id.swap(scratch_.id);
+  member_offset.swap(scratch_.offset);
+  member_slot.swap(scratch_.slot);
 }
 
 void Clumps::place_members(std::size_t b, Particles& p) const {

@@ -31,6 +31,19 @@ struct Clumps {
   std::vector<std::uint32_t> member_slot;
 
   std::size_t size() const { return mass.size(); }
+
+private:
+  /// order_by_members' buffers: the new order and one array of each type, swapped in.
+  struct Scratch {
+    std::vector<std::uint32_t> order, begin, slot;
+    std::vector<std::int64_t> id;
+    std::vector<Vec3> vec3, offset;
+    std::vector<Quaternion> quaternion;
+    std::vector<double> real;
+  };
+  Scratch scratch_;
+
+public:
   bool empty() const { return mass.empty(); }
 
   /// Appends a body; its members' ids and body-frame offsets follow in member order.
@@ -46,7 +59,8 @@ struct Clumps {
                      std::vector<std::int32_t>& body_of_slot);
 
   /// Reorders the bodies by the slot of their first member (after index_members), so that the
-  /// bodies' pass walks the particle arrays in their order instead of at random.
+  /// bodies' pass walks the particle arrays in their order instead of at random. Its buffers
+  /// are kept (a rebuild in the step loop allocates nothing once they have grown).
   void order_by_members();
 
   /// [rad/s] The angular velocity of body b in the space frame.
