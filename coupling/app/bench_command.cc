@@ -237,7 +237,7 @@ void report_memory(const dem::System& s, std::ostream& out) {
 // wall contacts are the filled history slots of the exported state (after the peak memory
 // was read: the export is a copy).
 void report_contacts(const dem::System& s, std::ostream& out) {
-  if (!s.clumps().empty()) { // a bed of clumps has no state export (yet): pairs only
+  if (!s.clumps().empty()) { // a bed of clumps has no state export: pairs only
     out << format("contacts per particle: %.3f pair contacts; %zu particles (members of %zu "
                   "clumps)\n",
                   double(s.n_pair_contacts()) /
