@@ -55,7 +55,7 @@ void Clumps::index_members(const Particles& p, std::vector<std::int64_t>& slot_o
     }
 }
 
-void Clumps::order_by_members() {
+void Clumps::order_by_members(std::vector<std::int32_t>& body_of_slot) {
   const std::size_t n = size();
   auto& order = scratch_.order;
   order.resize(n);
@@ -93,6 +93,7 @@ void Clumps::order_by_members() {
       scratch_.id[next] = member_id[k];
       scratch_.offset[next] = member_offset[k];
       scratch_.slot[next] = member_slot[k];
+      body_of_slot[member_slot[k]] = std::int32_t(b);
     }
     scratch_.begin[b + 1] = next;
   }

@@ -59,9 +59,10 @@ public:
                      std::vector<std::int32_t>& body_of_slot);
 
   /// Reorders the bodies by the slot of their first member (after index_members), so that the
-  /// bodies' pass walks the particle arrays in their order instead of at random. Its buffers
-  /// are kept (a rebuild in the step loop allocates nothing once they have grown).
-  void order_by_members();
+  /// bodies' pass walks the particle arrays in their order instead of at random, and renumbers
+  /// `body_of_slot` (index_members' per-slot bodies) to match. Its buffers are kept (a rebuild
+  /// in the step loop allocates nothing once they have grown).
+  void order_by_members(std::vector<std::int32_t>& body_of_slot);
 
   /// [rad/s] The angular velocity of body b in the space frame.
   Vec3 angular_velocity(std::size_t b) const {

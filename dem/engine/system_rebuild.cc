@@ -119,10 +119,8 @@ void System::relist(const std::vector<CarriedHistory>& old,
   if (!clumps_.empty()) {
     // The members of one body never touch: their pairs leave the list.
     clumps_.index_members(particles, scratch.clump_slot_of_id, body_of_slot_);
-    if (sorted) { // the bodies follow their members' new order
-      clumps_.order_by_members();
-      clumps_.index_members(particles, scratch.clump_slot_of_id, body_of_slot_);
-    }
+    if (sorted) // the bodies follow their members' new order
+      clumps_.order_by_members(body_of_slot_);
     neighbors_.drop_pairs_within(body_of_slot_);
   }
   carry_pair_histories(old_by_id);
