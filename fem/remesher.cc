@@ -209,6 +209,14 @@ constexpr int keep_surface = 0; // attempt that keeps the input triangles, meshi
 // which has no other attempt to fall back to.
 constexpr double flat_tet_quality = 1e-8;
 
+// One way to mesh the volume: gmsh's 2D algorithm (or keep_surface), the feature angle of the
+// classification, and the quality below which a tetrahedron refuses the attempt.
+struct Attempt {
+  int algorithm;
+  double feature_angle_deg; ///< [deg]
+  double tet_floor;         ///< [-]
+};
+
 // The input faces of each patch gmsh classified (element tag = face + 1), by patch tag.
 std::map<int, std::vector<std::uint32_t>> patch_faces(const meshes::SurfaceMesh& worn) {
   gmsh::vectorpair surfaces;
@@ -269,17 +277,11 @@ HolePlan plan_holes(const meshes::SurfaceMesh& worn) {
   return plan;
 }
 
-// With `features` given (the old surface's sharp edges on a surface whose chamfers and slivers
-// are not to be split off, meshes::implicit_recession), they join the label boundaries and no
-// angle splits the patches further: at 80 deg the chamfers of a grid's zero set still split
-// into patches gmsh cannot parametrise ("Wrong topology of boundary mesh").
 void classify(const meshes::SurfaceMesh& worn, double feature_angle_deg,
-              const std::vector<Edge>& cuts, const std::vector<Edge>* features) {
+              const std::vector<Edge>& cuts) {
   std::vector<Edge> curves = cuts;
-  if (features)
-    curves.insert(curves.end(), features->begin(), features->end());
   add_label_boundaries(worn, curves);
-  gmsh::model::mesh::classifySurfaces(features ? pi : feature_angle_deg * pi / 180, true, true, pi);
+  gmsh::model::mesh::classifySurfaces(feature_angle_deg * pi / 180, true, true, pi);
 }
 
 // Classifies the input so that the patches gmsh reparametrises map without folding. gmsh
@@ -289,15 +291,14 @@ void classify(const meshes::SurfaceMesh& worn, double feature_angle_deg,
 // tolerance is raised to cover them, when every patch it would also cover is a graph over
 // its plane), or else, with few holes, cut open and classified again. A patch with many
 // holes that is no graph (the base late in the wear-out case) is left to the harmonic map.
-void classify_mappable(const meshes::SurfaceMesh& worn, double feature_angle_deg,
-                       const std::vector<Edge>* features, RemeshReport& r) {
-  classify(worn, feature_angle_deg, {}, features);
+void classify_mappable(const meshes::SurfaceMesh& worn, double feature_angle_deg, RemeshReport& r) {
+  classify(worn, feature_angle_deg, {});
   HolePlan plan = plan_holes(worn);
   r.n_cut_edges = plan.cuts.size();
   if (!plan.cuts.empty()) {
     gmsh::clear();
     add_discrete_surfaces(worn);
-    classify(worn, feature_angle_deg, plan.cuts, features);
+    classify(worn, feature_angle_deg, plan.cuts);
     plan = plan_holes(worn); // the pieces are new patches
   }
   if (plan.project_deviation > 0 && plan.projection_safe()) {
@@ -311,8 +312,8 @@ void classify_mappable(const meshes::SurfaceMesh& worn, double feature_angle_deg
 // parametrisation; returns the label of each patch. Refuses (throws) a classification that
 // loses a label or mixes labels in a patch.
 std::map<int, int> classify_patches(const meshes::SurfaceMesh& worn, double feature_angle_deg,
-                                    const std::vector<Edge>* features, RemeshReport& r) {
-  classify_mappable(worn, feature_angle_deg, features, r);
+                                    RemeshReport& r) {
+  classify_mappable(worn, feature_angle_deg, r);
   auto label_of = patch_labels(worn, &r.n_mixed_faces);
   // A small worn region can end up inside a neighbour's patch and lose its label in the
   // vote; fail this attempt so the next one (finally: keep the worn triangles) is tried.
@@ -411,9 +412,9 @@ void check_new_mesh(const meshes::SurfaceMesh& remeshed, double lowest, RemeshRe
 // One attempt: the discrete model, its parametrisation and the volume mesh with the given
 // 2D algorithm, written to msh_path. Fills the patch and mesh counts of r.
 meshes::SurfaceMesh mesh_discrete_volume(const meshes::SurfaceMesh& worn, const RemeshParameters& p,
-                                         int algorithm, double feature_angle_deg,
-                                         const std::vector<Edge>* features,
-                                         const std::string& msh_path, RemeshReport& r) {
+                                         const Attempt& attempt, const std::string& msh_path,
+                                         RemeshReport& r) {
+  const int algorithm = attempt.algorithm;
   meshes::GmshSession session("remesh");
   // With keep_surface the input entities stay and only the volume is meshed anew.
   auto label_of = add_discrete_surfaces(worn);
@@ -421,7 +422,7 @@ meshes::SurfaceMesh mesh_discrete_volume(const meshes::SurfaceMesh& worn, const 
   r.n_cut_edges = 0;
   r.planarity_tolerance = 0;
   if (algorithm != keep_surface)
-    label_of = classify_patches(worn, feature_angle_deg, features, r);
+    label_of = classify_patches(worn, attempt.feature_angle_deg, r);
   add_volume(label_of, r);
   set_size_field(worn, p);
   if (algorithm != keep_surface)
@@ -443,10 +444,7 @@ meshes::SurfaceMesh mesh_discrete_volume(const meshes::SurfaceMesh& worn, const 
   gmsh::model::mesh::generate(3);
   auto remeshed =
       meshes::gmsh_labelled_surface(&r.n_tetrahedra, &r.volume_after, &r.min_tet_quality);
-  // Kept as a last resort, a relaxed worn surface may leave nearly flat tetrahedra; an
-  // isotropic one (features given) has to give good ones.
-  check_new_mesh(remeshed,
-                 algorithm == keep_surface && !features ? flat_tet_quality : p.min_tet_quality, r);
+  check_new_mesh(remeshed, attempt.tet_floor, r);
   meshes::gmsh_write_msh(msh_path);
   return remeshed;
 }
@@ -477,33 +475,37 @@ void check_remesh_input(const meshes::SurfaceMesh& worn, const RemeshParameters&
 // repairs the interior, the surface triangles stay as relaxed by the wear stages). The
 // errors of the failed attempts are appended to `errors`.
 bool mesh_first_attempt_that_succeeds(const meshes::SurfaceMesh& input, const RemeshParameters& p,
-                                      const std::vector<Edge>* features,
-                                      const std::string& msh_path, meshes::SurfaceMesh& remeshed,
-                                      RemeshReport& r, std::string& errors) {
-  const double angle = p.feature_angle_deg;
-  std::vector<std::pair<int, double>> attempts = {{p.surface_algorithm, angle},
-                                                  {p.surface_algorithm, std::min(89.0, angle + 20)},
-                                                  {5, std::min(89.0, angle + 20)},
-                                                  {keep_surface, angle}};
-  // The implicit recession's surface is isotropic already: kept, it is the first attempt.
-  if (features)
-    attempts = {{keep_surface, angle}, {p.surface_algorithm, angle}, {5, angle}};
-  int attempt = 0;
-  for (const auto& [algorithm, feature_angle] : attempts) {
-    ++attempt;
+                                      SurfaceKind kind, const std::string& msh_path,
+                                      meshes::SurfaceMesh& remeshed, RemeshReport& r,
+                                      std::string& errors) {
+  const double angle = p.feature_angle_deg, wider = std::min(89.0, angle + 20);
+  // Kept as a last resort, a relaxed worn surface may leave nearly flat tetrahedra.
+  std::vector<Attempt> attempts = {{p.surface_algorithm, angle, p.min_tet_quality},
+                                   {p.surface_algorithm, wider, p.min_tet_quality},
+                                   {5, wider, p.min_tet_quality},
+                                   {keep_surface, angle, flat_tet_quality}};
+  // The implicit recession's surface is isotropic already: kept, it is the first attempt, and
+  // kept with the flat floor the second. gmsh's reparametrisation is no fallback for it: on
+  // the wear-out's convex sample (stage 15) its split of a patch (classifySurfaces, METIS) did
+  // not return in 75 minutes.
+  if (kind == SurfaceKind::isotropic)
+    attempts = {{keep_surface, angle, p.min_tet_quality}, {keep_surface, angle, flat_tet_quality}};
+  int n = 0;
+  for (const Attempt& attempt : attempts) {
+    ++n;
+    const std::string which = "[algorithm " + std::to_string(attempt.algorithm) + ", angle " +
+                              std::to_string(int(attempt.feature_angle_deg)) + "] ";
     try {
-      remeshed = mesh_discrete_volume(input, p, algorithm, feature_angle, features, msh_path, r);
-      r.attempt = attempt;
-      r.surface_algorithm = algorithm;
-      r.feature_angle_deg = feature_angle;
+      remeshed = mesh_discrete_volume(input, p, attempt, msh_path, r);
+      r.attempt = n;
+      r.surface_algorithm = attempt.algorithm;
+      r.feature_angle_deg = attempt.feature_angle_deg;
       r.failed_attempts = errors;
       return true;
     } catch (const std::string& e) { // the gmsh API throws its last error as a string
-      errors += " [algorithm " + std::to_string(algorithm) + ", angle " +
-                std::to_string(int(feature_angle)) + "] " + e;
+      errors += " " + which + e;
     } catch (const std::exception& e) {
-      errors += " [algorithm " + std::to_string(algorithm) + ", angle " +
-                std::to_string(int(feature_angle)) + "] " + e.what();
+      errors += " " + which + e.what();
     }
   }
   return false;
@@ -513,22 +515,22 @@ bool mesh_first_attempt_that_succeeds(const meshes::SurfaceMesh& input, const Re
 
 meshes::SurfaceMesh remesh_sample(const meshes::SurfaceMesh& worn, const RemeshParameters& p,
                                   const std::string& msh_path, RemeshReport* report,
-                                  const std::vector<Edge>* features) {
+                                  SurfaceKind kind) {
   const meshes::Stopwatch start;
   check_remesh_input(worn, p);
   RemeshReport r;
   // Relaxed flat sides hold non-Delaunay triangles, which a volume mesher that keeps them can
   // only fill with flat tetrahedra; flipping them is exact (the same planes).
-  // Given feature curves are edges of the input as it is: it is not flipped.
+  // An isotropic input is kept as it is: it is not flipped.
   meshes::SurfaceMesh input = worn;
-  if (!features)
+  if (kind == SurfaceKind::worn)
     r.n_flat_flips = meshes::flip_flat_edges(input);
   r.n_faces_before = worn.n_faces();
   r.volume_before = meshes::enclosed_volume(worn);
   r.area_before = meshes::area_per_label(worn);
   meshes::SurfaceMesh remeshed;
   std::string errors;
-  if (!mesh_first_attempt_that_succeeds(input, p, features, msh_path, remeshed, r, errors)) {
+  if (!mesh_first_attempt_that_succeeds(input, p, kind, msh_path, remeshed, r, errors)) {
     const std::string dump = msh_path + ".failed-input.msh";
     write_surface_msh(input, dump);
     throw std::runtime_error("remeshing: gmsh failed to mesh the worn volume with every surface "

@@ -70,6 +70,14 @@ struct RemeshReport {
   double seconds = 0;
 };
 
+/// How the surface handed to remesh_sample came about, which decides how it is meshed.
+enum class SurfaceKind {
+  /// moved by the wear stages (relaxed, with sharpened crests): gmsh remeshes its patches
+  worn,
+  /// isotropic already (meshes::implicit_recession, a kept surface): its triangles are kept
+  isotropic
+};
+
 /// Meshes the volume enclosed by `worn` (closed, outward, labelled, in the sample frame) and
 /// writes it to `msh_path` (gmsh 4.1, physical groups as generate_sample writes them, so
 /// read_sample_mesh reads it). The input faces of each label form separate discrete
@@ -79,13 +87,11 @@ struct RemeshReport {
 /// the input are first re-triangulated by Delaunay flips (same surface), and an attempt leaving a
 /// flat tetrahedron (quality below 1e-8) fails like a gmsh error. Returns the new boundary surface
 /// with revision worn.revision() + 1. Throws when the surface is not closed, gmsh fails, or a label
-/// is lost. With `features` (edges of `worn` as vertex pairs, smaller first: the feature curves
-/// of meshes::implicit_recession), the patches are split along them and the label boundaries
-/// only, never by the angle between faces, and the input is not flipped.
-meshes::SurfaceMesh
-remesh_sample(const meshes::SurfaceMesh& worn, const RemeshParameters& p,
-              const std::string& msh_path, RemeshReport* report = nullptr,
-              const std::vector<std::pair<std::uint32_t, std::uint32_t>>* features = nullptr);
+/// is lost. An `isotropic` surface is neither flipped nor remeshed: its triangles are kept and
+/// only the volume is meshed (a flat tetrahedron refuses the first attempt only).
+meshes::SurfaceMesh remesh_sample(const meshes::SurfaceMesh& worn, const RemeshParameters& p,
+                                  const std::string& msh_path, RemeshReport* report = nullptr,
+                                  SurfaceKind kind = SurfaceKind::worn);
 
 /// Writes a labelled surface as a gmsh 4.1 `.msh` (one discrete surface and physical group
 /// per label) that meshes::read_msh_surface reads back, e.g. a surface remeshing failed on.

@@ -106,9 +106,8 @@ struct Remeshed {
 // Remeshes `worn` into `path` and reads it back. The surface is taken from the triangulation
 // as read (the .msh text need not round-trip gmsh's doubles bit for bit).
 Remeshed remesh_and_read(const meshes::SurfaceMesh& worn, const RemeshParameters& p,
-                         const std::string& path, RemeshReport& report,
-                         const std::vector<std::pair<std::uint32_t, std::uint32_t>>* features) {
-  remesh_sample(worn, p, path, &report, features);
+                         const std::string& path, RemeshReport& report, SurfaceKind kind) {
+  remesh_sample(worn, p, path, &report, kind);
   Remeshed out;
   out.tria = std::make_unique<dealii::Triangulation<3>>();
   read_sample_mesh(path, *out.tria);
@@ -239,8 +238,8 @@ void WornSample::mesh_kept_surface(const WornSampleState& st) {
   depth_ = wear_depth_field(st.surface);
   removed_.values() = st.removed_volume;
   depth_.values() = st.wear_depth;
-  const std::vector<std::pair<std::uint32_t, std::uint32_t>> no_sharp_edges;
-  remesh_from(st.surface, &no_sharp_edges);
+  // The kept surface was meshed once as it is: its triangles are kept again.
+  remesh_from(st.surface, SurfaceKind::isotropic);
   n_remeshes_ = st.n_remeshes;
 }
 
@@ -435,11 +434,13 @@ void WornSample::take_implicit(meshes::FaceField<double>& remaining, WearStageRe
   ++r.n_implicit;
   r.implicit_seconds += receded.seconds;
   r.implicit_grid_loss += receded.grid_loss;
+  r.n_held_restorations += receded.restore_held_rings > 0;
+  r.volume_not_restored += receded.volume_not_restored;
   r.worn_through_area += receded.worn_through_area;
   r.vanished_labels.insert(r.vanished_labels.end(), receded.vanished_labels.begin(),
                            receded.vanished_labels.end());
   carry_fields(worn, receded.surface);
-  record_remesh(remesh_from(receded.surface, &receded.feature_edges), r);
+  record_remesh(remesh_from(receded.surface, SurfaceKind::isotropic), r);
 }
 
 std::string WornSample::write_failed_increment(const meshes::SurfaceMesh& before,
@@ -460,14 +461,12 @@ RemeshReport WornSample::remesh() {
   return remesh_from(surface());
 }
 
-RemeshReport
-WornSample::remesh_from(const meshes::SurfaceMesh& worn,
-                        const std::vector<std::pair<std::uint32_t, std::uint32_t>>* features) {
+RemeshReport WornSample::remesh_from(const meshes::SurfaceMesh& worn, SurfaceKind kind) {
   meshes::ensure_directory(p_.mesh_directory);
   const std::string path =
       p_.mesh_directory + "/sample-r" + std::to_string(worn.revision() + 1) + ".msh";
   RemeshReport report;
-  Remeshed fresh = remesh_and_read(worn, p_.remesh, path, report, features);
+  Remeshed fresh = remesh_and_read(worn, p_.remesh, path, report, kind);
   const auto offset =
       fold_free_restoring_offset(fresh.map->surface(), meshes::enclosed_volume(worn), report);
   MotionReport motion;

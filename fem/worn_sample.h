@@ -191,11 +191,10 @@ private:
   /// take_implicit, or, when it throws, the sample, its fields, `remaining` and `r` as they
   /// were with the failure added to r.implicit_failures; returns whether it took the stage.
   bool try_implicit(meshes::FaceField<double>& remaining, WearStageReport& r);
-  /// Remeshes the volume bounded by `surface`, split into patches along `features` when given
+  /// Remeshes the volume bounded by `surface`, its triangles kept when it is `isotropic`
   /// (fem::remesh_sample).
-  RemeshReport
-  remesh_from(const meshes::SurfaceMesh& surface,
-              const std::vector<std::pair<std::uint32_t, std::uint32_t>>* features = nullptr);
+  RemeshReport remesh_from(const meshes::SurfaceMesh& surface,
+                           SurfaceKind kind = SurfaceKind::worn);
   /// Transfers the accumulated fields from `worn` (the current surface or its moved copy) to
   /// the remeshed surface `fresh`.
   void carry_fields(const meshes::SurfaceMesh& worn, const meshes::SurfaceMesh& fresh);

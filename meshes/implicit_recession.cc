@@ -546,7 +546,6 @@ ImplicitRecession implicit_recession(const SurfaceMesh& s,
   r.n_restored = std::size_t(std::count(restored.begin(), restored.end(), 1));
   snap_fixed_vertices(s, *std::max_element(depth.begin(), depth.end()) + 2 * h, restored,
                       r.surface);
-  r.feature_edges = curves;
   r.vanished_labels = merge_vanished_elements(r.surface, p.vanish_height);
   r.surface.set_revision(s.revision() + 1);
   // The chords of the grid, of the coarsening and of the remeshing where the front passed cut
@@ -555,7 +554,10 @@ ImplicitRecession implicit_recession(const SurfaceMesh& s,
   const double target = volume_before - r.asked_volume;
   r.coarsening_loss = target - enclosed_volume(r.surface);
   const auto movable = free_wearing_vertices(r.surface, restored);
-  r.uniform_offset = chord_restoring_offset(r.surface, coarse_patches, movable, target);
+  const auto chords = chord_restoring_offset(r.surface, coarse_patches, movable, target);
+  r.uniform_offset = chords.uniform_offset;
+  r.restore_held_rings = chords.held_rings;
+  r.volume_not_restored = chords.volume_not_restored;
   r.removed_volume = volume_before - enclosed_volume(r.surface);
   r.min_face_quality = min_triangle_quality(r.surface);
   const auto area_before = area_per_label(s), area_after = area_per_label(r.surface);

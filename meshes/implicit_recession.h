@@ -40,10 +40,7 @@ struct ImplicitRecessionParameters {
 };
 
 struct ImplicitRecession {
-  SurfaceMesh surface; ///< closed, outward, labelled; revision = input's + 1
-  /// Edges of `surface` (vertex pairs, smaller first) between patches of one label where the
-  /// front has not passed: the old surface's sharp edges, for the remesher.
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> feature_edges;
+  SurfaceMesh surface;              ///< closed, outward, labelled; revision = input's + 1
   double asked_volume = 0;          ///< [m^3] sum of the removed volume asked
   double removed_volume = 0;        ///< [m^3] enclosed volume before minus after
   std::map<int, double> asked;      ///< [m^3] per wearing label
@@ -60,6 +57,10 @@ struct ImplicitRecession {
   /// gap to the grid's zero set, then a uniform one
   double coarsening_loss = 0;
   double uniform_offset = 0; ///< [m] that uniform offset of the wearing vertices, outward
+  /// vertex rings around a fold within which that offset was held still (0: nowhere)
+  int restore_held_rings = 0;
+  /// [m^3] volume the offset did not give back because it folded at 8 rings (0: none)
+  double volume_not_restored = 0;
   std::size_t n_nodes = 0;
   std::size_t n_fine_faces = 0; ///< of the grid's zero set, before coarsening
   double min_face_quality = 0;  ///< of the new surface (4 sqrt(3) A / sum of squared edges)

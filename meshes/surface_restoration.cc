@@ -11,6 +11,7 @@
 // faces to that surface, and a uniform offset makes up what is left to the asked volume.
 #include "meshes/surface_restoration.h"
 
+#include "meshes/mesh_quality.h"
 #include "meshes/recession.h"
 #include "meshes/surface_locator.h"
 #include "meshes/triangle_geometry.h"
@@ -44,9 +45,16 @@ bool front_passed(const LevelSetGrid& phi, const LevelSetGrid& psi, const Vec3& 
 // area-weighted mean gap of its faces, which gives the chords' volume back where it went
 // missing. What is left to `target` (the grid's own loss where the front passed, held faces
 // put back) is made up by a uniform offset of the movable vertices along their normals,
-// found by secant steps on the enclosed volume. Returns that uniform offset [m].
-double chord_restoring_offset(SurfaceMesh& m, const SurfaceMesh& reference,
-                              const std::vector<char>& movable, double target) {
+// found by secant steps on the enclosed volume.
+//
+// Where a worn face meets a restored one at a concave corner (an element's foot beside the
+// worn base), a vertex's normal points across the corner and its move can lay a thin face
+// onto its neighbour (the unworn convex sample at 100 um: 2 folded base edges at an
+// element's foot). The moves are then held still within 1, 2, 4, 8 rings of the fold and
+// the other movable vertices make up the volume, as the remesher's restoring offset does
+// (fem/worn_sample.cc); with every ring count folding the surface is handed on unmoved.
+ChordRestoration chord_restoring_offset(SurfaceMesh& m, const SurfaceMesh& reference,
+                                        const std::vector<char>& movable, double target) {
   const SurfaceLocator locate(reference);
   const auto centroid = face_centroids(m);
   const auto area = face_areas(m);
@@ -65,19 +73,40 @@ double chord_restoring_offset(SurfaceMesh& m, const SurfaceMesh& reference,
       weight[v] += area[f];
     }
   const auto normal = vertex_normals(m);
-  for (std::size_t v = 0; v < m.n_vertices(); ++v)
-    if (movable[v] && weight[v] > 0)
-      m.vertices[v] += normal[v] * (sum[v] / weight[v]);
-  std::vector<Vec3> outward(m.n_vertices());
-  for (std::size_t v = 0; v < m.n_vertices(); ++v)
-    if (movable[v])
-      outward[v] = normal[v];
-  double achieved = 0;
-  const double offset =
-      scale_to_volume_loss(m, outward, enclosed_volume(m) - target, &achieved, 1e-6);
-  for (std::size_t v = 0; v < m.n_vertices(); ++v)
-    m.vertices[v] += outward[v] * offset;
-  return offset;
+  const auto face_normal = face_normals(m);
+  ChordRestoration r;
+  std::vector<char> free = movable;
+  for (;;) {
+    SurfaceMesh candidate = m;
+    for (std::size_t v = 0; v < m.n_vertices(); ++v)
+      if (free[v] && weight[v] > 0)
+        candidate.vertices[v] += normal[v] * (sum[v] / weight[v]);
+    std::vector<Vec3> outward(m.n_vertices());
+    for (std::size_t v = 0; v < m.n_vertices(); ++v)
+      if (free[v])
+        outward[v] = normal[v];
+    double achieved = 0;
+    const double offset = scale_to_volume_loss(
+        candidate, outward, enclosed_volume(candidate) - target, &achieved, 1e-6);
+    for (std::size_t v = 0; v < m.n_vertices(); ++v)
+      candidate.vertices[v] += outward[v] * offset;
+    const auto q = surface_quality(candidate, &face_normal);
+    if (q.valid()) {
+      m = std::move(candidate);
+      r.uniform_offset = offset;
+      return r;
+    }
+    if (r.held_rings == 8) {
+      r.volume_not_restored = enclosed_volume(m) - target;
+      return r;
+    }
+    r.held_rings = r.held_rings == 0 ? 1 : 2 * r.held_rings;
+    const auto around = faces_within_rings(m, q.bad_faces, r.held_rings);
+    for (std::size_t f = 0; f < m.n_faces(); ++f)
+      if (around[f])
+        for (const auto v : m.triangles[f])
+          free[v] = 0;
+  }
 }
 
 // Where the front has not reached (every corner of a vertex's grid cell has psi = phi), and on

@@ -27,10 +27,20 @@ std::vector<char> snap_untouched_vertices(const SurfaceMesh& old, const std::vec
 void snap_fixed_vertices(const SurfaceMesh& old, double reach, const std::vector<char>& restored,
                          SurfaceMesh& fresh);
 
+struct ChordRestoration {
+  double uniform_offset = 0; ///< [m] the uniform offset of the movable vertices, outward
+  /// vertex rings around a fold within which the vertices were held still (0: nowhere)
+  int held_rings = 0;
+  /// [m^3] enclosed volume above `target` left because every offset folded (0: none)
+  double volume_not_restored = 0;
+};
+
 /// Each `movable` vertex of `m` moves along its normal by the area-weighted mean gap of its
 /// faces to `reference` (the finer surface its vertices lie on), then all of them by one
-/// uniform offset, so that `m` encloses `target` [m^3]. Returns that uniform offset [m].
-double chord_restoring_offset(SurfaceMesh& m, const SurfaceMesh& reference,
-                              const std::vector<char>& movable, double target);
+/// uniform offset, so that `m` encloses `target` [m^3]. Where that folds `m` (an edge whose
+/// faces lie on each other, a crossing or an inverted face), the vertices within 1, 2, 4, 8
+/// rings of the fold stay still; when it folds even then, `m` is left as it was.
+ChordRestoration chord_restoring_offset(SurfaceMesh& m, const SurfaceMesh& reference,
+                                        const std::vector<char>& movable, double target);
 
 } // namespace wear::meshes

@@ -123,8 +123,8 @@ TEST_CASE("the implicit recession takes the wear-out's stage-24 wear whole, with
   const std::string dir = std::filesystem::temp_directory_path().string() + "/stage24-implicit";
   std::filesystem::create_directories(dir);
   fem::RemeshReport report;
-  const auto remeshed =
-      fem::remesh_sample(r.surface, remesh, dir + "/sample.msh", &report, &r.feature_edges);
+  const auto remeshed = fem::remesh_sample(r.surface, remesh, dir + "/sample.msh", &report,
+                                           fem::SurfaceKind::isotropic);
   INFO(report.n_tetrahedra << " tetrahedra, worst " << report.min_tet_quality
                            << ", failed: " << report.failed_attempts);
   CHECK(report.attempt == 1);

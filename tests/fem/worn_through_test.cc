@@ -63,8 +63,8 @@ TEST_CASE("a plate worn through opens a hole that the remesher meshes",
   const std::string dir = std::filesystem::temp_directory_path().string() + "/worn-through-plate";
   std::filesystem::create_directories(dir);
   fem::RemeshReport report;
-  const auto remeshed =
-      fem::remesh_sample(r.surface, remesh, dir + "/plate.msh", &report, &r.feature_edges);
+  const auto remeshed = fem::remesh_sample(r.surface, remesh, dir + "/plate.msh", &report,
+                                           fem::SurfaceKind::isotropic);
   INFO(report.n_tetrahedra << " tetrahedra, worst " << report.min_tet_quality
                            << ", failed: " << report.failed_attempts);
   CHECK(report.attempt == 1);

@@ -170,3 +170,30 @@ TEST_CASE("a convex element worn at a uniform depth beyond its width vanishes in
 
   CHECK(high - low < ImplicitRecessionParameters().vanish_height);
 }
+
+TEST_CASE("the unworn convex sample's base recedes beside the elements' feet without a fold",
+          "[implicit_recession][long]") {
+  // The sample at 3 mm worn by 100 um x n_z^2 a face (`wearsim bench evolution --sample
+  // convex --mesh-size 3e-3 --depth 100e-6`): the base most, the elements' flanks least.
+  // Where the worn base meets an element's unworn foot, the volume-restoring offset of the
+  // vertices along their normals laid thin faces onto their neighbours (2 folded base edges
+  // at z = 10.09 mm); it is held still there, and the surface is valid with the volume exact.
+  SampleGeometry g;
+  g.mesh_size = 3e-3;
+  const auto sample = generate_sample(g);
+  const SurfaceMesh& s = sample.surface;
+  const auto normal = face_normals(s);
+  const auto area = face_areas(s);
+  std::vector<double> removed(s.n_faces(), 0.0);
+  for (std::size_t f = 0; f < s.n_faces(); ++f)
+    if (s.face_wears(f))
+      removed[f] = 100e-6 * normal[f].z * normal[f].z * area[f];
+  const auto r = implicit_recession(s, removed, ImplicitRecessionParameters{});
+  const auto q = surface_quality(r.surface);
+  INFO(q.n_folded_edges << " folded edges, " << q.n_self_intersections << " crossing pairs, "
+                        << r.restore_held_rings << " rings held");
+  CHECK(q.valid());
+  CHECK(check_closed(r.surface).closed());
+  CHECK(r.volume_not_restored == 0);
+  CHECK(r.removed_volume == Approx(sum(removed)).epsilon(1e-3));
+}
