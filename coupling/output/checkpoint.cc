@@ -13,7 +13,9 @@
 //                   part; on another count all parts, merged into the bed of one process
 //                   (dem::merge_rank_states), which it decomposes again. Absent in a
 //                   checkpoint kept without its bed (Checkpoint::has_bed), whose root has
-//                   the attribute without_bed = 1
+//                   the attribute without_bed = 1; a bed of clumps also holds
+//                   /dem/clumps/... (the bodies: pose, motion, last force, mass properties,
+//                   member ranges, member ids and body-frame offsets)
 //   /scene/...      the scene run's own part and its wearing parts (scene_checkpoint.cc)
 // The checkpoint a write replaces is kept as checkpoint.previous.h5 (a hard link taken
 // before the rename), and a resume falls back to it when the latest one does not read.
@@ -239,6 +241,46 @@ void read_continuation(const Hdf5Reader& h5, const std::string& dem_group, dem::
     d.wall_reference_time = h5.attribute(g + "/reference_position", "wall_reference_time");
 }
 
+// The rigid bodies of a DEM state in group g: per body the pose, motion, last force and mass
+// properties (the orientation as w, x, y, z), per member its particle's id and body-frame
+// offset; member_begin[b] is body b's first member.
+void write_clumps(Hdf5File& h5, const std::string& g, const dem::ClumpsState& c) {
+  write_vec3(h5, g + "/position", c.position);
+  write_vec3(h5, g + "/velocity", c.velocity);
+  std::vector<double> q;
+  for (const auto& o : c.orientation)
+    q.insert(q.end(), {o.w, o.x, o.y, o.z});
+  h5.write(g + "/orientation", q, {c.orientation.size(), 4});
+  write_vec3(h5, g + "/angular_momentum", c.angular_momentum);
+  write_vec3(h5, g + "/force", c.force);
+  write_vec3(h5, g + "/torque", c.torque);
+  h5.write(g + "/mass", c.mass, {c.mass.size()});
+  write_vec3(h5, g + "/moments", c.moments);
+  h5.write(g + "/member_begin", wide(c.member_begin), {c.member_begin.size()});
+  h5.write(g + "/member_id", c.member_id, {c.member_id.size()});
+  write_vec3(h5, g + "/member_offset", c.member_offset);
+}
+
+dem::ClumpsState read_clumps(const Hdf5Reader& h5, const std::string& g) {
+  dem::ClumpsState c;
+  c.position = vec3s(h5.doubles(g + "/position"), "clump position");
+  c.velocity = vec3s(h5.doubles(g + "/velocity"), "clump velocity");
+  const auto q = h5.doubles(g + "/orientation");
+  if (q.size() % 4 != 0)
+    throw std::runtime_error("'" + g + "/orientation' does not hold 4 values per body");
+  for (std::size_t k = 0; k < q.size(); k += 4)
+    c.orientation.push_back({q[k], q[k + 1], q[k + 2], q[k + 3]});
+  c.angular_momentum = vec3s(h5.doubles(g + "/angular_momentum"), "clump angular_momentum");
+  c.force = vec3s(h5.doubles(g + "/force"), "clump force");
+  c.torque = vec3s(h5.doubles(g + "/torque"), "clump torque");
+  c.mass = h5.doubles(g + "/mass");
+  c.moments = vec3s(h5.doubles(g + "/moments"), "clump moments");
+  c.member_begin = narrow<std::uint32_t>(h5.int64s(g + "/member_begin"));
+  c.member_id = h5.int64s(g + "/member_id");
+  c.member_offset = vec3s(h5.doubles(g + "/member_offset"), "clump member_offset");
+  return c;
+}
+
 // The DEM state in group g (without its continuation part); over ranks also the part's rank
 // fields.
 void write_dem(Hdf5File& h5, const std::string& g, const dem::SystemState& d) {
@@ -274,6 +316,8 @@ void write_dem(Hdf5File& h5, const std::string& g, const dem::SystemState& d) {
     h5.attribute(g, "n_periodic_ghosts", double(d.n_periodic_ghosts));
     h5.attribute(g, "n_image_ghosts", double(d.n_image_ghosts));
   }
+  if (!d.clumps.empty())
+    write_clumps(h5, g + "/clumps", d.clumps);
 }
 
 dem::SystemState read_dem(const Hdf5Reader& h5, const std::string& g) {
@@ -312,6 +356,8 @@ dem::SystemState read_dem(const Hdf5Reader& h5, const std::string& g) {
     d.n_periodic_ghosts = std::uint64_t(h5.attribute(g, "n_periodic_ghosts"));
     d.n_image_ghosts = std::uint64_t(h5.attribute(g, "n_image_ghosts"));
   }
+  if (h5.has_object(g + "/clumps"))
+    d.clumps = read_clumps(h5, g + "/clumps");
   return d;
 }
 

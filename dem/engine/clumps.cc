@@ -33,6 +33,36 @@ void Clumps::add_body(const Vec3& x, const Vec3& v, const Quaternion& q, const V
   member_begin.push_back(std::uint32_t(member_id.size()));
 }
 
+void ClumpsState::check() const {
+  const auto require = [](bool ok, const std::string& what) {
+    if (!ok)
+      throw std::invalid_argument("DEM state: clumps: " + what);
+  };
+  const std::size_t n = size();
+  for (const std::size_t length :
+       {position.size(), velocity.size(), orientation.size(), angular_momentum.size(), force.size(),
+        torque.size(), moments.size()})
+    require(length == n, "body arrays of different lengths");
+  require(member_begin.size() == n + 1 && member_begin.front() == 0 &&
+              std::is_sorted(member_begin.begin(), member_begin.end()) &&
+              member_begin.back() == member_id.size() && member_offset.size() == member_id.size(),
+          "member ranges do not fit the members");
+  for (std::size_t b = 0; b < n; ++b) {
+    const Quaternion& q = orientation[b];
+    require(mass[b] > 0 && moments[b].x > 0 && moments[b].y > 0 && moments[b].z > 0 &&
+                member_begin[b + 1] > member_begin[b] &&
+                q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z > 0,
+            "body " + std::to_string(b) +
+                " has a non-positive mass or moment, no member or no orientation");
+  }
+}
+
+void Clumps::restore(const ClumpsState& s) {
+  s.check();
+  static_cast<ClumpsState&>(*this) = s;
+  member_slot.assign(member_id.size(), 0);
+}
+
 void Clumps::index_members(const Particles& p, std::vector<std::int64_t>& slot_of_id,
                            std::vector<std::int32_t>& body_of_slot) {
   // Slot by id, through a table as long as the largest id (ids are dense: never reused).

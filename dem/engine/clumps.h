@@ -12,7 +12,9 @@
 
 namespace wear::dem {
 
-struct Clumps {
+/// The bodies as a run continues from them (SystemState): every array of Clumps but the
+/// members' slots, which follow from the particles' ids.
+struct ClumpsState {
   // Per body.
   std::vector<Vec3> position;          ///< [m] centre of mass
   std::vector<Vec3> velocity;          ///< [m/s]
@@ -27,10 +29,17 @@ struct Clumps {
   // Per member.
   std::vector<std::int64_t> member_id; ///< the member particle's stable id
   std::vector<Vec3> member_offset;     ///< [m] its centre in the body frame
-  /// The member's particle slot now (index_members after every reordering).
-  std::vector<std::uint32_t> member_slot;
 
   std::size_t size() const { return mass.size(); }
+  bool empty() const { return mass.empty(); }
+  /// Throws std::invalid_argument ("DEM state: clumps ...") when the arrays do not fit
+  /// together: lengths, member ranges, a non-positive mass or moment, a zero orientation.
+  void check() const;
+};
+
+struct Clumps : ClumpsState {
+  /// The member's particle slot now (index_members after every reordering).
+  std::vector<std::uint32_t> member_slot;
 
 private:
   /// order_by_members' buffers: the new order and one array of each type, swapped in.
@@ -44,7 +53,8 @@ private:
   Scratch scratch_;
 
 public:
-  bool empty() const { return mass.empty(); }
+  /// Takes the bodies of `s` (checked) in its order; the members' slots are to be indexed.
+  void restore(const ClumpsState& s);
 
   /// Appends a body; its members' ids and body-frame offsets follow in member order.
   void add_body(const Vec3& x, const Vec3& v, const Quaternion& q, const Vec3& L, double m,

@@ -220,7 +220,8 @@ FillReport fill_to_height(System& system, const std::function<FillRegion(double)
                           const SizeDistribution& psd, double density, int material,
                           std::uint64_t seed, double loose_factor, double speed_tolerance,
                           double max_time, const std::function<void(double)>& on_check,
-                          double packing, const std::function<void()>& before_setup) {
+                          double packing, const std::function<void()>& before_setup,
+                          const ClumpShape* shape) {
   psd.validate();
   if (!(target_height > 0))
     throw std::invalid_argument("DEM/Fill height must be positive");
@@ -230,7 +231,9 @@ FillReport fill_to_height(System& system, const std::function<FillRegion(double)
     mean_volume += frac[k] * pi / 6 * std::pow(psd.diameters[k] * psd.scaling_factor, 3);
   const auto n = static_cast<std::size_t>(packing * area * target_height / mean_volume);
   const FillRegion region = make_region(z_floor + loose_factor * target_height);
-  const std::size_t got = insert_random(system.particles, region, psd, n, density, material, seed);
+  const std::size_t got =
+      shape ? insert_random_clumps(system, region, psd, *shape, n, density, material, seed)
+            : insert_random(system.particles, region, psd, n, density, material, seed);
   if (got < n)
     throw std::runtime_error("DEM fill: only " + std::to_string(got) + " of " + std::to_string(n) +
                              " particles fit into the insertion region; "

@@ -77,14 +77,18 @@ struct FillReport {
 /// passes (`on_check(time)` after each check, for progress). `make_region(z_top)` gives the
 /// insertion region up to z_top; `horizontal_area` is the floor area [m^2]. Throws if the region
 /// cannot take the particles. `before_setup` is called once the particles are inserted, before
-/// the engine sets up (a decomposition over ranks fitted to the bed).
+/// the engine sets up (a decomposition over ranks fitted to the bed). With `shape`, clumps of
+/// that shape are inserted (insert_random_clumps: the PSD by equivalent-volume diameter, so the
+/// count is the spheres'), and `make_region` must keep their members' centres a largest member
+/// radius inside.
 FillReport fill_to_height(System& system, const std::function<FillRegion(double)>& make_region,
                           double horizontal_area, double z_floor, double target_height,
                           const SizeDistribution& psd, double density, int material,
                           std::uint64_t seed, double loose_factor = 2.0,
                           double speed_tolerance = 0.01, double max_time = 2.0,
                           const std::function<void(double)>& on_check = {}, double packing = 0.6,
-                          const std::function<void()>& before_setup = {});
+                          const std::function<void()>& before_setup = {},
+                          const ClumpShape* shape = nullptr);
 
 /// Solid fraction of the particles whose centres lie in z_lo..z_hi over a horizontal area.
 double packing_fraction(const Particles& p, double horizontal_area, double z_lo, double z_hi);

@@ -127,6 +127,8 @@ struct SystemState {
   /// position, velocity, spin, radius, mass, inertia, material, id (the ghost message).
   std::vector<double> rank_ghosts;
   std::vector<std::uint32_t> rank_sent_up; ///< particles the rank above holds ghosts of
+  /// The rigid bodies whose members are particles above (empty for a bed of spheres).
+  ClumpsState clumps;
 };
 
 /// Wall-clock time of the step loop's phases, summed since the last reset_phase_times() [s].
@@ -261,6 +263,11 @@ public:
                         const Quaternion& q, const Vec3& v = {}, const Vec3& w = {});
   /// The bodies (empty for a bed of spheres).
   const Clumps& clumps() const { return clumps_; }
+  /// Adds the bodies of a state (SystemState::clumps) before setup(), their members among the
+  /// particles added from the same state, so that the state can be imported or resumed.
+  /// Throws std::invalid_argument for arrays that do not fit together, std::logic_error after
+  /// setup().
+  void add_state_clumps(const ClumpsState& state);
 
   /// The state that decides the continuation (see SystemState).
   SystemState export_state() const;

@@ -58,6 +58,14 @@ std::size_t System::add_clump(const ClumpShape& shape, double density, int mater
   return clumps_.size() - 1;
 }
 
+void System::add_state_clumps(const ClumpsState& state) {
+  if (set_up_)
+    throw std::logic_error("System::add_state_clumps() after setup()");
+  if (!clumps_.empty())
+    throw std::logic_error("System::add_state_clumps() on a system with clumps");
+  clumps_.restore(state);
+}
+
 std::pair<std::size_t, std::size_t> System::body_range(int thread) const {
   const std::size_t n = clumps_.size();
   return {n * thread / n_threads_, n * (thread + 1) / n_threads_};

@@ -37,8 +37,6 @@ namespace wear::dem {
 SystemState System::export_state() const {
   if (!set_up_)
     throw std::logic_error("System::export_state() before setup()");
-  if (!clumps_.empty())
-    throw std::logic_error("DEM: the state of a bed of clumps is not exported or imported");
   const auto& p = particles;
   const std::size_t n = p.n_real;
   SystemState s;
@@ -91,6 +89,7 @@ SystemState System::export_state() const {
     }
     s.rank_sent_up = rank_scratch_.sent_up;
   }
+  s.clumps = clumps_;
   return s;
 }
 
@@ -148,6 +147,15 @@ void System::check_importable(const SystemState& s, bool whole) const {
   }
   for (const auto w : s.slot_wall)
     require(w >= -1 && w < n_walls(), "a wall slot refers to a missing wall");
+  require(s.clumps.size() == clumps_.size(),
+          "holds " + std::to_string(s.clumps.size()) + " clumps, the system " +
+              std::to_string(clumps_.size()) + " (add_state_clumps before setup)");
+  s.clumps.check();
+  std::vector<std::int64_t> ids = s.id;
+  std::sort(ids.begin(), ids.end());
+  for (const auto id : s.clumps.member_id)
+    require(std::binary_search(ids.begin(), ids.end(), id),
+            "a clump's member " + std::to_string(id) + " is not among its particles");
 }
 
 void System::check_resumable(const SystemState& s) const {
@@ -213,13 +221,15 @@ void System::take_particles(const SystemState& s) {
   time_ = s.time;
   n_steps_ = s.n_steps;
   n_rebuilds_ = s.n_rebuilds;
+  if (!clumps_.empty()) { // the bodies in the state's order, their members in the particles'
+    clumps_.restore(s.clumps);
+    clumps_.index_members(particles, rebuild_scratch_.clump_slot_of_id, body_of_slot_);
+  }
 }
 
 void System::import_state(const SystemState& s) {
   if (!set_up_)
     throw std::logic_error("System::import_state() before setup()");
-  if (!clumps_.empty())
-    throw std::logic_error("DEM: the state of a bed of clumps is not exported or imported");
   if (rank_link_ && s.n_ranks == 1) {
     import_whole_state(s);
     return;
@@ -255,8 +265,6 @@ void System::add_wear_window(const SystemState& s) {
 void System::resume_state(const SystemState& s) {
   if (!set_up_)
     throw std::logic_error("System::resume_state() before setup()");
-  if (!clumps_.empty())
-    throw std::logic_error("DEM: the state of a bed of clumps is not exported or imported");
   check_importable(s);
   check_resumable(s);
   take_particles(s);

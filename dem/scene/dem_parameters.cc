@@ -2,6 +2,8 @@
 // from a case file's: E = 2 G (1 + nu).
 #include "dem/scene/dem_parameters.h"
 
+#include "dem/scene/particle_shapes.h"
+
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -23,6 +25,19 @@ void require_dem(bool ok, const std::string& parameter, const std::string& what)
 
 Material engine_material(const std::string& name, const DemMaterial& m) {
   return {name, 2 * m.shear_modulus * (1 + m.poisson_ratio), m.poisson_ratio, m.density};
+}
+
+std::string particle_shape_documentation() {
+  std::string doc =
+      "Shape of the particles: 'sphere', a shape of the library, or a template file (a path "
+      "ending in .txt, one member sphere per line, 'x y z r' in any length unit). Any other "
+      "shape is a rigid clump of overlapping spheres whose size the PSD sets by its "
+      "equivalent-volume diameter, inserted with a random orientation. The library:";
+  for (const auto& e : particle_shapes())
+    if (e.name != "sphere")
+      doc += " '" + e.name + "': " + e.description + ";";
+  doc.back() = '.';
+  return doc + " Clumps run in one process, without a periodic boundary or inlets.";
 }
 
 void validate(const DemParameters& p) {
@@ -57,6 +72,7 @@ void validate(const DemParameters& p) {
               "must lie in (0, 0.4] of the Rayleigh time");
   require_dem(p.max_speed > 0, "Maximum speed", "must be positive [m/s]");
   require_dem(p.n_threads >= 0, "Threads", "must be 0 (all cores) or positive");
+  particle_shape(p.particle_shape, "DEM/Particle shape"); // throws naming it
   require_dem(p.wall_loads.coarse_graining_width >= 0 &&
                   std::isfinite(p.wall_loads.coarse_graining_width),
               "Coarse-graining width", "must be 0 (the mean particle radius) or positive [m]");

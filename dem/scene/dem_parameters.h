@@ -39,6 +39,8 @@ struct DemParameters {
   PairProperties particle_particle{0.5, 0.55, 0.20};
   PairProperties particle_wall{0.5, 0.30, 0.10}; ///< also particle-sample and particle-holder
   SizeDistribution psd{{2.0e-3, 2.65e-3, 3.35e-3}, {0.25, 0.5, 0.25}, 4};
+  /// "sphere", a shape of the library (dem/scene/particle_shapes.h) or a template file (.txt)
+  std::string particle_shape = "sphere";
   double loose_factor = 2.5;       ///< [-] insertion region height / settled bed height
   double assumed_packing = 0.49;   ///< [-] settled solid fraction that sets the count
   double settle_time = 0.5;        ///< [s] at most, walls at rest
@@ -48,6 +50,10 @@ struct DemParameters {
   int n_threads = 0;               ///< 0: all cores
   WallLoadParameters wall_loads;   ///< how a window's loads are laid on a wall's faces
 };
+
+/// The description of DEM/Particle shape: the values it takes, the library's shapes with
+/// what each stands for.
+std::string particle_shape_documentation();
 
 /// "Particle shear modulus", "Particle Poisson ratio", "Particle density" for which =
 /// "Particle" (likewise "Sample", "Wall", "Holder").
@@ -89,6 +95,7 @@ void visit_common_parameters(DemParameters& d, Visitor& v) {
   v.real_list("PSD mass fractions", d.psd.mass_fractions, "[-] Mass fraction of each bin.");
   v.real("Scaling factor", d.psd.scaling_factor,
          "[-] Particle scaling factor s: multiplies every diameter (1 to 4).");
+  v.text("Particle shape", d.particle_shape, particle_shape_documentation());
   v.real("Loose factor", d.loose_factor,
          "[-] Height of the insertion region over the settled bed height (random loose "
          "insertion of a fill to a bed height: the tester's Fill height, a scene's Fill/Bed "

@@ -86,6 +86,19 @@ ClumpTemplate read_clump_template(const std::string& path) {
   return t;
 }
 
+std::optional<ClumpShape> particle_shape(const std::string& value, const std::string& parameter) {
+  if (value == "sphere")
+    return std::nullopt;
+  const bool file = value.size() > 4 && value.compare(value.size() - 4, 4, ".txt") == 0;
+  if (!file)
+    return clump_shape(named_clump_template(value, parameter));
+  try {
+    return clump_shape(read_clump_template(value));
+  } catch (const std::runtime_error& e) {
+    throw std::invalid_argument(parameter + ": " + e.what());
+  }
+}
+
 Vec3 body_extents(const ClumpShape& s) {
   double e[3];
   for (int k = 0; k < 3; ++k) {

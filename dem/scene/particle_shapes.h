@@ -4,6 +4,7 @@
 // ClumpTemplate whose size the PSD sets (by the equivalent-volume diameter).
 #include "dem/engine/clump_shape.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,12 @@ ClumpTemplate named_clump_template(const std::string& name, const std::string& p
 /// Reads a template file: one member per line, "x y z r" (any length unit; the PSD scales
 /// it), '#' starts a comment. Throws std::runtime_error naming the file and the line.
 ClumpTemplate read_clump_template(const std::string& path);
+
+/// The shape a case's `parameter` (DEM/Particle shape) names: none for "sphere" (the engine's
+/// spheres), the library's shape of that name, or the template file at a path ending in .txt,
+/// its mass properties integrated (clump_shape). Throws std::invalid_argument naming
+/// `parameter` for an unknown name or a file that does not read.
+std::optional<ClumpShape> particle_shape(const std::string& value, const std::string& parameter);
 
 /// [m] The extents of a shape along its body axes, largest first (L, I, S).
 Vec3 body_extents(const ClumpShape& s);

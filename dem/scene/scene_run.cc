@@ -24,6 +24,7 @@
 // refused (require_fill_count_fits): the insertion would try for minutes before giving up.
 #include "dem/scene/scene_run.h"
 
+#include "dem/scene/particle_shapes.h"
 #include "dem/scene/scene_fill.h"
 
 #include "dem/engine/rank_states.h"
@@ -163,11 +164,21 @@ SceneRun::SceneRun(const SceneParameters& scene, const DemParameters& dem,
     : scene_(scene), dem_(dem), walls_(std::move(walls)) {
   validate(scene_);
   validate(dem_);
+  particle_shape_ = particle_shape(dem_.particle_shape, "DEM/Particle shape");
+  if (particle_shape_ && (!scene_.inlets.empty() || scene_.periodic_angle_deg > 0 ||
+                          scene_.periodic_direction != "none"))
+    throw std::invalid_argument("DEM/Particle shape = '" + dem_.particle_shape +
+                                "': clumps are filled in and stepped in one process without a "
+                                "periodic boundary; this scene has " +
+                                (scene_.inlets.empty() ? "a periodic boundary" : "inlets") +
+                                " (use 'sphere')");
   if (scene_.fill.region != "none") {
     auto built = std::make_shared<SceneFillShape>(fill_shape(scene_, dem_.loose_factor));
     // read_case checked a box's or cylinder's count; a mesh region's volume is known now.
     require_fill_count_fits(scene_, dem_.psd, built->solid ? built->solid->volume() : -1);
-    built->clearance = dem_.psd.max_diameter();
+    built->clearance = particle_shape_ ? 2 * particle_shape_->reach() * dem_.psd.max_diameter() /
+                                             particle_shape_->equivalent_diameter()
+                                       : dem_.psd.max_diameter();
     require_clear_of_walls(walls_, *built,
                            built->floor_z +
                                (scene_.fill.count == 0 ? scene_.fill.bed_height : built->full_top),
@@ -347,6 +358,8 @@ void SceneRun::resume(const SceneRunState& s) {
     const bool exact = continues_exactly(s.system, rank, n_ranks);
     const bool own_part = link && exact;
     add_state_particles(system_.particles, s.system, own_part, dem_.particle.density);
+    if (!s.system.clumps.empty())
+      system_.add_state_clumps(s.system.clumps);
     system_.settings.start_time = s.system.time;
     if (own_part) {
       if (s.rank_bounds.size() != std::size_t(n_ranks) + 1)
@@ -375,16 +388,29 @@ void SceneRun::resume(const SceneRunState& s) {
     flux_planes_[k].restore(s.flux_planes[k]);
 }
 
+double SceneRun::fill_margin() const {
+  if (!particle_shape_)
+    return 0.5 * dem_.psd.max_diameter();
+  double r_member = 0;
+  for (const auto& m : particle_shape_->members)
+    r_member = std::max(r_member, m.radius);
+  return r_member * dem_.psd.max_diameter() / particle_shape_->equivalent_diameter();
+}
+
 void SceneRun::fill(const std::function<void(const std::string&)>& progress) {
   const auto& f = scene_.fill;
   if (f.region == "none")
     return;
   const SceneFillShape& shape = *fill_shape_;
-  const double r_max = 0.5 * dem_.psd.max_diameter();
+  const double r_max = fill_margin();
+  const ClumpShape* clump = particle_shape_ ? &*particle_shape_ : nullptr;
   if (f.count > 0) {
+    const FillRegion region = shape.region(r_max, shape.hi.z);
     const std::size_t got =
-        insert_random(system_.particles, shape.region(r_max, shape.hi.z), dem_.psd,
-                      std::size_t(f.count), dem_.particle.density, particle_material_, dem_.seed);
+        clump ? insert_random_clumps(system_, region, dem_.psd, *clump, std::size_t(f.count),
+                                     dem_.particle.density, particle_material_, dem_.seed)
+              : insert_random(system_.particles, region, dem_.psd, std::size_t(f.count),
+                              dem_.particle.density, particle_material_, dem_.seed);
     if (got < f.count)
       throw std::runtime_error("Scene/Fill: only " + std::to_string(got) + " of " +
                                std::to_string(f.count) + " particles fit into " + shape.describe() +
@@ -404,12 +430,15 @@ void SceneRun::fill(const std::function<void(const std::string&)>& progress) {
         if (progress)
           progress("settling the fill: t = " + std::to_string(t) + " s");
       },
-      dem_.assumed_packing, [this] { fit_rank_slabs(); });
+      dem_.assumed_packing, [this] { fit_rank_slabs(); }, clump);
   for (std::size_t k = 0; k < walls_.size(); ++k)
     system_.set_wall_motion(int(k), surface_motion(walls_[k].parameters));
   if (progress)
-    progress("filled: " + std::to_string(report.n_particles) + " particles, bed " +
-             std::to_string(report.bed_height) + " m, settled in " +
+    progress("filled: " +
+             (clump ? std::to_string(system_.clumps().size()) + " clumps of '" + clump->name +
+                          "' (" + std::to_string(report.n_particles) + " member spheres)"
+                    : std::to_string(report.n_particles) + " particles") +
+             ", bed " + std::to_string(report.bed_height) + " m, settled in " +
              std::to_string(report.settle_time) + " s");
 }
 

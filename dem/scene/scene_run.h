@@ -159,6 +159,11 @@ private:
   SlabDecomposition slabs_;  ///< over ranks (set_rank_link)
   RankLink* link_ = nullptr; ///< over ranks (set_rank_link); null on one process
   std::shared_ptr<const SceneFillShape> fill_shape_; ///< none without a Fill region
+  /// The clumps' shape (DEM/Particle shape); none for spheres.
+  std::optional<ClumpShape> particle_shape_;
+  /// [m] How far a particle's surface reaches beyond the centres the fill places: the largest
+  /// sphere's radius, or a clump's largest member radius at the largest size.
+  double fill_margin() const;
   System system_;
   int particle_material_ = 0;
   double time_ = 0;     ///< [s] scene time (the engine's clock once it is set up)

@@ -425,6 +425,55 @@ TEST_CASE("scene wear loop: stopped by a signal or killed inside a stage, resume
              Catch::Contains("--resume") && Catch::Contains("--overwrite"));
 }
 
+TEST_CASE("scene wear loop: a bed of clumps killed inside a stage resumes bit for bit",
+          "[coupling][scene][clump]") {
+  // The plate scene with DEM/Particle shape = crushed stone 4: the checkpoint carries the
+  // bodies (pose, motion, members) beside their member spheres, and a run killed inside a
+  // stage continues as the uninterrupted one.
+  write_plate("wear_plate.step");
+  const auto case_of = [](const std::string& dir) {
+    std::string text = two_part_case(
+        plate_case(dir, "", "1 dem-only, 2 staged", "  set Checkpoint interval = 1e-6\n"));
+    text.replace(text.find("  set Output interval = 0.05\n"), 29, "  set Output interval = 0.02\n");
+    return text.insert(text.find("subsection DEM\n") + 15,
+                       "  set Particle shape = crushed stone 4\n");
+  };
+  const std::string a = "scene_clumps_a", b = "scene_clumps_kill";
+  for (const auto& dir : {a, b}) {
+    std::filesystem::remove_all(dir);
+    std::ofstream(dir + ".prm") << case_of(dir);
+  }
+  REQUIRE(run_wearsim(a + ".prm", "", a + ".log", "scene-run") == 0);
+  INFO(file_text(a + ".log"));
+  const pid_t pid = start_wearsim(b + ".prm", "", b + ".log", "scene-run");
+  bool inside = false;
+  while (!inside && waitpid(pid, nullptr, WNOHANG) == 0) {
+    try {
+      const Checkpoint c = read_checkpoint(b + "/checkpoint.h5");
+      inside = c.stages_done == 1 && c.scene.n_records > 5;
+    } catch (const std::exception&) {
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  REQUIRE(inside);
+  kill(pid, SIGKILL);
+  wait_for(pid);
+  REQUIRE(run_wearsim(b + ".prm", "--resume", b + ".resumed.log", "scene-run") == 0);
+  INFO(file_text(b + ".resumed.log"));
+  const auto ca = read_checkpoint(a + "/checkpoint.h5"), cb = read_checkpoint(b + "/checkpoint.h5");
+  CHECK(cb.stages_done == 3);
+  REQUIRE(ca.dem.clumps.size() == 150);
+  CHECK(ca.dem.position.size() == 600);
+  CHECK(cb.dem.position == ca.dem.position);
+  CHECK(cb.dem.pair_history == ca.dem.pair_history);
+  CHECK(cb.dem.clumps.position == ca.dem.clumps.position);
+  CHECK(cb.dem.clumps.angular_momentum == ca.dem.clumps.angular_momentum);
+  CHECK(cb.dem.clumps.member_id == ca.dem.clumps.member_id);
+  for (std::size_t i = 0; i < ca.scene.parts.size(); ++i)
+    CHECK(cb.scene.parts[i].sample.removed_volume == ca.scene.parts[i].sample.removed_volume);
+  CHECK(physical_columns(b + "/scene_wear.csv") == physical_columns(a + "/scene_wear.csv"));
+}
+
 TEST_CASE("wearsim scene-run: bad options and arguments are refused naming the command",
           "[coupling][scene]") {
   RunOptions o;
