@@ -154,7 +154,10 @@ void SceneSeries::add(const dem::SceneWindow& w, const dem::SceneRun& run,
   meshes::write_atomically(directory_ + "/scene_wear.csv",
                            [&](std::ostream& out) { out << wear_; });
   if (snapshot && w.n_particles > 0)
-    dem::write_particles_vtu(particles, directory_ + "/particles_" + std::to_string(k) + ".vtu");
+    // The bodies where the particles are the engine's own (clumps run in one process).
+    dem::write_particles_vtu(particles, directory_ + "/particles_" + std::to_string(k) + ".vtu",
+                             &particles == &run.system().particles ? &run.system().clumps()
+                                                                   : nullptr);
   if (run.fields())
     write_fields(k, w, run.fields()->grid());
   const std::string dir = directory_ + "/walls_" + std::to_string(k);

@@ -6,7 +6,7 @@
 
 namespace wear::dem {
 
-void write_particles_vtu(const Particles& p, const std::string& path) {
+void write_particles_vtu(const Particles& p, const std::string& path, const Clumps* clumps) {
   meshes::VtuGrid g;
   const std::size_t n = p.n_real;
   g.points.assign(p.position.begin(), p.position.begin() + n);
@@ -27,6 +27,29 @@ void write_particles_vtu(const Particles& p, const std::string& path) {
                     {p.angular_velocity[i].x, p.angular_velocity[i].y, p.angular_velocity[i].z});
   }
   g.point_data = {radius, v, w, id};
+  if (clumps && !clumps->empty()) {
+    meshes::VtuArray body{"body", 1, std::vector<double>(n, -1.0)},
+        orientation{"body orientation (w, x, y, z)", 4, std::vector<double>(4 * n, 0.0)},
+        centre{"body centre [m]", 3, {}};
+    for (std::size_t i = 0; i < n; ++i)
+      centre.values.insert(centre.values.end(),
+                           {p.position[i].x, p.position[i].y, p.position[i].z});
+    for (std::size_t b = 0; b < clumps->size(); ++b)
+      for (std::uint32_t k = clumps->member_begin[b]; k < clumps->member_begin[b + 1]; ++k) {
+        const std::size_t i = clumps->member_slot[k];
+        const Quaternion& q = clumps->orientation[b];
+        const Vec3& x = clumps->position[b];
+        body.values[i] = double(b);
+        double* o = &orientation.values[4 * i];
+        o[0] = q.w;
+        o[1] = q.x;
+        o[2] = q.y;
+        o[3] = q.z;
+        for (int d = 0; d < 3; ++d)
+          centre.values[3 * i + std::size_t(d)] = x[d];
+      }
+    g.point_data.insert(g.point_data.end(), {body, orientation, centre});
+  }
   write_vtu(g, path);
 }
 

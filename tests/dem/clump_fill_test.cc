@@ -6,13 +6,18 @@
 #include "dem/engine/clump_shape.h"
 #include "dem/engine/filling.h"
 #include "dem/engine/rank_states.h"
+#include "dem/engine/snapshot.h"
 #include "dem/engine/system.h"
 #include "dem/scene/particle_shapes.h"
 #include "tests/dem/dem_fixtures.h"
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <iterator>
+#include <sstream>
 
 using namespace wear::dem;
 using wear::meshes::Vec3;
@@ -175,4 +180,38 @@ TEST_CASE("a bed of clumps continues bit for bit from its exported state", "[dem
   add_state_particles(d.particles, boundary, false, 2650);
   d.setup();
   CHECK_THROWS_WITH(d.import_state(boundary), Catch::Contains("300 clumps"));
+}
+
+TEST_CASE("a snapshot of a bed of clumps names each member's body and its pose",
+          "[dem][clump][vtu]") {
+  System s;
+  std::size_t n = 0;
+  fill(s, 40, 9, n);
+  s.set_n_threads(1);
+  s.setup();
+  s.run(200);
+  write_particles_vtu(s.particles, "clump_snapshot.vtu", &s.clumps());
+  // The "body" array: the text between its tag and the end of the array.
+  std::ifstream in("clump_snapshot.vtu");
+  const std::string text{std::istreambuf_iterator<char>(in), {}};
+  const auto array = [&text](const std::string& name) {
+    const auto at = text.find("Name=\"" + name + "\"");
+    REQUIRE(at != std::string::npos);
+    const auto begin = text.find('>', at) + 1;
+    std::istringstream values(text.substr(begin, text.find("</DataArray>", begin) - begin));
+    return std::vector<double>{std::istream_iterator<double>(values), {}};
+  };
+  const auto body = array("body"), centre = array("body centre [m]");
+  const auto& c = s.clumps();
+  REQUIRE(body.size() == s.particles.n_real);
+  REQUIRE(centre.size() == 3 * s.particles.n_real);
+  std::size_t n_wrong = 0;
+  for (std::size_t b = 0; b < c.size(); ++b)
+    for (std::uint32_t k = c.member_begin[b]; k < c.member_begin[b + 1]; ++k) {
+      const std::size_t i = c.member_slot[k];
+      n_wrong += body[i] != double(b) || centre[3 * i] != c.position[b].x ||
+                 centre[3 * i + 2] != c.position[b].z;
+    }
+  CHECK(n_wrong == 0);
+  CHECK(std::count(body.begin(), body.end(), -1.0) == 0); // every particle is a member
 }
