@@ -43,7 +43,9 @@ stages_of() { # <checkpoint>: "<stages done> <stages planned>" from the checkpoi
   /usr/bin/python3 - "$1" <<'EOF'
 import re, sys, h5py
 with h5py.File(sys.argv[1], "r") as h:
-    done, text = int(h.attrs["stages_done"]), h.attrs["parameters"]
+    done = int(h.attrs["stages_done"])
+    # the resolved case: a dataset of bytes, an attribute from older engines
+    text = h["parameters"][()].tobytes() if "parameters" in h else h.attrs["parameters"]
 text = text.decode() if isinstance(text, bytes) else str(text)
 schedule = re.search(r"^\s*set Schedule\s*=\s*([^#\n]*)", text, re.M)
 print(done, sum(int(n) for n in re.findall(r"\d+", schedule.group(1))) if schedule else 0)

@@ -1,7 +1,8 @@
 // Checkpoints of a coupled run in HDF5.
 //
 // Layout of checkpoint.h5:
-//   attributes on /: stages_done, has_scene = 1, parameters (text)
+//   attributes on /: stages_done, has_scene = 1; /parameters: the resolved case (text as
+//                   bytes; an attribute in checkpoints of older engines)
 //   /dem/...        every array of dem::SystemState (Vec3 arrays as n x 3), attributes time,
 //                   n_steps, n_rebuilds, next_id, and its continuation part
 //                   (/dem/continuation/...: reference positions with the attribute
@@ -478,7 +479,7 @@ void write_checkpoint(const std::string& path, const Checkpoint& c,
     h5.attribute("/dem", "n_ranks", double(dem_parts.size()));
   }
   h5.attribute("/", "stages_done", double(c.stages_done));
-  h5.attribute("/", "parameters", c.parameters);
+  h5.write_text("/parameters", c.parameters); // a resolved case is longer than an attribute holds
   h5.attribute("/", "has_scene", 1.0);
   if (!c.has_bed)
     h5.attribute("/", "without_bed", 1.0);
@@ -526,7 +527,9 @@ Checkpoint read_checkpoint(const std::string& path, const DemPart& part) {
   Checkpoint c;
   try {
     c.stages_done = int(h5.attribute("/", "stages_done"));
-    c.parameters = h5.text_attribute("/", "parameters");
+    // Written as an attribute by engines before the case outgrew one.
+    c.parameters = h5.has_object("/parameters") ? h5.text("/parameters")
+                                                : h5.text_attribute("/", "parameters");
     c.has_bed = !h5.has_attribute("/", "without_bed") || h5.attribute("/", "without_bed") == 0;
     c.scene = read_scene(h5);
     if (!c.has_bed)

@@ -52,6 +52,10 @@ void Hdf5File::write_raw(const std::string& name, hid_t type, const void* data,
   check(status >= 0, path_, "write dataset '" + name + "'");
 }
 
+void Hdf5File::write_text(const std::string& name, const std::string& text) {
+  write_raw(name, H5T_NATIVE_CHAR, text.data(), {text.size()}, text.size());
+}
+
 void Hdf5File::write(const std::string& name, const std::vector<double>& data,
                      const std::vector<std::size_t>& dims) {
   write_raw(name, H5T_NATIVE_DOUBLE, data.data(), dims, data.size());
@@ -175,6 +179,12 @@ std::vector<std::int64_t> Hdf5Reader::int64s(const std::string& name) const {
   std::vector<std::int64_t> v(n_values(dims(name)));
   read_raw(name, H5T_NATIVE_INT64, v.data(), v.size());
   return v;
+}
+
+std::string Hdf5Reader::text(const std::string& name) const {
+  std::string t(n_values(dims(name)), '\0');
+  read_raw(name, H5T_NATIVE_CHAR, t.data(), t.size());
+  return t;
 }
 
 std::vector<int> Hdf5Reader::ints(const std::string& name) const {

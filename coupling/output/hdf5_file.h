@@ -24,6 +24,8 @@ public:
              const std::vector<std::size_t>& dims);
   void write(const std::string& name, const std::vector<int>& data,
              const std::vector<std::size_t>& dims);
+  /// A text of any length as a dataset of bytes (an attribute holds at most 64 KiB).
+  void write_text(const std::string& name, const std::string& text);
   /// Attributes on an existing object (group or dataset); "/" is the root.
   void attribute(const std::string& object, const std::string& name, double value);
   void attribute(const std::string& object, const std::string& name, const std::string& value);
@@ -58,6 +60,8 @@ public:
   /// Whether a group or dataset `name` ("/dem") exists.
   bool has_object(const std::string& name) const;
   std::string text_attribute(const std::string& object, const std::string& name) const;
+  /// A text written by Hdf5File::write_text.
+  std::string text(const std::string& name) const;
   const std::string& path() const { return path_; }
 
 private:

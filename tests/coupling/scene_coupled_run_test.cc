@@ -57,6 +57,21 @@ std::map<std::string, double> archard_after(const std::string& path, const std::
   return sum;
 }
 
+// Waits until the run `pid` writing into `dir` has checkpointed inside its stage 2 (stage 1
+// done, more than 5 records); false when it ended before.
+bool inside_stage_2(pid_t pid, const std::string& dir) {
+  while (waitpid(pid, nullptr, WNOHANG) == 0) {
+    try {
+      const Checkpoint c = read_checkpoint(dir + "/checkpoint.h5");
+      if (c.stages_done == 1 && c.scene.n_records > 5)
+        return true;
+    } catch (const std::exception&) {
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  return false;
+}
+
 } // namespace
 
 TEST_CASE("scene wear loop: a STEP plate worn by a bed it slides under", "[coupling][scene]") {
@@ -377,16 +392,7 @@ TEST_CASE("scene wear loop: stopped by a signal or killed inside a stage, resume
     std::ofstream(b + ".prm") << case_of(b);
     const pid_t pid = start_wearsim(b + ".prm", "", b + ".log", "scene-run");
     // Inside stage 2: its first checkpoint is there, then a random moment.
-    bool inside = false;
-    while (!inside && waitpid(pid, nullptr, WNOHANG) == 0) {
-      try {
-        const Checkpoint c = read_checkpoint(b + "/checkpoint.h5");
-        inside = c.stages_done == 1 && c.scene.n_records > 5;
-      } catch (const std::exception&) {
-      }
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
-    REQUIRE(inside);
+    REQUIRE(inside_stage_2(pid, b));
     std::this_thread::sleep_for(std::chrono::milliseconds(rng() % 200));
     kill(pid, signal);
     const int status = wait_for(pid);
@@ -446,16 +452,7 @@ TEST_CASE("scene wear loop: a bed of clumps killed inside a stage resumes bit fo
   REQUIRE(run_wearsim(a + ".prm", "", a + ".log", "scene-run") == 0);
   INFO(file_text(a + ".log"));
   const pid_t pid = start_wearsim(b + ".prm", "", b + ".log", "scene-run");
-  bool inside = false;
-  while (!inside && waitpid(pid, nullptr, WNOHANG) == 0) {
-    try {
-      const Checkpoint c = read_checkpoint(b + "/checkpoint.h5");
-      inside = c.stages_done == 1 && c.scene.n_records > 5;
-    } catch (const std::exception&) {
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
-  REQUIRE(inside);
+  REQUIRE(inside_stage_2(pid, b));
   kill(pid, SIGKILL);
   wait_for(pid);
   REQUIRE(run_wearsim(b + ".prm", "--resume", b + ".resumed.log", "scene-run") == 0);
