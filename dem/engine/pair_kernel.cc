@@ -94,10 +94,9 @@ namespace {
 /// The law for compacted contact c into the block's lanes. `series_only`: the history's
 /// rotation by its series (contact_law.h), the lane marked in bl.redo where that is not the law.
 template <bool uniform, bool series_only>
-[[gnu::always_inline]] inline void contact_law_lane(const PairKernelData& d,
-                                                    const std::uint32_t* pi,
-                                                    const std::uint32_t* pj, const Vec3* history,
-                                                    double dt, int c, PairBlock& bl) {
+[[gnu::always_inline]] inline void
+contact_law_lane(const PairKernelData& d, const std::uint32_t* pi, const std::uint32_t* pj,
+                 const Vec3* history, double dt, int c, PairBlock& bl) {
   const std::uint32_t q = bl.pair[c], i = pi[q], j = pj[q];
   ContactGeometry g;
   pair_geometry(d, bl, c, i, j, g);

@@ -78,6 +78,9 @@ void System::setup() {
   }
   r_max_ = r_max;
   skin_ = settings.skin > 0 ? settings.skin : 0.5 * r_min;
+  member_overhang_ = 0;
+  for (const Vec3& c : clumps_.member_offset)
+    member_overhang_ = std::max(member_overhang_, meshes::norm(c));
   if (settings.periodic.enabled) {
     const double a = settings.periodic.angle;
     if (!(a > 0 && a < 2 * pi))
@@ -95,7 +98,7 @@ void System::setup() {
     if (sl.axis < 0 || sl.axis > 2)
       throw std::invalid_argument("DEM: the periodic slab's axis must be 0, 1 or 2 (x, y, z)");
     // Each particle has at most one image: the period holds more than twice the ghosts' reach.
-    const double reach = 2 * r_max_ + skin_;
+    const double reach = ghost_reach();
     if (!(sl.hi - sl.lo > 2 * reach))
       throw std::invalid_argument("DEM: the periodic slab's period " +
                                   std::to_string(sl.hi - sl.lo) +
@@ -111,10 +114,9 @@ void System::setup() {
     throw std::invalid_argument(
         "DEM: walls with a rigid motion cannot be combined with a periodic boundary");
   next_id_ = first_free_id(p.id.data(), p.n_real);
-  if (!clumps_.empty() && (rank_link_ || periodic()))
-    throw std::invalid_argument("DEM: clumps are stepped in one process without a periodic "
-                                "boundary; a bed of clumps over ranks or across a periodic "
-                                "boundary is not available");
+  if (!clumps_.empty() && rank_link_)
+    throw std::invalid_argument("DEM: clumps are stepped in one process; a bed of clumps over "
+                                "ranks is not available");
   if (rank_link_)
     check_ranks_at_setup();
   set_n_threads(omp_get_max_threads());

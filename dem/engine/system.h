@@ -346,6 +346,9 @@ private:
   void wall_slots_by_id(std::vector<std::int32_t>& slots_of_id) const;
   /// Wraps the particles into [0, angle), rotating their state, their wall slots and the
   /// carried histories of which they are the lower-id particle.
+  /// Wraps the bodies whose centre left the periodic domain (with their force and torque
+  /// between steps); body_wrap[b] is +1, -1 or 0 as for a particle.
+  void wrap_bodies(bool in_step, std::vector<signed char>& body_wrap);
   void wrap_into_sector(bool in_step, const std::vector<std::int32_t>& slots_of_id,
                         std::vector<CarriedHistory>& old);
   void bucket_by_lower_id(const std::vector<CarriedHistory>& old, HistoryTable& table);
@@ -475,6 +478,13 @@ private:
   int n_mat_ = 0;
   NeighborList neighbors_;
   double dt_ = 0, time_ = 0, skin_ = 0, r_max_ = 0;
+  /// [m] The largest distance of a member's centre from its body's centre (0 without clumps):
+  /// a body wraps across a periodic boundary as one, by its centre, so its members may lie
+  /// that far beyond the boundary.
+  double member_overhang_ = 0;
+  /// [m] How far inside a periodic boundary a particle has an image: the contact reach of two
+  /// particles and the skin, and the members' overhang.
+  double ghost_reach() const { return 2 * r_max_ + skin_ + member_overhang_; }
   std::uint64_t n_steps_ = 0, n_rebuilds_ = 0;
   std::int64_t next_id_ = 0; ///< stable id of the next inserted particle
   bool set_up_ = false;
@@ -538,7 +548,7 @@ private:
     HistoryTable old_by_id;
     std::vector<std::uint32_t> bucket_fill;
     std::vector<std::int32_t> slots_of_id;
-    std::vector<signed char> wrap;
+    std::vector<signed char> wrap, body_wrap;
     std::vector<std::uint32_t> n_candidates;
     std::vector<std::vector<std::uint32_t>> chunk_candidates; ///< per chunk of particles
     std::vector<WallSlot> slots;

@@ -190,10 +190,20 @@ void System::wrap_into_sector(bool in_step, const std::vector<std::int32_t>& slo
   const PeriodicSlab& slab = settings.periodic_slab;
   std::vector<signed char>& wrap = rebuild_scratch_.wrap;
   wrap.resize(n);
+  const auto wrap_of = [&](const Vec3& x) {
+    return slab.enabled ? slab_wrap(x, slab) : sector_wrap(x, angle);
+  };
+  // A body wraps as one, by its centre: its members with it, wherever they lie.
+  std::vector<signed char>& body_wrap = rebuild_scratch_.body_wrap;
+  if (!clumps_.empty()) {
+    if (body_of_slot_.size() != n) // the first rebuild
+      clumps_.index_members(particles, rebuild_scratch_.clump_slot_of_id, body_of_slot_);
+    wrap_bodies(in_step, body_wrap);
+  }
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
-    const signed char w =
-        slab.enabled ? slab_wrap(p.position[i], slab) : sector_wrap(p.position[i], angle);
+    const std::int32_t body = clumps_.empty() ? -1 : body_of_slot_[i];
+    const signed char w = body >= 0 ? body_wrap[std::size_t(body)] : wrap_of(p.position[i]);
     if (w != 0) {
       const double cs = c, sn = w > 0 ? s : -s;
       p.position[i] = rotate_z(p.position[i], cs, sn) + (w > 0 ? shift_ : -shift_);
@@ -219,6 +229,31 @@ void System::wrap_into_sector(bool in_step, const std::vector<std::int32_t>& slo
       e.h = rotate_z(e.h, c, wrap[e.lower] > 0 ? s : -s);
 }
 
+void System::wrap_bodies(bool in_step, std::vector<signed char>& body_wrap) {
+  auto& c = clumps_;
+  const double cs = cos_t_, angle = settings.periodic.angle;
+  const PeriodicSlab& slab = settings.periodic_slab;
+  body_wrap.resize(c.size());
+  for (std::size_t b = 0; b < c.size(); ++b) {
+    const signed char w =
+        slab.enabled ? slab_wrap(c.position[b], slab) : sector_wrap(c.position[b], angle);
+    body_wrap[b] = w;
+    if (w == 0)
+      continue;
+    const double sn = w > 0 ? sin_t_ : -sin_t_;
+    c.position[b] = rotate_z(c.position[b], cs, sn) + (w > 0 ? shift_ : -shift_);
+    c.velocity[b] = rotate_z(c.velocity[b], cs, sn);
+    c.angular_momentum[b] = rotate_z(c.angular_momentum[b], cs, sn);
+    if (!in_step) {
+      c.force[b] = rotate_z(c.force[b], cs, sn);
+      c.torque[b] = rotate_z(c.torque[b], cs, sn);
+    }
+    if (!slab.enabled) // turned about z with the sector: q <- R_z(+-angle) q
+      c.orientation[b] =
+          normalized(rotation_about({0, 0, 1}, w > 0 ? angle : -angle) * c.orientation[b]);
+  }
+}
+
 void System::bucket_by_lower_id(const std::vector<CarriedHistory>& old, HistoryTable& table) {
   const std::size_t n = std::size_t(next_id_); // ids lie below it
   assign_reusing(table.bucket, n + 1, 0u);
@@ -241,12 +276,12 @@ void System::make_ghosts() {
   ghost_owner_.clear();
   const PeriodicSlab& slab = settings.periodic_slab;
   if (slab.enabled && !rank_link_) { // over ranks the seam is a cut between ranks
-    const double reach = 2 * r_max_ + skin_;
+    const double reach = ghost_reach();
     for (std::uint32_t i = 0; i < n; ++i)
       if (slab.hi - p.position[i][slab.axis] < reach) // near the upper plane
         ghost_owner_.push_back(i);
   } else if (settings.periodic.enabled && !rank_link_) {
-    const double reach = 2 * r_max_ + skin_;
+    const double reach = ghost_reach();
     for (std::uint32_t i = 0; i < n; ++i) {
       const Vec3& x = p.position[i];
       const double dist = s * x.x - c * x.y;  // distance to the cut plane theta = angle

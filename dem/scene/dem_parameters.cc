@@ -37,7 +37,7 @@ std::string particle_shape_documentation() {
     if (e.name != "sphere")
       doc += " '" + e.name + "': " + e.description + ";";
   doc.back() = '.';
-  return doc + " Clumps run in one process, without a periodic boundary or inlets.";
+  return doc + " Clumps run in one process and are not inserted by inlets.";
 }
 
 void validate(const DemParameters& p) {

@@ -165,13 +165,10 @@ SceneRun::SceneRun(const SceneParameters& scene, const DemParameters& dem,
   validate(scene_);
   validate(dem_);
   particle_shape_ = particle_shape(dem_.particle_shape, "DEM/Particle shape");
-  if (particle_shape_ && (!scene_.inlets.empty() || scene_.periodic_angle_deg > 0 ||
-                          scene_.periodic_direction != "none"))
+  if (particle_shape_ && !scene_.inlets.empty())
     throw std::invalid_argument("DEM/Particle shape = '" + dem_.particle_shape +
-                                "': clumps are filled in and stepped in one process without a "
-                                "periodic boundary; this scene has " +
-                                (scene_.inlets.empty() ? "a periodic boundary" : "inlets") +
-                                " (use 'sphere')");
+                                "': inlets insert spheres only, and this scene has inlets (use "
+                                "'sphere')");
   if (scene_.fill.region != "none") {
     auto built = std::make_shared<SceneFillShape>(fill_shape(scene_, dem_.loose_factor));
     // read_case checked a box's or cylinder's count; a mesh region's volume is known now.
