@@ -37,6 +37,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <set>
 #include <sstream>
@@ -274,13 +275,15 @@ void SceneRun::add_materials_and_walls() {
   auto& s = system_.settings;
   s.gravity = vec(scene_.gravity);
   s.domain = {vec(scene_.domain_min), vec(scene_.domain_max)};
-  const double r_min = 0.5 * dem_.psd.min_diameter();
+  // The engine's spheres are the clumps' members, smaller than the equivalent sphere: their
+  // radii set the time step, the skin and the reach.
+  const auto [r_min, r_max] = engine_radii();
   const Material particle = engine_material("particle", dem_.particle);
   const double rayleigh = pi * r_min * std::sqrt(particle.density / particle.shear_modulus()) /
                           (0.1631 * particle.poisson_ratio + 0.8766);
   s.time_step = dem_.time_step_fraction * rayleigh;
   s.skin = 0.5 * r_min;
-  s.max_radius = 0.5 * dem_.psd.max_diameter();
+  s.max_radius = r_max;
   s.max_speed = dem_.max_speed;
   if (scene_.periodic_angle_deg > 0)
     s.periodic = {true, scene_.periodic_angle_deg * pi / 180};
@@ -385,13 +388,21 @@ void SceneRun::resume(const SceneRunState& s) {
     flux_planes_[k].restore(s.flux_planes[k]);
 }
 
-double SceneRun::fill_margin() const {
+std::pair<double, double> SceneRun::engine_radii() const {
+  const double d_min = dem_.psd.min_diameter(), d_max = dem_.psd.max_diameter();
   if (!particle_shape_)
-    return 0.5 * dem_.psd.max_diameter();
-  double r_member = 0;
-  for (const auto& m : particle_shape_->members)
-    r_member = std::max(r_member, m.radius);
-  return r_member * dem_.psd.max_diameter() / particle_shape_->equivalent_diameter();
+    return {0.5 * d_min, 0.5 * d_max};
+  double lo = std::numeric_limits<double>::infinity(), hi = 0;
+  for (const auto& m : particle_shape_->members) {
+    lo = std::min(lo, m.radius);
+    hi = std::max(hi, m.radius);
+  }
+  const double d_eq = particle_shape_->equivalent_diameter();
+  return {lo * d_min / d_eq, hi * d_max / d_eq};
+}
+
+double SceneRun::fill_margin() const {
+  return engine_radii().second;
 }
 
 void SceneRun::fill(const std::function<void(const std::string&)>& progress) {

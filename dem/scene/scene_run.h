@@ -18,6 +18,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace wear::dem {
@@ -164,6 +165,9 @@ private:
   /// [m] How far a particle's surface reaches beyond the centres the fill places: the largest
   /// sphere's radius, or a clump's largest member radius at the largest size.
   double fill_margin() const;
+  /// [m] The smallest and the largest radius of the engine's spheres: the PSD's, or for
+  /// clumps their members' at the smallest and the largest size.
+  std::pair<double, double> engine_radii() const;
   System system_;
   int particle_material_ = 0;
   double time_ = 0;     ///< [s] scene time (the engine's clock once it is set up)
