@@ -72,6 +72,11 @@ inline signed char slab_wrap(const Vec3& x, const PeriodicSlab& slab) {
   return 0;
 }
 
+/// The wrap that brings x back into the periodic slab, or else the periodic sector.
+inline signed char periodic_wrap(const Vec3& x, const PeriodicSlab& slab, double angle) {
+  return slab.enabled ? slab_wrap(x, slab) : sector_wrap(x, angle);
+}
+
 /// Near-wall particles cluster (the floor's are all at the start of the spatial order), so
 /// the wall-candidate scan goes in chunks of this many particles handed out dynamically.
 constexpr std::size_t wall_scan_chunk = 512;
@@ -190,9 +195,6 @@ void System::wrap_into_sector(bool in_step, const std::vector<std::int32_t>& slo
   const PeriodicSlab& slab = settings.periodic_slab;
   std::vector<signed char>& wrap = rebuild_scratch_.wrap;
   wrap.resize(n);
-  const auto wrap_of = [&](const Vec3& x) {
-    return slab.enabled ? slab_wrap(x, slab) : sector_wrap(x, angle);
-  };
   // A body wraps as one, by its centre: its members with it, wherever they lie.
   std::vector<signed char>& body_wrap = rebuild_scratch_.body_wrap;
   if (!clumps_.empty()) {
@@ -203,7 +205,8 @@ void System::wrap_into_sector(bool in_step, const std::vector<std::int32_t>& slo
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     const std::int32_t body = clumps_.empty() ? -1 : body_of_slot_[i];
-    const signed char w = body >= 0 ? body_wrap[std::size_t(body)] : wrap_of(p.position[i]);
+    const signed char w =
+        body >= 0 ? body_wrap[std::size_t(body)] : periodic_wrap(p.position[i], slab, angle);
     if (w != 0) {
       const double cs = c, sn = w > 0 ? s : -s;
       p.position[i] = rotate_z(p.position[i], cs, sn) + (w > 0 ? shift_ : -shift_);
@@ -235,8 +238,7 @@ void System::wrap_bodies(bool in_step, std::vector<signed char>& body_wrap) {
   const PeriodicSlab& slab = settings.periodic_slab;
   body_wrap.resize(c.size());
   for (std::size_t b = 0; b < c.size(); ++b) {
-    const signed char w =
-        slab.enabled ? slab_wrap(c.position[b], slab) : sector_wrap(c.position[b], angle);
+    const signed char w = periodic_wrap(c.position[b], slab, angle);
     body_wrap[b] = w;
     if (w == 0)
       continue;

@@ -192,8 +192,9 @@ void visit_parameters(SceneParameters& s, Visitor& v) {
          "[s] Simulated time between records of the run's series (and progress lines).");
   v.boolean("Particle snapshots", s.particle_snapshots,
             "Write the particles at every record (particles_<k>.vtu: position, velocity, "
-            "radius, ...; for clumps each member's body, its orientation and centre); false: the tables and walls only (a long run's disk, or a timing), "
-            "and the particles at the Snapshot records.");
+            "radius, ...; for clumps each member's body, its orientation and centre); false: "
+            "the tables and walls only (a long run's disk, or a timing), and the particles at "
+            "the Snapshot records.");
   v.int_list("Snapshot records", s.snapshot_records,
              "With Particle snapshots = false, the particles are written at these records "
              "(particles_<k>.vtu; record k ends k Output intervals after the fill has "
