@@ -33,6 +33,7 @@
 #include "coupling/loop/scene_coupled_run.h"
 
 #include "coupling/output/text_format.h"
+#include "dem/engine/rank_states.h"
 #include "dem/scene/wall_catalogue.h"
 #include "meshes/stopwatch.h"
 
@@ -286,12 +287,14 @@ void SceneCoupledRun::record(const dem::SceneWindow& w) {
   ++n_records_;
   const bool snapshot = dem::snapshot_due(p_.scene, n_records_) && w.n_particles > 0;
   if (!ranks_.link()) {
-    series_->add(w, *scene_, scene_->system().particles, snapshot);
+    series_->add(w, *scene_, scene_->system().particles, &scene_->system().clumps(), snapshot);
     return;
   }
   const dem::Particles all = snapshot ? scene_->particles_on_first_rank() : dem::Particles{};
+  const dem::Clumps bodies =
+      snapshot ? dem::gather_clumps(scene_->system().clumps(), all, ranks_.link()) : dem::Clumps{};
   if (series_)
-    series_->add(w, *scene_, all, snapshot);
+    series_->add(w, *scene_, all, &bodies, snapshot);
 }
 
 SceneCoupledRun::OpenSceneStage SceneCoupledRun::next_stage() const {

@@ -145,7 +145,7 @@ SceneSeries::SceneSeries(std::string directory, const dem::SceneRun& run, int n_
 }
 
 void SceneSeries::add(const dem::SceneWindow& w, const dem::SceneRun& run,
-                      const dem::Particles& particles, bool snapshot) {
+                      const dem::Particles& particles, const dem::Clumps* clumps, bool snapshot) {
   const int k = ++n_records_;
   series_ += series_row(w);
   meshes::write_atomically(directory_ + "/scene_series.csv",
@@ -154,10 +154,8 @@ void SceneSeries::add(const dem::SceneWindow& w, const dem::SceneRun& run,
   meshes::write_atomically(directory_ + "/scene_wear.csv",
                            [&](std::ostream& out) { out << wear_; });
   if (snapshot && w.n_particles > 0)
-    // The bodies where the particles are the engine's own (clumps run in one process).
     dem::write_particles_vtu(particles, directory_ + "/particles_" + std::to_string(k) + ".vtu",
-                             &particles == &run.system().particles ? &run.system().clumps()
-                                                                   : nullptr);
+                             clumps);
   if (run.fields())
     write_fields(k, w, run.fields()->grid());
   const std::string dir = directory_ + "/walls_" + std::to_string(k);

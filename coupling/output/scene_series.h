@@ -36,10 +36,11 @@ public:
   SceneSeries(std::string directory, const dem::SceneRun& run, int n_records,
               EarlierRows earlier = EarlierRows::read);
   /// The next record, of window w, with the run as it stands at the window's end and its
-  /// `particles` then (the scene's own, or over ranks every rank's gathered), written to
-  /// particles_<k>.vtu when `snapshot` (and there are particles).
+  /// `particles` then (the scene's own, or over ranks every rank's gathered) and the bodies
+  /// of its clumps among them (nullptr: spheres), written to particles_<k>.vtu when
+  /// `snapshot` (and there are particles).
   void add(const dem::SceneWindow& w, const dem::SceneRun& run, const dem::Particles& particles,
-           bool snapshot);
+           const dem::Clumps* clumps, bool snapshot);
   int n_records() const { return n_records_; }
 
 private:

@@ -33,6 +33,40 @@ void Clumps::add_body(const Vec3& x, const Vec3& v, const Quaternion& q, const V
   member_begin.push_back(std::uint32_t(member_id.size()));
 }
 
+void Clumps::keep_bodies(const std::vector<std::uint8_t>& keep) {
+  std::size_t kept = 0, kept_members = 0;
+  for (std::size_t b = 0; b < size(); ++b) {
+    if (!keep[b])
+      continue;
+    position[kept] = position[b];
+    velocity[kept] = velocity[b];
+    orientation[kept] = orientation[b];
+    angular_momentum[kept] = angular_momentum[b];
+    force[kept] = force[b];
+    torque[kept] = torque[b];
+    mass[kept] = mass[b];
+    moments[kept] = moments[b];
+    // Members move down only (kept_members <= member_begin[b]): read before written.
+    const std::uint32_t first = member_begin[b], last = member_begin[b + 1];
+    member_begin[kept] = std::uint32_t(kept_members);
+    for (std::uint32_t k = first; k < last; ++k, ++kept_members) {
+      member_id[kept_members] = member_id[k];
+      member_offset[kept_members] = member_offset[k];
+      member_slot[kept_members] = member_slot[k];
+    }
+    ++kept;
+  }
+  for (auto* v : {&position, &velocity, &angular_momentum, &force, &torque, &moments})
+    v->resize(kept);
+  orientation.resize(kept);
+  mass.resize(kept);
+  member_begin.resize(kept + 1);
+  member_begin[kept] = std::uint32_t(kept_members);
+  member_id.resize(kept_members);
+  member_offset.resize(kept_members);
+  member_slot.resize(kept_members);
+}
+
 void ClumpsState::check() const {
   const auto require = [](bool ok, const std::string& what) {
     if (!ok)

@@ -61,6 +61,10 @@ public:
                 const Vec3& principal_moments, const std::vector<std::int64_t>& ids,
                 const std::vector<Vec3>& offsets);
 
+  /// Keeps the bodies b with keep[b] != 0 in their order, their members with them (the
+  /// members' slots are to be indexed again); in place, allocating nothing.
+  void keep_bodies(const std::vector<std::uint8_t>& keep);
+
   /// member_slot from the particles' ids, and per slot (real particles) the body it belongs
   /// to, -1 for a free sphere; `slot_of_id` is a buffer (kept by the caller, so that a rebuild
   /// in the step loop allocates nothing). Throws std::logic_error when a member's particle is

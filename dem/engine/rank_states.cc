@@ -13,7 +13,8 @@
 // import keys every history by the two ids in the canonical frame (System::rebuild), so the
 // order of the merged list decides nothing. A full circle without a periodic boundary has a
 // seam that turns by 2 pi (the identity): its images are plain copies, which the import keys
-// alike.
+// alike. Clumps: each rank's bodies follow one another in rank order; their members are named
+// by stable id, so they need no renumbering.
 //
 // The wear window (the open revolution's integrals, per thread per wearing wall) is summed
 // over ranks in rank order and over each rank's threads in thread order, into one thread's
@@ -30,6 +31,31 @@ namespace wear::dem {
 
 namespace {
 
+/// Appends the bodies of `from` to `to`, their member ranges shifted past those of `to`.
+void append_bodies(ClumpsState& to, const ClumpsState& from) {
+  const auto append = [](auto& a, const auto& b) { a.insert(a.end(), b.begin(), b.end()); };
+  append(to.position, from.position);
+  append(to.velocity, from.velocity);
+  append(to.orientation, from.orientation);
+  append(to.angular_momentum, from.angular_momentum);
+  append(to.force, from.force);
+  append(to.torque, from.torque);
+  append(to.mass, from.mass);
+  append(to.moments, from.moments);
+  const auto first = std::uint32_t(to.member_id.size());
+  for (std::size_t b = 1; b < from.member_begin.size(); ++b)
+    to.member_begin.push_back(first + from.member_begin[b]);
+  append(to.member_id, from.member_id);
+  append(to.member_offset, from.member_offset);
+}
+
+/// The fields of a body state, packed and unpacked in one order.
+template <class V>
+void visit_bodies(ClumpsState& c, V& v) {
+  v(c.position), v(c.velocity), v(c.orientation), v(c.angular_momentum), v(c.force), v(c.torque);
+  v(c.mass), v(c.moments), v(c.member_begin), v(c.member_id), v(c.member_offset);
+}
+
 // One list of the fields drives packing and unpacking (SystemState's order).
 template <class V>
 void visit(SystemState& s, V& v) {
@@ -42,6 +68,7 @@ void visit(SystemState& s, V& v) {
   v(s.next_id), v(s.wall_reference_time), v(s.wear_window), v(s.n_threads);
   v(s.rank), v(s.n_ranks), v(s.n_periodic_ghosts), v(s.n_image_ghosts);
   v(s.rank_ghosts), v(s.rank_sent_up);
+  visit_bodies(s.clumps, v);
 }
 
 struct Packer {
@@ -53,6 +80,7 @@ struct Packer {
       (*this)(x);
   }
   void operator()(const Vec3& x) { out.insert(out.end(), {x.x, x.y, x.z}); }
+  void operator()(const Quaternion& q) { out.insert(out.end(), {q.w, q.x, q.y, q.z}); }
   template <class T, class = std::enable_if_t<std::is_arithmetic_v<T>>>
   void operator()(const T& x) {
     out.push_back(double(x));
@@ -80,6 +108,12 @@ struct Unpacker {
     x.x = next();
     x.y = next();
     x.z = next();
+  }
+  void operator()(Quaternion& q) {
+    q.w = next();
+    q.x = next();
+    q.y = next();
+    q.z = next();
   }
   template <class T, class = std::enable_if_t<std::is_arithmetic_v<T>>>
   void operator()(T& x) {
@@ -160,7 +194,10 @@ SystemState merge_rank_states(const std::vector<SystemState>& parts) {
     m.material.insert(m.material.end(), s.material.begin(), s.material.end());
     m.id.insert(m.id.end(), s.id.begin(), s.id.end());
     m.next_id = std::max(m.next_id, s.next_id);
+    // Bodies in rank order; their members are named by id, which the merge keeps.
+    append_bodies(m.clumps, s.clumps);
   }
+  m.clumps.check();
   const std::size_t n = m.position.size();
   require(n < std::numeric_limits<std::uint32_t>::max(), "too many particles for one process");
   std::vector<std::int64_t> index_of;
@@ -286,6 +323,38 @@ Particles gather_particles(const Particles& p, RankLink* link, GatherTo to,
     out.id.back() = std::int64_t(v[11]);
   }
   return out;
+}
+
+} // namespace wear::dem
+
+namespace wear::dem {
+
+Clumps gather_clumps(const Clumps& mine, const Particles& gathered, RankLink* link) {
+  Clumps all;
+  if (!link) {
+    all.restore(mine);
+  } else {
+    std::vector<double> packed, message;
+    std::vector<std::size_t> counts;
+    Packer packer{packed};
+    visit_bodies(const_cast<Clumps&>(mine), packer); // the packer only reads
+    link->gather_to_first(packed, message, counts);
+    std::size_t at = 0;
+    for (const std::size_t n : counts) {
+      ClumpsState part;
+      Unpacker unpacker{message.data() + at, message.data() + at + n};
+      visit_bodies(part, unpacker);
+      append_bodies(all, part);
+      at += n;
+    }
+    all.member_slot.assign(all.member_id.size(), 0);
+  }
+  if (!all.empty()) {
+    std::vector<std::int64_t> slot_of_id;
+    std::vector<std::int32_t> body_of_slot;
+    all.index_members(gathered, slot_of_id, body_of_slot);
+  }
+  return all;
 }
 
 } // namespace wear::dem

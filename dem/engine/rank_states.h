@@ -64,4 +64,9 @@ enum class GatherTo {
 Particles gather_particles(const Particles& p, RankLink* link, GatherTo to,
                            const std::function<bool(std::size_t)>& keep = {}, double density = 1);
 
+/// Every rank's bodies on rank 0 in rank order (the others get none; one process: a copy of
+/// its own), their members indexed in `gathered`, rank 0's particles of gather_particles()
+/// with GatherTo::first_rank. Every rank calls it together. For snapshots.
+Clumps gather_clumps(const Clumps& mine, const Particles& gathered, RankLink* link);
+
 } // namespace wear::dem

@@ -43,6 +43,7 @@ double System::rayleigh_time() const {
 
 void System::setup() {
   auto& p = particles;
+  has_clumps_ = !clumps_.empty(); // over ranks before the bodies are distributed
   if (rank_link_)
     distribute_over_ranks();
   else if (p.n_real == 0)
@@ -64,8 +65,12 @@ void System::setup() {
     r_max = std::max(r_max, *std::max_element(p.radius.begin(), p.radius.begin() + p.n_real));
     r_min = *std::min_element(p.radius.begin(), p.radius.begin() + p.n_real);
   }
+  // A body wraps and migrates as one, by its centre: its members reach this far beyond it.
+  double overhang = 0;
+  for (const Vec3& c : clumps_.member_offset)
+    overhang = std::max(overhang, meshes::norm(c));
   if (rank_link_)
-    reduce_setup_values(t_r, r_max, r_min);
+    reduce_setup_values(t_r, r_max, r_min, overhang);
   dt_ = settings.time_step > 0 ? settings.time_step : settings.time_step_fraction * t_r;
   if (!(dt_ > 0) || !std::isfinite(dt_))
     throw std::invalid_argument("DEM/Time step: must be positive");
@@ -78,9 +83,7 @@ void System::setup() {
   }
   r_max_ = r_max;
   skin_ = settings.skin > 0 ? settings.skin : 0.5 * r_min;
-  member_overhang_ = 0;
-  for (const Vec3& c : clumps_.member_offset)
-    member_overhang_ = std::max(member_overhang_, meshes::norm(c));
+  member_overhang_ = overhang;
   if (settings.periodic.enabled) {
     const double a = settings.periodic.angle;
     if (!(a > 0 && a < 2 * pi))
@@ -114,9 +117,6 @@ void System::setup() {
     throw std::invalid_argument(
         "DEM: walls with a rigid motion cannot be combined with a periodic boundary");
   next_id_ = first_free_id(p.id.data(), p.n_real);
-  if (!clumps_.empty() && rank_link_)
-    throw std::invalid_argument("DEM: clumps are stepped in one process; a bed of clumps over "
-                                "ranks is not available");
   if (rank_link_)
     check_ranks_at_setup();
   set_n_threads(omp_get_max_threads());
@@ -291,6 +291,7 @@ void System::advance(bool close_previous) {
   phase_times_.integration += t_drift - t_begin;
   if (rank_link_) {
     ranked_forces(need_rebuild, t_drift);
+    gather_clump_forces();
   } else {
     if (need_rebuild) {
       rebuild(true);

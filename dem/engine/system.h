@@ -246,12 +246,26 @@ public:
   /// an unknown material, naming the batch entry.
   void insert_particles(const std::vector<NewParticle>& batch);
   /// Removes, between steps, the real particles for which remove(centre, radius) holds (an
-  /// outlet), and returns them in the engine's order. Rebuilds the lists; the pairs and wall
-  /// contacts that stay keep their histories.
+  /// outlet), and returns them: the clumps for which it holds at the body's centre and reach
+  /// (body_reach), whole, one record each (its first member's id, its centre, velocity and
+  /// mass), then the free spheres in the engine's order. Rebuilds the lists; the pairs and
+  /// wall contacts that stay keep their histories.
   std::vector<RemovedParticle>
   remove_particles(const std::function<bool(const Vec3&, double)>& remove);
   /// The stable id the next inserted particle gets: ids are never reused.
   std::int64_t next_id() const { return next_id_; }
+
+  /// [m] The radius about body b's centre that holds its members.
+  double body_reach(std::size_t b) const {
+    double reach = 0;
+    for (std::uint32_t k = clumps_.member_begin[b]; k < clumps_.member_begin[b + 1]; ++k)
+      reach = std::max(reach, meshes::norm(clumps_.member_offset[k]) +
+                                  particles.radius[clumps_.member_slot[k]]);
+    return reach;
+  }
+  /// Grains over every rank: free spheres and clumps, each clump one (Every rank calls it
+  /// together over ranks).
+  std::size_t n_grains_over_ranks() const;
 
   /// Adds a rigid clump of `shape` (its body frame and size as they are) before setup():
   /// its members become particles of `material` with the next ids, the body's mass is
@@ -438,14 +452,27 @@ private:
     std::vector<std::uint8_t> leaves_by_id;
     std::vector<std::uint32_t> sent_up; ///< particles the rank above holds ghosts of, in order
     std::vector<double> up, down, from_below, from_above;
+    std::vector<std::uint8_t> body_stays; ///< per body: its centre stays in the slab
+    std::vector<std::int64_t> member_ids; ///< a received body's members
+    std::vector<Vec3> member_offsets;     ///< [m] and their body-frame centres
   };
   RankScratch rank_scratch_;
   /// setup(): every particle to its owner (each keeps its own when all ranks hold the same bed).
   void distribute_over_ranks();
   /// import_state() of a whole bed over ranks (see there).
   void import_whole_state(const SystemState& s);
-  /// setup(): the Rayleigh time and the smallest radius as minima, r_max as maximum, over ranks.
-  void reduce_setup_values(double& t_r, double& r_max, double& r_min);
+  /// setup(): the Rayleigh time and the smallest radius as minima, r_max and the members'
+  /// overhang as maxima, over ranks.
+  void reduce_setup_values(double& t_r, double& r_max, double& r_min, double& overhang);
+  /// The rank that owns real particle i: of its body's centre for a member (a body stays whole
+  /// on one rank), of its own centre for a free sphere. body_of_slot_ indexed.
+  int owner_rank(std::size_t i) const {
+    const std::int32_t b = clumps_.empty() ? -1 : body_of_slot_[i];
+    return slab_cuts_.owner(b >= 0 ? clumps_.position[std::size_t(b)] : particles.position[i]);
+  }
+  /// Keeps the bodies whose centre this rank's slab owns (after the particles were kept by
+  /// owner_rank) and indexes their members.
+  void keep_own_bodies();
   /// setup(): no periodic boundary, next_id_ over ranks, ids unique, slabs as wide as the reach.
   void check_ranks_at_setup();
   /// rebuild(): particles that left the slab go to the neighbour with their wall slots; the
@@ -482,6 +509,9 @@ private:
   /// a body wraps across a periodic boundary as one, by its centre, so its members may lie
   /// that far beyond the boundary.
   double member_overhang_ = 0;
+  /// Clumps in the bed on any rank (setup): a part's import then restores the rank's bodies,
+  /// however many it holds.
+  bool has_clumps_ = false;
   /// [m] How far inside a periodic boundary a particle has an image: the contact reach of two
   /// particles and the skin, and the members' overhang.
   double ghost_reach() const { return 2 * r_max_ + skin_ + member_overhang_; }
@@ -561,6 +591,7 @@ private:
     std::vector<int> gather_int;
     std::vector<std::int64_t> gather_id;
     std::vector<std::int64_t> clump_slot_of_id; ///< Clumps::index_members' table
+    std::vector<std::uint8_t> body_kept;        ///< per body: not taken by an outlet
     std::size_t bytes() const;                  ///< [B] the storage held
   };
   RebuildScratch rebuild_scratch_;

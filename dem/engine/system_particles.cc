@@ -7,6 +7,7 @@
 // An inserted particle starts with gravity as its force (its first half-kick), a removed
 // one leaves its last contact forces on its partners for their closing half-kick: the same
 // as a contact that opens or closes within a step.
+#include "dem/engine/reused_buffer.h"
 #include "dem/engine/system.h"
 
 #include <algorithm>
@@ -64,12 +65,13 @@ std::vector<RemovedParticle>
 System::remove_particles(const std::function<bool(const Vec3&, double)>& remove) {
   if (!set_up_)
     throw std::logic_error("System::remove_particles() before setup()");
-  if (!clumps_.empty())
-    throw std::logic_error("DEM: particles are not removed from a bed of clumps");
   std::vector<RemovedParticle> removed;
   double any = 0;
   for (std::size_t i = 0; i < particles.n_real && any == 0; ++i)
-    any = remove(particles.position[i], particles.radius[i]) ? 1 : 0;
+    if (clumps_.empty() || body_of_slot_[i] < 0)
+      any = remove(particles.position[i], particles.radius[i]) ? 1 : 0;
+  for (std::size_t b = 0; b < clumps_.size() && any == 0; ++b)
+    any = remove(clumps_.position[b], body_reach(b)) ? 1 : 0;
   if (rank_link_) // a rebuild is every rank's together
     rank_link_->max_over_ranks(&any, 1);
   if (any == 0)
@@ -99,16 +101,37 @@ void System::apply_particle_changes(const ParticleChanges& changes) {
   auto& p = particles;
   std::size_t n = p.n_real;
   if (changes.remove) {
+    // A body leaves whole, by its centre and reach, booked once (its first member's id, its
+    // centre, velocity and mass); its members leave with it.
+    const bool clumps = !clumps_.empty();
+    std::vector<std::uint8_t>& body_kept = rebuild_scratch_.body_kept;
+    if (clumps) {
+      clumps_.index_members(p, rebuild_scratch_.clump_slot_of_id, body_of_slot_);
+      resize_reusing(body_kept, clumps_.size());
+      for (std::size_t b = 0; b < clumps_.size(); ++b) {
+        body_kept[b] = !(*changes.remove)(clumps_.position[b], body_reach(b));
+        if (!body_kept[b] && changes.removed)
+          changes.removed->push_back({clumps_.member_id[clumps_.member_begin[b]],
+                                      clumps_.position[b], clumps_.velocity[b], clumps_.mass[b]});
+      }
+    }
     std::size_t kept = 0;
     for (std::size_t i = 0; i < n; ++i) {
-      if ((*changes.remove)(p.position[i], p.radius[i])) {
-        if (changes.removed)
+      const std::int32_t body = clumps ? body_of_slot_[i] : -1;
+      if (body >= 0 ? !body_kept[std::size_t(body)]
+                    : (*changes.remove)(p.position[i], p.radius[i])) {
+        if (body < 0 && changes.removed)
           changes.removed->push_back({p.id[i], p.position[i], p.velocity[i], p.mass[i]});
         continue;
       }
       move_particle(kept++, i);
     }
     n = kept;
+    if (clumps) {
+      clumps_.keep_bodies(body_kept);
+      p.n_real = n;
+      clumps_.index_members(p, rebuild_scratch_.clump_slot_of_id, body_of_slot_);
+    }
     if (n == 0 && !rank_link_) // over ranks, another may still hold particles
       throw std::runtime_error(
           "DEM: the outlets removed every particle at t = " + std::to_string(time_) + " s");

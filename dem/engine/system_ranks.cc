@@ -32,6 +32,14 @@
 // (wrap_into_sector) and passes round the seam; the receiver turns its own histories in the
 // particle's frame by the wrap, which travels with it.
 //
+// Clumps: a body is owned by the rank whose slab holds its centre, and its members with it
+// wherever they lie (owner_rank); at a rebuild a body whose centre left the slab goes to the
+// neighbour whole (its pose, momenta, last force and torque, mass properties and members' ids
+// and offsets), its members as particles with their slots and histories. A member lies at most
+// the overhang (its largest distance from its body's centre) beyond its rank's slab: the ghosts
+// reach that much further (ghost_reach) and a slab holds two overhangs besides the contact
+// reach. The forces on member ghosts go back to their owners before the bodies gather them.
+//
 // Assumptions: stable ids unique over all ranks (checked at setup) unless every rank holds
 // the same bed, of which each then keeps its own; an exception on one rank (a particle too
 // fast, outside the domain) leaves the others waiting in the next message: the caller aborts
@@ -58,6 +66,9 @@ namespace {
 /// back.
 constexpr std::size_t particle_values = 22, slot_values = 7, history_values = 5, ghost_values = 14,
                       motion_values = 9, load_values = 6;
+/// Doubles per migrating body (position, velocity, orientation, angular momentum, force, torque,
+/// mass, principal moments, member count) and per member after it (id, body-frame centre).
+constexpr std::size_t body_values = 24, member_values = 4;
 
 inline void put(std::vector<double>& b, const Vec3& v) {
   b.push_back(v.x);
@@ -117,20 +128,23 @@ void System::distribute_over_ranks() {
     throw std::invalid_argument("DEM: no particles (on any rank)");
   std::vector<std::int32_t> no_slots;
   std::vector<CarriedHistory> no_histories;
+  if (!clumps_.empty())
+    clumps_.index_members(p, rebuild_scratch_.clump_slot_of_id, body_of_slot_);
   if (stats[0] == -stats[1] && stats[2] == -stats[3]) {
     // Every rank holds the same bed: each keeps its own (a migration that sends nothing).
     std::size_t kept = 0;
     for (std::size_t i = 0; i < p.n_real; ++i)
-      if (slab_cuts_.owner(p.position[i]) == link.rank())
+      if (owner_rank(i) == link.rank())
         move_particle(kept++, i);
     p.n_real = kept;
     p.resize_ghosts(0);
+    keep_own_bodies();
   } else {
     // Passed along rank by rank until every particle is with its owner.
     for (int hop = 0;; ++hop) {
       double misplaced = 0;
       for (std::size_t i = 0; i < p.n_real; ++i)
-        misplaced += slab_cuts_.owner(p.position[i]) != link.rank();
+        misplaced += owner_rank(i) != link.rank();
       link.max_over_ranks(&misplaced, 1);
       if (misplaced == 0 || hop > link.n_ranks())
         break;
@@ -156,12 +170,13 @@ void System::import_whole_state(const SystemState& s) {
   std::vector<std::uint8_t> here(std::size_t(next_id_), 0);
   std::size_t kept = 0;
   for (std::size_t i = 0; i < p.n_real; ++i)
-    if (slab_cuts_.owner(p.position[i]) == rank_link_->rank()) {
+    if (owner_rank(i) == rank_link_->rank()) {
       here[std::size_t(p.id[i])] = 1;
       move_particle(kept++, i);
     }
   p.n_real = kept;
   p.resize_ghosts(0);
+  keep_own_bodies();
   ghost_owner_.clear();
   n_periodic_ghosts_ = n_image_ghosts_ = 0;
   std::size_t n_old = 0;
@@ -172,8 +187,22 @@ void System::import_whole_state(const SystemState& s) {
   relist(old, rebuild_scratch_.slots_of_id);
 }
 
+void System::keep_own_bodies() {
+  if (clumps_.empty())
+    return;
+  RankScratch& rs = rank_scratch_;
+  resize_reusing(rs.body_stays, clumps_.size());
+  for (std::size_t b = 0; b < clumps_.size(); ++b)
+    rs.body_stays[b] = slab_cuts_.owner(clumps_.position[b]) == rank_link_->rank();
+  clumps_.keep_bodies(rs.body_stays);
+  clumps_.index_members(particles, rebuild_scratch_.clump_slot_of_id, body_of_slot_);
+}
+
 void System::check_ranks_at_setup() {
   RankLink& link = *rank_link_;
+  double clumps = has_clumps_ ? 1 : 0;
+  link.max_over_ranks(&clumps, 1);
+  has_clumps_ = clumps > 0;
   // A periodic boundary is the seam between the last rank and rank 0: the ranks form a ring
   // and the slabs span the period exactly.
   const std::vector<double>& b = slab_cuts_.bound;
@@ -214,15 +243,19 @@ void System::check_ranks_at_setup() {
       throw std::invalid_argument("DEM: particle id " + std::to_string(k) + " is held by " +
                                   std::to_string(int(count[k])) +
                                   " ranks (ids must be unique over the ranks)");
-  rank_slabs_->check_widths(2 * r_max_ + skin_);
+  // Members of the bodies of rank r - 1 and of rank r + 1 may each overhang into rank r's slab:
+  // it must hold the members' two overhangs besides the contact reach, so that only adjacent
+  // ranks meet.
+  rank_slabs_->check_widths(2 * r_max_ + skin_ + 2 * member_overhang_);
 }
 
-void System::reduce_setup_values(double& t_r, double& r_max, double& r_min) {
-  double v[3] = {-t_r, r_max, -r_min};
-  rank_link_->max_over_ranks(v, 3);
+void System::reduce_setup_values(double& t_r, double& r_max, double& r_min, double& overhang) {
+  double v[4] = {-t_r, r_max, -r_min, overhang};
+  rank_link_->max_over_ranks(v, 4);
   t_r = -v[0];
   r_max = v[1];
   r_min = -v[2];
+  overhang = v[3];
 }
 
 void System::migrate_over_ranks(std::vector<std::int32_t>& slots_of_id,
@@ -232,16 +265,21 @@ void System::migrate_over_ranks(std::vector<std::int32_t>& slots_of_id,
   const int rank = rank_link_->rank(), n_ranks = rank_link_->n_ranks();
   const bool ring = rank_link_->ring();
   const std::size_t n = p.n_real;
+  // A member goes where its body's centre goes (owner_rank).
+  if (!clumps_.empty())
+    clumps_.index_members(p, rebuild_scratch_.clump_slot_of_id, body_of_slot_);
+  // Round the seam on a ring (a particle that wrapped), else towards the owner (at setup,
+  // over several ranks).
+  const auto direction = [&](int o) -> signed char {
+    const bool up = ring ? o == (rank + 1) % n_ranks : o > rank;
+    const bool down = ring ? o == (rank + n_ranks - 1) % n_ranks : o < rank;
+    return o == rank ? 0 : up ? 1 : down ? -1 : o > rank ? 1 : -1;
+  };
   resize_reusing(rs.leaving, n);
   std::size_t n_leaving = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    const int o = slab_cuts_.owner(p.position[i]);
-    // Round the seam on a ring (a particle that wrapped), else towards the owner (at setup,
-    // over several ranks).
-    const bool up = ring ? o == (rank + 1) % n_ranks : o > rank;
-    const bool down = ring ? o == (rank + n_ranks - 1) % n_ranks : o < rank;
-    rs.leaving[i] = o == rank ? 0 : up ? 1 : down ? -1 : o > rank ? 1 : -1;
-    n_leaving += o != rank;
+    rs.leaving[i] = direction(owner_rank(i));
+    n_leaving += rs.leaving[i] != 0;
   }
   // The wrap each particle took in this rebuild (wrap_into_sector): the receiver turns its own
   // histories of it alike.
@@ -298,6 +336,34 @@ void System::migrate_over_ranks(std::vector<std::int32_t>& slots_of_id,
       rs.leaves_by_id[std::size_t(p.id[i])] = 0;
   }
   rs.down.insert(rs.down.end(), rs.up.begin() + std::ptrdiff_t(history_at), rs.up.end());
+  // Bodies: [count, bodies with their members...] after the histories, each to its side.
+  const std::size_t bodies_up = rs.up.size(), bodies_down = rs.down.size();
+  rs.up.push_back(0.0);
+  rs.down.push_back(0.0);
+  const Clumps& c = clumps_;
+  resize_reusing(rs.body_stays, c.size());
+  for (std::size_t b = 0; b < c.size(); ++b) {
+    const signed char d = direction(slab_cuts_.owner(c.position[b]));
+    rs.body_stays[b] = d == 0;
+    if (d == 0)
+      continue;
+    std::vector<double>& m = d > 0 ? rs.up : rs.down;
+    m[d > 0 ? bodies_up : bodies_down] += 1;
+    put(m, c.position[b]);
+    put(m, c.velocity[b]);
+    const Quaternion& q = c.orientation[b];
+    m.insert(m.end(), {q.w, q.x, q.y, q.z});
+    put(m, c.angular_momentum[b]);
+    put(m, c.force[b]);
+    put(m, c.torque[b]);
+    m.push_back(c.mass[b]);
+    put(m, c.moments[b]);
+    m.push_back(double(c.member_begin[b + 1] - c.member_begin[b]));
+    for (std::uint32_t k = c.member_begin[b]; k < c.member_begin[b + 1]; ++k) {
+      m.push_back(double(c.member_id[k]));
+      put(m, c.member_offset[k]);
+    }
+  }
   rank_link_->shift(+1, rs.up, rs.from_below);
   rank_link_->shift(-1, rs.down, rs.from_above);
 
@@ -307,6 +373,7 @@ void System::migrate_over_ranks(std::vector<std::int32_t>& slots_of_id,
       move_particle(kept++, i);
   p.n_real = kept;
   p.resize_ghosts(0);
+  clumps_.keep_bodies(rs.body_stays); // those that stay, before those that arrive
   const std::size_t n_local_histories = old.size();
   for (const std::vector<double>* message : {&rs.from_below, &rs.from_above}) {
     if (message->empty())
@@ -348,7 +415,25 @@ void System::migrate_over_ranks(std::vector<std::int32_t>& slots_of_id,
     reserve_reusing(old, old.size() + n_histories);
     for (std::size_t k = 0; k < n_histories; ++k, a += history_values)
       old.push_back({(std::uint64_t(a[0]) << 32) | std::uint64_t(a[1]), 0, vec(a + 2)});
+    const std::size_t n_bodies = std::size_t(*a++);
+    for (std::size_t k = 0; k < n_bodies; ++k) {
+      const std::size_t n_members = std::size_t(a[body_values - 1]);
+      rs.member_ids.clear();
+      rs.member_offsets.clear();
+      for (std::size_t e = 0; e < n_members; ++e) {
+        const double* mb = a + body_values + member_values * e;
+        rs.member_ids.push_back(std::int64_t(mb[0]));
+        rs.member_offsets.push_back(vec(mb + 1));
+      }
+      clumps_.add_body(vec(a), vec(a + 3), {a[6], a[7], a[8], a[9]}, vec(a + 10), a[19],
+                       vec(a + 20), rs.member_ids, rs.member_offsets);
+      clumps_.force.back() = vec(a + 13);
+      clumps_.torque.back() = vec(a + 16);
+      a += body_values + member_values * n_members;
+    }
   }
+  if (!clumps_.empty())
+    clumps_.index_members(p, rebuild_scratch_.clump_slot_of_id, body_of_slot_);
 }
 
 void System::exchange_rank_ghosts() {
@@ -356,7 +441,8 @@ void System::exchange_rank_ghosts() {
   RankScratch& rs = rank_scratch_;
   const int rank = rank_link_->rank(), n_ranks = rank_link_->n_ranks();
   const bool ring = rank_link_->ring();
-  const double reach = 2 * r_max_ + skin_;
+  // A member may lie its overhang beyond the cut on the other side: the ghosts' reach.
+  const double reach = ghost_reach();
   // Across the seam the ghosts are the periodic images (rotated by -angle, shifted by -L).
   const bool seam = ring && rank + 1 == n_ranks;
   const double c = cos_t_, s = seam ? -sin_t_ : 0.0;
@@ -476,6 +562,16 @@ void System::ranked_forces(bool need_rebuild, double t_drift) {
 
 std::size_t System::n_particles_over_ranks() const {
   double n = double(particles.n_real);
+  if (rank_link_)
+    rank_link_->sum_in_rank_order(&n, 1);
+  return std::size_t(n);
+}
+
+std::size_t System::n_grains_over_ranks() const {
+  std::size_t members = 0;
+  for (std::size_t b = 0; b < clumps_.size(); ++b)
+    members += clumps_.member_begin[b + 1] - clumps_.member_begin[b];
+  double n = double(particles.n_real - members + clumps_.size());
   if (rank_link_)
     rank_link_->sum_in_rank_order(&n, 1);
   return std::size_t(n);

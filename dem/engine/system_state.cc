@@ -147,7 +147,8 @@ void System::check_importable(const SystemState& s, bool whole) const {
   }
   for (const auto w : s.slot_wall)
     require(w >= -1 && w < n_walls(), "a wall slot refers to a missing wall");
-  require(s.clumps.size() == clumps_.size(),
+  // Over ranks a part holds the bodies of its slab, however many: the bed has clumps or not.
+  require(rank_link_ ? s.clumps.empty() || has_clumps_ : s.clumps.size() == clumps_.size(),
           "holds " + std::to_string(s.clumps.size()) + " clumps, the system " +
               std::to_string(clumps_.size()) + " (add_state_clumps before setup)");
   if (!s.clumps.empty()) { // a bed of spheres sorts no ids
@@ -223,7 +224,7 @@ void System::take_particles(const SystemState& s) {
   time_ = s.time;
   n_steps_ = s.n_steps;
   n_rebuilds_ = s.n_rebuilds;
-  if (!clumps_.empty()) { // the bodies in the state's order, their members in the particles'
+  if (has_clumps_) { // the bodies in the state's order, their members in the particles'
     clumps_.restore(s.clumps);
     clumps_.index_members(particles, rebuild_scratch_.clump_slot_of_id, body_of_slot_);
   }

@@ -302,7 +302,7 @@ void SceneRun::setup(const std::function<void(const std::string&)>& progress) {
   if (system_.particles.n_real > 0 && !engine_ready()) {
     fit_rank_slabs();
     system_.setup();
-    say("set up with " + std::to_string(system_.n_particles_over_ranks()) + " particles");
+    say("set up with " + std::to_string(system_.n_grains_over_ranks()) + " particles");
   }
   time_ = engine_ready() ? system_.time() : 0.0;
 }
@@ -527,7 +527,7 @@ SceneWindow SceneRun::advance(double t_end) {
   w.t_end = time_;
   const auto& p = system_.particles;
   RankLink* link = rank_link();
-  w.n_particles = set_up ? system_.n_particles_over_ranks() : 0;
+  w.n_particles = set_up ? system_.n_grains_over_ranks() : 0;
   for (const auto& in : inlets_) {
     const auto s = in.state();
     w.n_inserted += s.n_inserted;
@@ -559,16 +559,18 @@ SceneWindow SceneRun::advance(double t_end) {
         w.wearing.emplace(k, std::move(wi)); // the part's loads are made of it
     }
   if (set_up && w.n_particles > 0) {
+    // Over the engine's spheres (a clump's members each once).
+    double sum[2] = {0, double(p.n_real)}; // [m/s], [-]
     for (std::size_t i = 0; i < p.n_real; ++i) {
       const double v = meshes::norm(p.velocity[i]);
-      w.mean_speed += v;
+      sum[0] += v;
       w.max_speed = std::max(w.max_speed, v);
     }
     if (link) {
-      link->sum_in_rank_order(&w.mean_speed, 1);
+      link->sum_in_rank_order(sum, 2);
       link->max_over_ranks(&w.max_speed, 1);
     }
-    w.mean_speed /= double(w.n_particles);
+    w.mean_speed = sum[0] / sum[1];
   }
   return w;
 }

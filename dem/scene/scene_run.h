@@ -35,7 +35,7 @@ struct WallWindowLoads {
 
 struct SceneWindow {
   double t_begin = 0, t_end = 0;               ///< [s]
-  std::size_t n_particles = 0;                 ///< at the end
+  std::size_t n_particles = 0;                 ///< at the end (a clump counts once)
   std::uint64_t n_inserted = 0, n_removed = 0; ///< since the start
   double inserted_mass = 0;                    ///< [kg] since the start
   std::vector<double> outlet_mass;             ///< [kg] since the start, per outlet

@@ -171,7 +171,7 @@ TEST_CASE("a scene's series writes a wall that keeps its place once, a moving bo
   wear::meshes::ensure_directory(dir);
   SceneSeries series(dir, run);
   for (int k = 1; k <= 2; ++k)
-    series.add(wear::dem::SceneWindow{}, run, wear::dem::Particles{}, false);
+    series.add(wear::dem::SceneWindow{}, run, wear::dem::Particles{}, nullptr, false);
   for (const char* name : {"belt", "left"}) {
     CHECK(std::filesystem::exists(dir + "/walls/" + name + ".vtu"));
     CHECK_FALSE(std::filesystem::exists(dir + "/walls_1/" + name + ".vtu"));
