@@ -66,7 +66,7 @@ void System::setup() {
     r_min = *std::min_element(p.radius.begin(), p.radius.begin() + p.n_real);
   }
   // A body wraps and migrates as one, by its centre: its members reach this far beyond it.
-  double overhang = 0;
+  double overhang = settings.max_overhang;
   for (const Vec3& c : clumps_.member_offset)
     overhang = std::max(overhang, meshes::norm(c));
   if (rank_link_)

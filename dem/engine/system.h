@@ -44,6 +44,9 @@ struct DemSettings {
   /// [m] The largest radius a particle may have, also one inserted later (the lists' reach);
   /// 0: the largest at setup.
   double max_radius = 0;
+  /// [m] The largest distance of a clump's member centre from its body's centre, also of a
+  /// clump inserted later (the ghosts' reach); 0: the largest at setup.
+  double max_overhang = 0;
   double max_speed = 50; ///< [m/s] a faster particle stops the run
   double start_time = 0; ///< [s] the clock at setup
   meshes::BoundingBox domain{{-1e3, -1e3, -1e3}, {1e3, 1e3, 1e3}}; ///< [m] leaving it is an error
@@ -146,12 +149,16 @@ struct PhaseTimes {
 
 /// A particle to add between steps (System::insert_particles).
 struct NewParticle {
-  Vec3 position;         ///< [m]
+  Vec3 position;         ///< [m] (a clump's centre of mass)
   Vec3 velocity;         ///< [m/s]
   Vec3 angular_velocity; ///< [rad/s]
-  double radius = 0;     ///< [m]
+  double radius = 0;     ///< [m] (a clump's equivalent-volume radius)
   double density = 0;    ///< [kg/m^3]
   int material = 0;
+  /// A clump of this shape, scaled to the equivalent diameter 2 radius and turned by
+  /// `orientation`; nullptr: a sphere. The caller keeps it alive through the insertion.
+  const ClumpShape* shape = nullptr;
+  Quaternion orientation;
 };
 
 /// A particle taken out between steps (System::remove_particles).
@@ -239,8 +246,10 @@ public:
   /// at zero.
   void replace_wall_mesh(int w, const meshes::SurfaceMesh& mesh);
 
-  /// Adds particles between steps (after setup), each with a new stable id (next_id() on),
-  /// their forces gravity only. The caller places them clear of the other particles and the
+  /// Adds particles between steps (after setup), each with a new stable id (next_id() on; a
+  /// clump's members one each, in member order), their forces gravity only (a clump's on the
+  /// body). A clump's members must fit the reach fixed at setup (DemSettings::max_radius and
+  /// max_overhang). The caller places them clear of the other particles and the
   /// walls (an overlap would give a large repulsion at the next step). Rebuilds the lists;
   /// the others keep their contact histories. Throws for a non-positive radius or density or
   /// an unknown material, naming the batch entry.
@@ -332,6 +341,10 @@ private:
   /// forces hold gravity only (a wrapped particle's is then not rotated). `changes`: applied
   /// after the old lists' histories are keyed by id and before the new lists are built.
   void rebuild(bool in_step = false, const ParticleChanges* changes = nullptr);
+  /// Appends a clump's members to the particles and its body to the bodies (add_clump and
+  /// inserted clumps; q normalised); with `new_ids` the members take ids from next_id_ on.
+  void place_clump(const ClumpShape& shape, double density, int material, const Vec3& x,
+                   const Quaternion& q, const Vec3& v, const Vec3& w, bool new_ids);
   /// Removes and appends real particles (rebuild's step for `changes`; ghosts dropped).
   void apply_particle_changes(const ParticleChanges& changes);
   /// Real particle `from` into slot `to` (compaction after outlets and migration).

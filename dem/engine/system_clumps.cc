@@ -36,7 +36,12 @@ std::size_t System::add_clump(const ClumpShape& shape, double density, int mater
   const double norm_q = std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
   if (!(norm_q > 0) || !std::isfinite(norm_q))
     throw std::invalid_argument(what + " has no orientation (a zero quaternion)");
-  const Quaternion qn = normalized(q);
+  place_clump(shape, density, material, x, normalized(q), v, w, false);
+  return clumps_.size() - 1;
+}
+
+void System::place_clump(const ClumpShape& shape, double density, int material, const Vec3& x,
+                         const Quaternion& qn, const Vec3& v, const Vec3& w, bool new_ids) {
   const double m = density * shape.volume;
   const Vec3 moments = shape.moments * density;
   auto& p = particles;
@@ -49,13 +54,16 @@ std::size_t System::add_clump(const ClumpShape& shape, double density, int mater
     p.angular_velocity.back() = w;
     p.mass.back() = m;
     p.inertia.back() = (moments.x + moments.y + moments.z) / 3;
+    if (new_ids)
+      p.id.back() = next_id_++;
     ids.push_back(p.id.back());
     offsets.push_back(c.centre);
   }
   const Vec3 wb = rotate_back(qn, w);
   const Vec3 L = rotate(qn, {moments.x * wb.x, moments.y * wb.y, moments.z * wb.z});
   clumps_.add_body(x, v, qn, L, m, moments, ids, offsets);
-  return clumps_.size() - 1;
+  if (new_ids) // inserted between steps: the next half-kick takes gravity on the body
+    clumps_.force.back() = settings.gravity * m;
 }
 
 void System::add_state_clumps(const ClumpsState& state) {

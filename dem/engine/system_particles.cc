@@ -38,18 +38,35 @@ std::int64_t first_free_id(const std::int64_t* id, std::size_t n) {
 void System::insert_particles(const std::vector<NewParticle>& batch) {
   if (!set_up_)
     throw std::logic_error("System::insert_particles() before setup(): add them to particles");
-  if (!clumps_.empty())
-    throw std::logic_error("DEM: particles are not inserted into a bed of clumps");
   for (std::size_t k = 0; k < batch.size(); ++k) {
     const NewParticle& q = batch[k];
     const std::string what = "DEM: inserted particle " + std::to_string(k) + " of the batch";
+    if (q.shape) {
+      const ClumpShape& c = *q.shape;
+      if (c.members.empty() || !(c.volume > 0))
+        throw std::invalid_argument(what + ": clump shape '" + c.name + "' has no members");
+      const double scale = 2 * q.radius / c.equivalent_diameter();
+      double r = 0, overhang = 0;
+      for (const ClumpMember& m : c.members) {
+        r = std::max(r, m.radius * scale);
+        overhang = std::max(overhang, meshes::norm(m.centre) * scale);
+      }
+      if (r > r_max_ || overhang > member_overhang_)
+        throw std::invalid_argument(what + " is a clump whose members (largest radius " +
+                                    std::to_string(r) + " m, reaching " + std::to_string(overhang) +
+                                    " m from its centre) exceed the reach "
+                                    "fixed at setup (radius " +
+                                    std::to_string(r_max_) + " m, overhang " +
+                                    std::to_string(member_overhang_) +
+                                    " m: DemSettings::max_radius and max_overhang)");
+    }
     if (!(q.radius > 0) || !std::isfinite(q.radius))
       throw std::invalid_argument(what + " has a non-positive radius");
     if (!(q.density > 0) || !std::isfinite(q.density))
       throw std::invalid_argument(what + " has a non-positive density");
     if (q.material < 0 || q.material >= materials.n_materials())
       throw std::invalid_argument(what + " refers to an unknown material");
-    if (q.radius > r_max_)
+    if (!q.shape && q.radius > r_max_)
       throw std::invalid_argument(what + " is larger (r = " + std::to_string(q.radius) +
                                   " m) than the largest particle at setup, which fixed the "
                                   "list reach (r = " +
@@ -127,11 +144,8 @@ void System::apply_particle_changes(const ParticleChanges& changes) {
       move_particle(kept++, i);
     }
     n = kept;
-    if (clumps) {
+    if (clumps)
       clumps_.keep_bodies(body_kept);
-      p.n_real = n;
-      clumps_.index_members(p, rebuild_scratch_.clump_slot_of_id, body_of_slot_);
-    }
     if (n == 0 && !rank_link_) // over ranks, another may still hold particles
       throw std::runtime_error(
           "DEM: the outlets removed every particle at t = " + std::to_string(time_) + " s");
@@ -140,10 +154,20 @@ void System::apply_particle_changes(const ParticleChanges& changes) {
   p.resize_ghosts(0); // make_ghosts() sizes the ghost region anew
   if (changes.insert)
     for (const NewParticle& q : *changes.insert) {
-      // Over ranks every rank is given the whole batch and keeps those in its slab; the ids
-      // are counted on all of them alike.
+      // Over ranks every rank is given the whole batch and keeps those in its slab (a clump by
+      // its centre); the ids are counted on all of them alike.
+      const std::size_t n_ids = q.shape ? q.shape->members.size() : 1;
+      has_clumps_ = has_clumps_ || q.shape; // on every rank alike
       if (rank_link_ && slab_cuts_.owner(q.position) != rank_link_->rank()) {
-        ++next_id_;
+        next_id_ += std::int64_t(n_ids);
+        continue;
+      }
+      if (next_id_ + std::int64_t(n_ids) >= (std::int64_t(1) << 32) - 1)
+        throw std::runtime_error("DEM: particle ids are exhausted (2^32 - 1 inserted)");
+      if (q.shape) {
+        place_clump(q.shape->scaled(2 * q.radius / q.shape->equivalent_diameter()), q.density,
+                    q.material, q.position, normalized(q.orientation), q.velocity,
+                    q.angular_velocity, true);
         continue;
       }
       p.add(q.position, q.velocity, q.radius, q.density, q.material);
@@ -153,6 +177,8 @@ void System::apply_particle_changes(const ParticleChanges& changes) {
         throw std::runtime_error("DEM: particle ids are exhausted (2^32 - 1 inserted)");
       p.id.back() = next_id_++;
     }
+  if (!clumps_.empty()) // the rebuild's steps find the members by slot
+    clumps_.index_members(p, rebuild_scratch_.clump_slot_of_id, body_of_slot_);
 }
 
 } // namespace wear::dem

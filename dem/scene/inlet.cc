@@ -12,7 +12,11 @@
 // Sizes are drawn one by one from the number fractions n_k ~ f_k / d_k^3 (std::mt19937_64,
 // seeded); a particle that finds no place after 1000 tries stays first in line for the next
 // batch. Positions: uniform in the box shrunk by the radius, clear of the particles of the
-// system within the box (plus a diameter) and of the batch's own (InsertionGrid).
+// system within the box (plus a diameter) and of the batch's own (InsertionGrid). A clump
+// (InletSpec::shape) is placed as the sphere that holds its members, of the shape's reach
+// scaled to the drawn equivalent diameter (every length above, d_max included, grows by
+// that ratio), and turned by a uniform random rotation (Shoemake 1992) from the same
+// generator; its mass is that of its equivalent sphere, as the engine gives the body.
 #include "dem/scene/inlet.h"
 
 #include "dem/engine/insertion_grid.h"
@@ -58,9 +62,12 @@ Inlet::Inlet(InletSpec spec) : spec_(std::move(spec)), rng_(spec_.seed) {
     throw std::invalid_argument(what + ": the particle density must be positive");
   if (!(spec_.end_time > spec_.start_time))
     throw std::invalid_argument(what + ": End time must lie after Start time");
-  depth_ = 2 * spec_.psd.max_diameter();
+  if (spec_.shape && (spec_.shape->members.empty() || !(spec_.shape->volume > 0)))
+    throw std::invalid_argument(what + ": the clump shape '" + spec_.shape->name +
+                                "' has no members");
+  depth_ = 2 * reach_ratio() * spec_.psd.max_diameter();
   const double edge = std::min(meshes::norm(spec_.edge_u), meshes::norm(spec_.edge_v));
-  if (edge < 2 * spec_.psd.max_diameter())
+  if (edge < depth_)
     throw std::invalid_argument(what + ": the rectangle is narrower than two of the largest "
                                        "particles");
   const double phi = box_solid_fraction();
@@ -83,6 +90,10 @@ double Inlet::box_solid_fraction() const {
   return spec_.mass_flow / (spec_.density * area * normal_speed_);
 }
 
+double Inlet::reach_ratio() const {
+  return spec_.shape ? 2 * spec_.shape->reach() / spec_.shape->equivalent_diameter() : 1.0;
+}
+
 double Inlet::owed_mass(double t) const {
   const double running = std::max(0.0, std::min(t, spec_.end_time) - spec_.start_time);
   return spec_.mass_flow * running - done_.inserted_mass;
@@ -103,7 +114,7 @@ std::vector<NewParticle> Inlet::batch(double t, const Particles& existing) {
   std::vector<NewParticle> out;
   if (t < spec_.start_time)
     return out;
-  const double d_max = spec_.psd.max_diameter();
+  const double d_max = spec_.psd.max_diameter() * reach_ratio();
   // The particles of the system that may touch the box, and the batch's own, in one set.
   Particles near;
   const Vec3 u = spec_.edge_u, v = spec_.edge_v, back = normal_ * -depth_;
@@ -115,7 +126,8 @@ std::vector<NewParticle> Inlet::batch(double t, const Particles& existing) {
   std::uniform_real_distribution<double> unit(0, 1);
   const double target = owed_mass(t) + done_.inserted_mass;
   while (true) {
-    const double d = next_diameter(), r = 0.5 * d, m = sphere_mass(d, spec_.density);
+    const double d = next_diameter(), m = sphere_mass(d, spec_.density);
+    const double r = 0.5 * d * reach_ratio(); // the sphere that holds a clump's members
     if (done_.inserted_mass + m > target + 0.5 * m)
       break;
     bool placed = false;
@@ -133,9 +145,16 @@ std::vector<NewParticle> Inlet::batch(double t, const Particles& existing) {
       NewParticle q;
       q.position = x;
       q.velocity = spec_.velocity;
-      q.radius = r;
+      q.radius = 0.5 * d;
       q.density = spec_.density;
       q.material = spec_.material;
+      if (spec_.shape) {
+        // A uniform random rotation (Shoemake 1992).
+        const double u1 = unit(rng_), u2 = 2 * pi * unit(rng_), u3 = 2 * pi * unit(rng_);
+        q.shape = spec_.shape.get();
+        q.orientation = {std::sqrt(u1) * std::cos(u3), std::sqrt(1 - u1) * std::sin(u2),
+                         std::sqrt(1 - u1) * std::cos(u2), std::sqrt(u1) * std::sin(u3)};
+      }
       out.push_back(q);
       placed = true;
     }
@@ -149,7 +168,7 @@ std::vector<NewParticle> Inlet::batch(double t, const Particles& existing) {
 }
 
 bool Inlet::may_touch(const Vec3& x) const {
-  const double margin = spec_.psd.max_diameter();
+  const double margin = spec_.psd.max_diameter() * reach_ratio();
   const Vec3 d = x - spec_.corner;
   const double lu = meshes::norm(spec_.edge_u), lv = meshes::norm(spec_.edge_v);
   const double a = meshes::dot(d, spec_.edge_u) / lu, b = meshes::dot(d, spec_.edge_v) / lv,

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
@@ -24,6 +25,9 @@ struct InletSpec {
   double density = 0; ///< [kg/m^3]
   int material = 0;
   std::uint64_t seed = 1;
+  /// Clumps of this shape, scaled to the PSD's equivalent-volume diameters, each turned at
+  /// random; none: spheres.
+  std::shared_ptr<const ClumpShape> shape;
 };
 
 /// What an inlet has done so far: enough to continue it exactly (checkpoints).
@@ -36,7 +40,10 @@ struct InletState {
 
 /// Particles appear in the insertion box behind the rectangle (upstream of it along the
 /// velocity, as deep as two of the largest diameters), at random places clear of each other
-/// and of the particles already there, each with the inlet's velocity and no spin. A batch
+/// and of the particles already there, each with the inlet's velocity and no spin. A clump
+/// takes the place of the sphere that holds its members (its reach, the bounding radius) and
+/// a uniform random orientation from the inlet's generator; its mass is that of its
+/// equivalent sphere. A batch
 /// brings the mass owed up to time t: W (t - start) minus what was inserted, to within half
 /// a particle; a particle that finds no place waits for the next batch (diameters are drawn
 /// in advance from the number fractions, so a failed placement does not bias the sizes).
@@ -78,6 +85,8 @@ private:
   InletState done_;
   std::mt19937_64 rng_;
   double next_diameter(); ///< [m] the next size to place (pending first)
+  /// [-] A particle's bounding radius over its equivalent radius (1 for a sphere).
+  double reach_ratio() const;
 };
 
 } // namespace wear::dem

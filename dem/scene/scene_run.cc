@@ -166,10 +166,6 @@ SceneRun::SceneRun(const SceneParameters& scene, const DemParameters& dem,
   validate(scene_);
   validate(dem_);
   particle_shape_ = particle_shape(dem_.particle_shape, "DEM/Particle shape");
-  if (particle_shape_ && !scene_.inlets.empty())
-    throw std::invalid_argument("DEM/Particle shape = '" + dem_.particle_shape +
-                                "': inlets insert spheres only, and this scene has inlets (use "
-                                "'sphere')");
   if (scene_.fill.region != "none") {
     auto built = std::make_shared<SceneFillShape>(fill_shape(scene_, dem_.loose_factor));
     // read_case checked a box's or cylinder's count; a mesh region's volume is known now.
@@ -215,6 +211,8 @@ SceneRun::SceneRun(const SceneParameters& scene, const DemParameters& dem,
     spec.density = dem_.particle.density;
     spec.material = particle_material_;
     spec.seed = dem_.seed + 1000003 * (k + 1); // one stream per inlet, apart from the fill's
+    if (particle_shape_)
+      spec.shape = std::make_shared<const ClumpShape>(*particle_shape_);
     inlets_.emplace_back(spec);
     require_clear_of_walls(walls_, inlets_.back(), 0.25 * dem_.psd.min_diameter());
     if (scene_.periodic_angle_deg > 0 || scene_.periodic_direction != "none") {
@@ -284,6 +282,11 @@ void SceneRun::add_materials_and_walls() {
   s.time_step = dem_.time_step_fraction * rayleigh;
   s.skin = 0.5 * r_min;
   s.max_radius = r_max;
+  if (particle_shape_) { // inlets insert clumps up to the largest diameter later
+    const double scale = dem_.psd.max_diameter() / particle_shape_->equivalent_diameter();
+    for (const auto& m : particle_shape_->members)
+      s.max_overhang = std::max(s.max_overhang, meshes::norm(m.centre) * scale);
+  }
   s.max_speed = dem_.max_speed;
   if (scene_.periodic_angle_deg > 0)
     s.periodic = {true, scene_.periodic_angle_deg * pi / 180};
@@ -468,6 +471,11 @@ void SceneRun::exchange() {
       continue;
     }
     for (const auto& q : batch) {
+      if (q.shape) {
+        system_.add_clump(q.shape->scaled(2 * q.radius / q.shape->equivalent_diameter()), q.density,
+                          q.material, q.position, q.orientation, q.velocity, q.angular_velocity);
+        continue;
+      }
       system_.particles.add(q.position, q.velocity, q.radius, q.density, q.material);
       system_.particles.angular_velocity.back() = q.angular_velocity;
     }

@@ -107,6 +107,49 @@ TEST_CASE("scene run: an empty scene fed by an inlet starts at its first particl
   CHECK(run.system().time() == Approx(w.t_end));
 }
 
+TEST_CASE("scene run: an inlet feeds clumps into a bin and its outlet takes them whole") {
+  // The bin of the first test, fed from above by an inlet of 'crushed stone 4' clumps (6 mm
+  // equivalent) instead of a fill: the first batch starts the engine (bodies added before
+  // setup), the later ones are inserted between steps; the outlet below takes bodies whole.
+  SceneParameters scene = testing::flat_bottomed_bin("bin, floor", 0.06, 0.3, 0.025, 0.05);
+  scene.inlet_names = "feed";
+  scene.inlets.resize(1);
+  auto& feed = scene.inlets[0];
+  feed.name = "feed";
+  feed.corner = {-0.03, -0.03, 0.25};
+  feed.edge_u = {0.06, 0, 0};
+  feed.edge_v = {0, 0.06, 0};
+  feed.mass_flow = 0.1;
+  feed.velocity = {0, 0, -1};
+  scene.end_time = 0.6;
+  TesterDemParameters dem = gravel();
+  dem.particle_shape = "crushed stone 4";
+  SceneRun run(scene, dem, build_scene_walls(scene));
+  run.setup();
+  SceneWindow w;
+  while (run.time() < scene.end_time - 1e-9)
+    w = run.advance(std::min(scene.end_time, run.time() + 0.1));
+  INFO(w.n_inserted << " inserted, " << w.n_removed << " removed by t = " << w.t_end << " s");
+  const Clumps& bodies = run.system().clumps();
+  // Counted in clumps: inserted = in the bin + taken; every body whole, four members each.
+  CHECK(w.n_removed > 10);
+  CHECK(w.n_particles + w.n_removed == w.n_inserted);
+  CHECK(bodies.size() == w.n_particles);
+  CHECK(run.system().particles.n_real == 4 * bodies.size());
+  const double m = 2650 * wear::pi / 6 * 0.006 * 0.006 * 0.006;
+  CHECK(w.inserted_mass == Approx(double(w.n_inserted) * m).epsilon(1e-12));
+  CHECK(w.outlet_mass[0] == Approx(double(w.n_removed) * m).epsilon(1e-12));
+  for (std::size_t b = 0; b < bodies.size(); ++b)
+    CHECK(bodies.mass[b] == Approx(m).epsilon(1e-12));
+  // At random orientations: the bodies' first members point every way from their centres.
+  wear::meshes::Vec3 mean{};
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const auto& x = run.system().particles.position[bodies.member_slot[bodies.member_begin[b]]];
+    mean += wear::meshes::normalized(x - bodies.position[b]) * (1.0 / double(bodies.size()));
+  }
+  CHECK(wear::meshes::norm(mean) < 0.3);
+}
+
 TEST_CASE("scene run: a fill box through a wall is refused before any particle exists") {
   SceneParameters scene = bin(0.025);
   scene.fill.maximum = {0.07, 0.04, 0.2}; // through the bin's side at r = 0.06
