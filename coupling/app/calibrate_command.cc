@@ -1,8 +1,9 @@
 // Calibration of the wear coefficient against a measured wear volume.
 //
-// Both laws are linear in their coefficient (Archard: V = alpha sum F_n ds; frictional work:
-// V = beta sum F_t . ds), and on a fixed geometry the coefficient does not feed back into the
-// particle motion, so the calibrated value is exact for the same run:
+// Every law is linear in its coefficient (Archard: V = alpha sum F_n ds; frictional work:
+// V = beta sum F_t . ds; finnie and oka: V = k sum over impacts; sliding-impact in its two
+// coefficients together, which are scaled alike), and on a fixed geometry the coefficient does
+// not feed back into the particle motion, so the calibrated value is exact for the same run:
 //   coefficient_cal = coefficient * (V_measured / N_test) / (sum_{r in R} V_r / |R|),
 // with V_r the wear-face volume of revolution r of the run and R the revolutions after steady
 // state (docs/theory.md section 7: wear is judged on the steady flow). For a coupled run with a
@@ -168,6 +169,11 @@ void print_calibration(const CalibrateArguments& a, const Calibration& c, std::o
                 c.coefficient_name.c_str(), c.coefficient, c.calibrated,
                 c.calibrated / c.coefficient);
   out << line;
+  for (const auto& [name, value] : c.also_scaled) {
+    std::snprintf(line, sizeof line, "%s: %.6g -> %.6g (the same factor)\n", name.c_str(), value,
+                  value * c.calibrated / c.coefficient);
+    out << line;
+  }
 }
 
 // <run>/calibration.prm: the Wear law subsection with the calibrated coefficient.
@@ -181,8 +187,7 @@ void write_calibration(const CalibrateArguments& a, const Calibration& c, const 
                   "# Copy this subsection into a case file, or INCLUDE this file after it.\n"
                   "subsection Wear law\n"
                   "  set Model = %s\n"
-                  "  set %s = %.9g\n"
-                  "end\n",
+                  "  set %s = %.9g\n",
                   c.coefficient_name.c_str(), c.unit.c_str(), a.run.c_str(),
                   a.part.empty() ? "" : (", part " + a.part).c_str(), c.simulated_per_rev,
                   c.n_revolutions, averaged(c), c.first_revolution, c.measured_per_rev,
@@ -190,6 +195,12 @@ void write_calibration(const CalibrateArguments& a, const Calibration& c, const 
                   c.unit == "s" ? "s of operation" : "simulated revolutions", c.model.c_str(),
                   c.coefficient_name.c_str(), c.calibrated);
     f << text;
+    for (const auto& [name, value] : c.also_scaled) {
+      std::snprintf(text, sizeof text, "  set %s = %.9g\n", name.c_str(),
+                    value * c.calibrated / c.coefficient);
+      f << text;
+    }
+    f << "end\n";
   });
 }
 } // namespace
@@ -261,6 +272,9 @@ Calibration calibrate(const std::string& run, double measured_volume, double rev
                              "/parameters.prm' has no coefficient to calibrate");
   c.coefficient_name = coefficient->name;
   c.coefficient = p.wear_law.*coefficient->member;
+  for (const auto& other : dem::find_wear_law(c.model).parameters)
+    if (other.scales_with_first)
+      c.also_scaled.emplace_back(other.name, p.wear_law.*other.member);
   if (by_time) {
     calibrate_per_second(run, part, p, measured_volume, revolutions, from_revolution, c);
     if (!(c.simulated_per_rev > 0))

@@ -21,10 +21,13 @@ struct Calibration {
   std::string coefficient_name;    ///< "Archard coefficient" or "Work coefficient"
   double coefficient = 0;          ///< of the run [1/Pa] or [m^3/J]
   double calibrated = 0;           ///< giving the measured wear per revolution
-  int first_revolution = 0;        ///< first revolution (or a part's stage) averaged
-  int n_revolutions = 0;           ///< revolutions (or a part's stages) averaged
-  double simulated_per_rev = 0;    ///< [m^3] mean wear-face wear per revolution (per s: [m^3/s])
-  double measured_per_rev = 0;     ///< [m^3] measured volume / simulated revolutions (or time)
+  /// Further coefficients the law's volume is linear in (WearLawParameter::scales_with_first),
+  /// each with its run's value: scaled by the same factor.
+  std::vector<std::pair<std::string, double>> also_scaled;
+  int first_revolution = 0;     ///< first revolution (or a part's stage) averaged
+  int n_revolutions = 0;        ///< revolutions (or a part's stages) averaged
+  double simulated_per_rev = 0; ///< [m^3] mean wear-face wear per revolution (per s: [m^3/s])
+  double measured_per_rev = 0;  ///< [m^3] measured volume / simulated revolutions (or time)
 };
 
 /// Reads <run>/summary.csv and <run>/parameters.prm. The revolutions averaged are those

@@ -172,7 +172,8 @@ std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::setup() {
     parts_.emplace_back(part_case_, k, walls[k], log_, ranks_.writer());
     ranks_.require_same(parts_.back().surface(), "part '" + parts_.back().name() + "' meshed");
   }
-  scene_ = std::make_unique<dem::SceneRun>(p_.scene, p_.dem, std::move(walls));
+  scene_ = std::make_unique<dem::SceneRun>(p_.scene, p_.dem, std::move(walls),
+                                           dem::impact_measure(p_.wear_law));
   scene_->set_rank_link(options_.ranks);
   fill_bed(*scene_, options_, log_);
   if (moves_nodes_) {
@@ -214,7 +215,8 @@ std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::resume() {
   }
   const bool inside = std::any_of(s.parts.begin(), s.parts.end(),
                                   [](const PartCheckpoint& k) { return k.open.duration > 0; });
-  scene_ = std::make_unique<dem::SceneRun>(p_.scene, p_.dem, std::move(walls));
+  scene_ = std::make_unique<dem::SceneRun>(p_.scene, p_.dem, std::move(walls),
+                                           dem::impact_measure(p_.wear_law));
   scene_->set_rank_link(options_.ranks);
   n_records_ = s.n_records;
   if (!c.has_bed)

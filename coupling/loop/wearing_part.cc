@@ -238,6 +238,15 @@ void WearingPart::run_stage(
                   increment.declared_amplification, d.vertex, meshes::label::name(d.label).c_str(),
                   1e3 * d.depth_there, d.max_fraction, p.coupling.max_depth_fraction);
   }
+  double impact = 0, total = 0; // [m^3] the window's wear-law volume, and its impact part
+  for (std::size_t f = 0; f < loads.wear_volume.size(); ++f) {
+    impact += loads.impact_volume[f];
+    total += loads.wear_volume[f];
+  }
+  if (impact > 0)
+    log << format("stage %d, part '%s': %.4g mm^3 of the window's wear-law volume %.4g mm^3 "
+                  "(%.1f %%) by impact\n",
+                  r.stage, name_.c_str(), impact * 1e9, total * 1e9, 100 * impact / total);
   record_increment(increment, stages_.empty() ? 0.0 : stages_.back().cumulative_applied, p.coupling,
                    r);
   r.wear_seconds = wear_clock.seconds();

@@ -16,6 +16,7 @@ OpenStage open_stage(const dem::WallLoads& loads) {
   o.sliding_work = loads.sliding_work.values();
   o.contact_steps = loads.contact_steps.values();
   o.wear_volume = loads.wear_volume.values();
+  o.impact_volume = loads.impact_volume.values();
   o.duration = loads.duration;
   return o;
 }
@@ -33,6 +34,8 @@ dem::WallLoads loads_of(const OpenStage& o, const meshes::SurfaceMesh& surface) 
   l.sliding_work.values() = o.sliding_work;
   l.contact_steps.values() = o.contact_steps;
   l.wear_volume.values() = o.wear_volume;
+  if (!o.impact_volume.empty())
+    l.impact_volume.values() = o.impact_volume;
   l.duration = o.duration;
   return l;
 }
@@ -139,6 +142,7 @@ void write_load_arrays(Hdf5File& h5, const std::string& g, const OpenStage& o) {
   write_doubles(h5, g + "/sliding_work", o.sliding_work);
   write_doubles(h5, g + "/contact_steps", o.contact_steps);
   write_doubles(h5, g + "/wear_volume", o.wear_volume);
+  write_doubles(h5, g + "/impact_volume", o.impact_volume);
 }
 
 void read_load_arrays(const Hdf5Reader& h5, const std::string& g, OpenStage& o) {
@@ -149,10 +153,13 @@ void read_load_arrays(const Hdf5Reader& h5, const std::string& g, OpenStage& o) 
   o.sliding_work = h5.doubles(g + "/sliding_work");
   o.contact_steps = h5.doubles(g + "/contact_steps");
   o.wear_volume = h5.doubles(g + "/wear_volume");
+  o.impact_volume = h5.has_object(g + "/impact_volume")
+                        ? h5.doubles(g + "/impact_volume")
+                        : std::vector<double>(o.wear_volume.size(), 0.0);
   const std::size_t nf = o.impulse.size();
   bool same = o.traction_impulse.size() == nf;
-  for (const auto* v :
-       {&o.normal_impulse, &o.archard, &o.sliding_work, &o.contact_steps, &o.wear_volume})
+  for (const auto* v : {&o.normal_impulse, &o.archard, &o.sliding_work, &o.contact_steps,
+                        &o.wear_volume, &o.impact_volume})
     same = same && v->size() == nf;
   if (!same)
     throw std::runtime_error("the loads of '" + g + "' are of different lengths");

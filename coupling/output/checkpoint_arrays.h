@@ -23,7 +23,8 @@ struct OpenStage {
   std::vector<meshes::Vec3> traction_impulse; ///< [N s] per face, as the FEM receives it
   std::vector<double> normal_impulse, archard, sliding_work; ///< [N s], [N m], [J] per face
   std::vector<double> contact_steps, wear_volume;            ///< [-], [m^3] per face
-  double duration = 0;                                       ///< [s] of the summed windows
+  std::vector<double> impact_volume; ///< [m^3] per face (none in an older checkpoint: zeros)
+  double duration = 0;               ///< [s] of the summed windows
 };
 
 /// An open stage holding `loads` (part frame).

@@ -487,6 +487,9 @@ void WearIntegrals::zero_faces(std::size_t n_faces) {
   contact_steps.assign(n_faces, 0);
   normal_moment.assign(n_faces, {});
   impulse_moment.assign(n_faces, {});
+  impacts.assign(n_faces, 0);
+  impact_energy.assign(n_faces, 0);
+  impact_measure.assign(n_faces, 0);
 }
 
 WearIntegrals System::wear_integrals(int w) const {
@@ -506,6 +509,9 @@ WearIntegrals System::wear_integrals(int w) const {
       r.contact_steps[f] += v[6];
       r.normal_moment[f] += Vec3{v[7], v[8], v[9]};
       r.impulse_moment[f] += Vec3{v[10], v[11], v[12]};
+      r.impacts[f] += v[13];
+      r.impact_energy[f] += v[14];
+      r.impact_measure[f] += v[15];
     }
     // a wall of one face keeps its totals on that face (add_wear)
     const double* tot = &a[n_wear_values * (nf == 1 ? 0 : nf)];
@@ -515,6 +521,9 @@ WearIntegrals System::wear_integrals(int w) const {
     r.total_sliding_work += tot[5];
     r.total_normal_moment += Vec3{tot[7], tot[8], tot[9]};
     r.total_impulse_moment += Vec3{tot[10], tot[11], tot[12]};
+    r.total_impacts += tot[13];
+    r.total_impact_energy += tot[14];
+    r.total_impact_measure += tot[15];
   }
   return r;
 }

@@ -2,6 +2,7 @@
 // The DEM system: particles, walls, materials and the time loop (velocity Verlet).
 #include "dem/engine/clump_shape.h"
 #include "dem/engine/clumps.h"
+#include "dem/engine/impact_measure.h"
 #include "dem/engine/material.h"
 #include "dem/engine/mesh_wall.h"
 #include "dem/engine/neighbor_list.h"
@@ -48,7 +49,9 @@ struct DemSettings {
   /// clump inserted later (the ghosts' reach); 0: the largest at setup.
   double max_overhang = 0;
   double max_speed = 50; ///< [m/s] a faster particle stops the run
-  double start_time = 0; ///< [s] the clock at setup
+  /// What a wearing wall books per impact besides its count and energy (the impact law's).
+  ImpactMeasure impact;
+  double start_time = 0;                                           ///< [s] the clock at setup
   meshes::BoundingBox domain{{-1e3, -1e3, -1e3}, {1e3, 1e3, 1e3}}; ///< [m] leaving it is an error
   PeriodicSector periodic;
   PeriodicSlab periodic_slab; ///< excludes `periodic`
@@ -58,7 +61,7 @@ struct DemSettings {
 /// last face): impulse [N s] x 3, normal impulse [N s], Archard [N m], sliding work [J],
 /// contact-steps [-] (0 in the totals), first moment of the normal impulse [N s m] x 3,
 /// moment of the impulse about the origin [N s m] x 3.
-constexpr std::size_t n_wear_values = 13;
+constexpr std::size_t n_wear_values = 16;
 
 /// Extensive per-face integrals on a wearing wall over the current window (docs/theory.md section
 /// 4). Points are the contact points on the wall (the closest point to the particle centre), in the
@@ -73,8 +76,13 @@ struct WearIntegrals {
   /// [N s m] integral of x_c F_n: over normal_impulse, the face's load centroid
   std::vector<Vec3> normal_moment;
   std::vector<Vec3> impulse_moment; ///< [N s m] integral of x_c x F
+  // Impacts: booked once per contact, at its first step (the particle approaching the wall).
+  std::vector<double> impacts;        ///< [-] count (split contacts fractionally)
+  std::vector<double> impact_energy;  ///< [J] sum of m v_n^2 / 2 at the impacts
+  std::vector<double> impact_measure; ///< [-] sum of DemSettings::impact (impact_measure.h)
   /// Per-contact totals of the same window, summed before any splitting over faces.
   double total_archard = 0, total_normal_impulse = 0, total_sliding_work = 0;
+  double total_impacts = 0, total_impact_energy = 0, total_impact_measure = 0;
   Vec3 total_impulse;        ///< [N s]
   Vec3 total_normal_moment;  ///< [N s m]
   Vec3 total_impulse_moment; ///< [N s m]
@@ -610,8 +618,9 @@ private:
   RebuildScratch rebuild_scratch_;
   /// The history of the untaken old slot (of a near-wall particle) of this wall whose normal
   /// is closest to `normal` (within about 25 degrees), which it marks taken; zero if none.
+  /// `carried`: whether one was found (false: the contact begins, an impact).
   static Vec3 carried_wall_history(const WallSlot* old, bool* taken, std::uint32_t wall,
-                                   const Vec3& normal);
+                                   const Vec3& normal, bool& carried);
   // Per thread, per wearing wall: n_wear_values doubles per face + totals.
   std::vector<std::vector<std::vector<double>>> wear_acc_;
 

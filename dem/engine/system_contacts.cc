@@ -228,6 +228,36 @@ template <class Wall>
   tot[11] += moment.y;
   tot[12] += moment.z;
 }
+/// Books an impact, a contact's first step, to a wearing wall's accumulator `a` when the
+/// particle (mass m, diameter d) approaches the wall (v_n above 1e-9 |v|): per face by the shares
+/// of add_wear, and undivided to the totals: the count, the normal kinetic energy m v_n^2 / 2 and
+/// `measure` of the contact point's relative velocity v (v_n = -v . n, sin alpha = v_n / |v|).
+template <class Wall>
+inline void add_impact(std::vector<double>& a, const Wall& wall, const Candidate& cand,
+                       const ContactGeometry& g, double m, double d, const ImpactMeasure& measure) {
+  const double v_n = -meshes::dot(g.v_contact, g.normal), speed = meshes::norm(g.v_contact);
+  // Touching without approaching (placed, or sliding on, where the normal's round-off leaves
+  // a v_n of 1e-16 |v|): no impact.
+  if (!(v_n > 1e-9 * speed))
+    return;
+  const double energy = 0.5 * m * v_n * v_n;
+  const double booked = measure(m, d, speed, v_n / speed);
+  std::uint32_t faces[32];
+  double shares[32];
+  const int n_faces = wear_faces(wall, cand, faces, shares);
+  for (int k = 0; k < n_faces; ++k) {
+    double* v = &a[n_wear_values * faces[k]];
+    v[13] += shares[k];
+    v[14] += energy * shares[k];
+    v[15] += booked * shares[k];
+  }
+  if (wall.n_faces() == 1)
+    return;
+  double* tot = &a[n_wear_values * wall.n_faces()];
+  tot[13] += 1;
+  tot[14] += energy;
+  tot[15] += booked;
+}
 } // namespace
 
 std::size_t System::pair_forces(int thread, Vec3* F, Vec3* T) {
@@ -262,7 +292,7 @@ std::size_t System::pair_forces(int thread, Vec3* F, Vec3* T) {
 }
 
 inline Vec3 System::carried_wall_history(const WallSlot* old, bool* taken, std::uint32_t wall,
-                                         const Vec3& normal) {
+                                         const Vec3& normal, bool& carried) {
   // The old slot of this wall with the closest normal, within about 25 degrees.
   int best = -1;
   double best_dot = 0.9;
@@ -275,6 +305,7 @@ inline Vec3 System::carried_wall_history(const WallSlot* old, bool* taken, std::
       }
     }
   }
+  carried = best >= 0;
   if (best < 0)
     return {};
   taken[best] = true;
@@ -354,7 +385,9 @@ void System::wall_forces(int thread, Vec3* F, Vec3* T) {
       const ContactGeometry g = revolution ? wall_contact_geometry(p, i, *rev, cand)
                                            : wall_contact_geometry(p, i, *mesh, cand);
       const int material = revolution ? rev->material() : mesh->material();
-      Vec3 delta = carried_wall_history(&slots_[wall_slots * q], taken, cand.wall, g.normal);
+      bool carried = false;
+      Vec3 delta =
+          carried_wall_history(&slots_[wall_slots * q], taken, cand.wall, g.normal, carried);
       const auto res = hertz_mindlin(contact_[p.material[i] * n_mat_ + material], g, dt, delta);
       f_sum += res.force;
       t_sum += res.torque_i;
@@ -362,10 +395,15 @@ void System::wall_forces(int thread, Vec3* F, Vec3* T) {
       new_normal[n_new] = g.normal;
       new_delta[n_new] = delta;
       ++n_new;
-      if (revolution && rev->wearing())
+      if (revolution && rev->wearing()) {
         add_wear(acc[cand.wall], *rev, cand, res, dt);
-      else if (!revolution && mesh->wearing())
+        if (!carried)
+          add_impact(acc[cand.wall], *rev, cand, g, p.mass[i], 2 * p.radius[i], settings.impact);
+      } else if (!revolution && mesh->wearing()) {
         add_wear(acc[cand.wall], *mesh, cand, res, dt);
+        if (!carried)
+          add_impact(acc[cand.wall], *mesh, cand, g, p.mass[i], 2 * p.radius[i], settings.impact);
+      }
     }
     if (overflow && (error_particle_[thread] < 0 || long(i) < error_particle_[thread])) {
       error_particle_[thread] = long(i);

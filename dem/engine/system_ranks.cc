@@ -584,16 +584,18 @@ WearIntegrals System::wear_integrals_over_ranks(int wall) const {
   const std::size_t nf = w.archard.size();
   // Flattened in WearIntegrals' order, then the totals.
   std::vector<double> v;
-  v.reserve(n_wear_values * nf + 12);
+  v.reserve(n_wear_values * nf + 15);
   for (std::size_t f = 0; f < nf; ++f)
-    v.insert(v.end(), {w.impulse[f].x, w.impulse[f].y, w.impulse[f].z, w.normal_impulse[f],
-                       w.archard[f], w.sliding_work[f], w.contact_steps[f], w.normal_moment[f].x,
-                       w.normal_moment[f].y, w.normal_moment[f].z, w.impulse_moment[f].x,
-                       w.impulse_moment[f].y, w.impulse_moment[f].z});
+    v.insert(v.end(),
+             {w.impulse[f].x, w.impulse[f].y, w.impulse[f].z, w.normal_impulse[f], w.archard[f],
+              w.sliding_work[f], w.contact_steps[f], w.normal_moment[f].x, w.normal_moment[f].y,
+              w.normal_moment[f].z, w.impulse_moment[f].x, w.impulse_moment[f].y,
+              w.impulse_moment[f].z, w.impacts[f], w.impact_energy[f], w.impact_measure[f]});
   v.insert(v.end(), {w.total_archard, w.total_normal_impulse, w.total_sliding_work,
                      w.total_impulse.x, w.total_impulse.y, w.total_impulse.z,
                      w.total_normal_moment.x, w.total_normal_moment.y, w.total_normal_moment.z,
-                     w.total_impulse_moment.x, w.total_impulse_moment.y, w.total_impulse_moment.z});
+                     w.total_impulse_moment.x, w.total_impulse_moment.y, w.total_impulse_moment.z,
+                     w.total_impacts, w.total_impact_energy, w.total_impact_measure});
   rank_link_->sum_in_rank_order(v.data(), v.size());
   for (std::size_t f = 0; f < nf; ++f) {
     const double* a = &v[n_wear_values * f];
@@ -604,6 +606,9 @@ WearIntegrals System::wear_integrals_over_ranks(int wall) const {
     w.contact_steps[f] = a[6];
     w.normal_moment[f] = vec(a + 7);
     w.impulse_moment[f] = vec(a + 10);
+    w.impacts[f] = a[13];
+    w.impact_energy[f] = a[14];
+    w.impact_measure[f] = a[15];
   }
   const double* t = &v[n_wear_values * nf];
   w.total_archard = t[0];
@@ -612,6 +617,9 @@ WearIntegrals System::wear_integrals_over_ranks(int wall) const {
   w.total_impulse = vec(t + 3);
   w.total_normal_moment = vec(t + 6);
   w.total_impulse_moment = vec(t + 9);
+  w.total_impacts = t[12];
+  w.total_impact_energy = t[13];
+  w.total_impact_measure = t[14];
   return w;
 }
 

@@ -129,7 +129,7 @@ std::unique_ptr<SceneRun> SceneRun::rebalanced() const {
   SceneRunState whole = state();
   whole.system = whole_state_on_every_rank(whole.system, *link);
   whole.rank_bounds.clear();
-  auto next = std::make_unique<SceneRun>(scene_, dem_, walls_);
+  auto next = std::make_unique<SceneRun>(scene_, dem_, walls_, impact_);
   next->set_rank_link(link);
   next->cut_balanced_ = true;
   next->node_moves_ = node_moves_; // walls_ hold their moved surfaces

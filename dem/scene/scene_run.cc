@@ -161,8 +161,8 @@ NearestImage nearest_image(const SceneParameters& s) {
 } // namespace
 
 SceneRun::SceneRun(const SceneParameters& scene, const DemParameters& dem,
-                   std::vector<SceneWall> walls)
-    : scene_(scene), dem_(dem), walls_(std::move(walls)) {
+                   std::vector<SceneWall> walls, const ImpactMeasure& impact)
+    : scene_(scene), dem_(dem), walls_(std::move(walls)), impact_(impact) {
   validate(scene_);
   validate(dem_);
   particle_shape_ = particle_shape(dem_.particle_shape, "DEM/Particle shape");
@@ -288,6 +288,7 @@ void SceneRun::add_materials_and_walls() {
       s.max_overhang = std::max(s.max_overhang, meshes::norm(m.centre) * scale);
   }
   s.max_speed = dem_.max_speed;
+  s.impact = impact_;
   if (scene_.periodic_angle_deg > 0)
     s.periodic = {true, scene_.periodic_angle_deg * pi / 180};
   if (scene_.periodic_direction != "none")
@@ -590,7 +591,8 @@ WallLoads SceneRun::wall_loads(std::size_t k, const WearLaw& law, const SceneWin
                            walls_.at(k).parameters.name + "'");
   const WearIntegrals& integrals = at->second;
   return dem::wall_loads(integrals, law.removed_volume(integrals), walls_.at(k).surface.mesh,
-                         w.integrated, load_spreading(dem_.wall_loads, dem_.psd));
+                         w.integrated, load_spreading(dem_.wall_loads, dem_.psd),
+                         impact_part(law, integrals));
 }
 
 PushReport SceneRun::replace_wall_surface(std::size_t k, const meshes::SurfaceMesh& mesh,

@@ -74,8 +74,10 @@ class SceneRun {
 public:
   /// Takes the built walls (build_scene_walls) and checks what needs them: the fill box
   /// may not cut a wall (message naming the wall and its file). Throws before any particle
-  /// exists.
-  SceneRun(const SceneParameters& scene, const DemParameters& dem, std::vector<SceneWall> walls);
+  /// exists. `impact`: what the wearing walls book per impact (the wear law's,
+  /// dem::impact_measure).
+  SceneRun(const SceneParameters& scene, const DemParameters& dem, std::vector<SceneWall> walls,
+           const ImpactMeasure& impact = {});
 
   /// Decomposes the scene over the ranks of `link` (before setup() or resume(); null or one
   /// rank: one process): one slab per rank along Scene/Rank slabs along, cut as Scene/Rank
@@ -162,6 +164,7 @@ private:
   std::shared_ptr<const SceneFillShape> fill_shape_; ///< none without a Fill region
   /// The clumps' shape (DEM/Particle shape); none for spheres.
   std::optional<ClumpShape> particle_shape_;
+  ImpactMeasure impact_; ///< DemSettings::impact of the engine
   /// [m] How far a particle's surface reaches beyond the centres the fill places: the largest
   /// sphere's radius, or a clump's largest member radius at the largest size.
   double fill_margin() const;

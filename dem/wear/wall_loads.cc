@@ -57,6 +57,8 @@ WallLoads WallLoads::zero(const meshes::SurfaceMesh& mesh) {
   w.sliding_work = FaceField<double>("sliding work", "J", Extensivity::extensive, mesh);
   w.contact_steps = FaceField<double>("contact-steps", "1", Extensivity::extensive, mesh);
   w.wear_volume = FaceField<double>("wear-law volume", "m^3", Extensivity::extensive, mesh);
+  w.impact_volume =
+      FaceField<double>("impact wear-law volume", "m^3", Extensivity::extensive, mesh);
   return w;
 }
 
@@ -68,6 +70,7 @@ WallLoads& WallLoads::operator+=(const WallLoads& o) {
   add(sliding_work, o.sliding_work);
   add(contact_steps, o.contact_steps);
   add(wear_volume, o.wear_volume);
+  add(impact_volume, o.impact_volume);
   duration += o.duration;
   return *this;
 }
@@ -86,6 +89,7 @@ WallLoads WallLoads::follow(const meshes::SurfaceMesh& mesh,
   w.sliding_work = followed(sliding_work, mesh);
   w.contact_steps = followed(contact_steps, mesh);
   w.wear_volume = followed(wear_volume, mesh);
+  w.impact_volume = followed(impact_volume, mesh);
   w.duration = duration;
   return w;
 }
@@ -95,9 +99,16 @@ LoadSpreading load_spreading(const WallLoadParameters& p, const SizeDistribution
           p.coarse_grained_traction, p.coarse_grained_wear};
 }
 
+std::vector<double> impact_part(const WearLaw& law, const WearIntegrals& integrals) {
+  for (auto& [mechanism, volume] : law.removed_by_mechanism(integrals))
+    if (mechanism == "impact")
+      return volume;
+  return std::vector<double>(integrals.archard.size(), 0.0);
+}
+
 WallLoads wall_loads(const WearIntegrals& integrals, const std::vector<double>& wear_volume,
                      const meshes::SurfaceMesh& mesh, double duration,
-                     const LoadSpreading& spreading) {
+                     const LoadSpreading& spreading, const std::vector<double>& impact_volume) {
   WallLoads w = WallLoads::zero(mesh);
   fill(w.impulse, integrals.impulse);
   fill(w.normal_impulse, integrals.normal_impulse);
@@ -105,6 +116,8 @@ WallLoads wall_loads(const WearIntegrals& integrals, const std::vector<double>& 
   fill(w.sliding_work, integrals.sliding_work);
   fill(w.contact_steps, integrals.contact_steps);
   fill(w.wear_volume, wear_volume);
+  if (!impact_volume.empty())
+    fill(w.impact_volume, impact_volume);
   w.duration = duration;
   if (!spreading.traction && !spreading.wear) {
     w.traction_impulse.values() = w.impulse.values();
@@ -121,8 +134,10 @@ WallLoads wall_loads(const WearIntegrals& integrals, const std::vector<double>& 
         kernel.spread_force(sources, w.traction_impulse.name(), w.traction_impulse.unit());
   else
     w.traction_impulse.values() = w.impulse.values();
-  if (spreading.wear)
+  if (spreading.wear) {
     w.wear_volume = kernel.spread_scalar(w.wear_volume, sources.point);
+    w.impact_volume = kernel.spread_scalar(w.impact_volume, sources.point);
+  }
   return w;
 }
 

@@ -6,6 +6,7 @@
 // intensive ones (pressure, traction, wear depth) are derived where they are used.
 #include "dem/engine/filling.h"
 #include "dem/engine/system.h"
+#include "dem/wear/wear_law.h"
 #include "meshes/face_field.h"
 #include "meshes/parameter_visitor.h"
 
@@ -61,7 +62,10 @@ struct WallLoads {
   meshes::FaceField<double> sliding_work;   ///< [J] integral of |F_t . v_t|
   meshes::FaceField<double> contact_steps;  ///< [-] contact-steps (split contacts fractionally)
   meshes::FaceField<double> wear_volume;    ///< [m^3] the wear law applied to this window
-  double duration = 0;                      ///< [s] of the window
+  /// [m^3] the part of wear_volume the law books to impacts (WearLaw::removed_by_mechanism;
+  /// zero for a sliding law), laid on the faces as wear_volume is
+  meshes::FaceField<double> impact_volume;
+  double duration = 0; ///< [s] of the window
 
   /// Zero loads on every face of `mesh`.
   static WallLoads zero(const meshes::SurfaceMesh& mesh);
@@ -78,11 +82,16 @@ struct WallLoads {
 };
 
 /// The loads of one window from the engine's per-face integrals of a wall with mesh `mesh`
-/// and the wear law's removed volume per face [m^3] over the same window, the traction and
-/// the wear volume laid on the faces as `spreading` says. A coarse-grained field keeps the
-/// window's force and moment (the volume per label) to round-off.
+/// and the wear law's removed volume per face [m^3] over the same window (and its impact
+/// part, empty: none), the traction and the wear volumes laid on the faces as `spreading`
+/// says. A coarse-grained field keeps the window's force and moment (the volume per label) to
+/// round-off.
 WallLoads wall_loads(const WearIntegrals& integrals, const std::vector<double>& wear_volume,
                      const meshes::SurfaceMesh& mesh, double duration,
-                     const LoadSpreading& spreading = {});
+                     const LoadSpreading& spreading = {},
+                     const std::vector<double>& impact_volume = {});
+
+/// The law's per-face volume of the mechanism "impact" (zeros when it has none).
+std::vector<double> impact_part(const WearLaw& law, const WearIntegrals& integrals);
 
 } // namespace wear::dem

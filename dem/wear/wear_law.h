@@ -11,6 +11,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace wear::dem {
@@ -19,6 +20,16 @@ struct WearLawParameters {
   std::string model = "archard";      ///< name of the law (see wear_law_catalogue())
   double archard_coefficient = 5e-9;  ///< [1/Pa] alpha = k / H of the Archard law
   double work_coefficient = 1.667e-8; ///< [m^3/J] volume per frictional work
+  double finnie_coefficient = 1e-10;  ///< [1/Pa] c / (p psi K) of Finnie's law
+  double finnie_k = 2;                ///< [-] Finnie's force ratio K
+  double oka_coefficient = 1e-9;      ///< [m^3/kg] K of Oka's E90 (at v', d', Hv = 1 GPa)
+  double oka_hardness = 1;            ///< [GPa] Hv
+  double oka_n1 = 0.71, oka_n2 = 2.4; ///< [-] angle-function exponents
+  double oka_k1 = -0.12;              ///< [-] hardness exponent of E90
+  double oka_k2 = 2.3;                ///< [-] speed exponent
+  double oka_k3 = 0.19;               ///< [-] size exponent
+  double sliding_coefficient = 5e-9;  ///< [1/Pa] the sliding-impact law's Archard part
+  double impact_coefficient = 1e-9;   ///< [m^3/J] its volume per impact energy
 };
 
 class WearLaw {
@@ -29,15 +40,23 @@ public:
   virtual std::vector<double> removed_volume(const WearIntegrals& w) const = 0;
   /// The same total computed from the per-contact sums (before any face splitting) [m^3].
   virtual double total_removed_volume(const WearIntegrals& w) const = 0;
+  /// The per-face volume [m^3] by mechanism ("sliding", "impact"), summing to removed_volume;
+  /// one entry for a law of one mechanism.
+  virtual std::vector<std::pair<std::string, std::vector<double>>>
+  removed_by_mechanism(const WearIntegrals& w) const = 0;
 };
 
 /// A parameter a law declares in the Wear law subsection: a coefficient the law is linear
-/// in, so it must be finite and non-negative (make_wear_law checks it, naming it). A name
-/// belongs to one law.
+/// in or a shape parameter of its angle function, finite and non-negative unless `signed_`
+/// (make_wear_law checks it, naming it). A name belongs to one law.
 struct WearLawParameter {
   std::string name;                  ///< in the case file, e.g. "Archard coefficient"
   double WearLawParameters::*member; ///< the value, e.g. &WearLawParameters::archard_coefficient
   std::string doc;                   ///< unit first, e.g. "[1/Pa] alpha = k/H ..."
+  bool signed_ = false;              ///< may be negative (an exponent)
+  /// The law's volume is linear in it as in the first parameter: `wearsim calibrate` scales it
+  /// by the same factor (a law of two mechanisms keeps their ratio).
+  bool scales_with_first = false;
 };
 
 /// One law of the catalogue.
@@ -48,6 +67,9 @@ struct WearLawEntry {
   std::vector<WearLawParameter> parameters;
   /// Builds the law from parameters make_wear_law has checked.
   std::unique_ptr<WearLaw> (*make)(const WearLawParameters& p);
+  /// What the engine books per impact for this law (DemSettings::impact); nullptr: nothing
+  /// beyond the count and the energy (a sliding law, or one of the impact energy).
+  ImpactMeasure (*impact)(const WearLawParameters& p) = nullptr;
 };
 
 /// Every law, in the order the documentation lists them.
@@ -60,6 +82,9 @@ const WearLawEntry& find_wear_law(const std::string& name);
 /// Throws std::invalid_argument naming "Wear law/Model" and the known laws for an unknown
 /// name, or the coefficient for a negative or non-finite one.
 std::unique_ptr<WearLaw> make_wear_law(const WearLawParameters& p);
+
+/// The engine's per-impact measure for the law `p` names (DemSettings::impact).
+ImpactMeasure impact_measure(const WearLawParameters& p);
 
 /// The Wear law subsection of a case file (meshes/parameter_visitor.h): Model, then the
 /// parameters of every law in catalogue order.

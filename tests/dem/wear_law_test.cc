@@ -180,7 +180,16 @@ TEST_CASE("wear laws by name, bad names and coefficients", "[dem][wear]") {
   CHECK_THROWS_WITH(make_wear_law({"archrad", 5e-9, 0}),
                     Catch::Contains("Wear law/Model") && Catch::Contains("archard"));
   CHECK_THROWS_WITH(make_wear_law({"archard", -1, 0}), Catch::Contains("Archard coefficient"));
-  CHECK(wear_law_catalogue().size() == 2);
+  CHECK(wear_law_catalogue().size() == 5);
+  WearLawParameters oka;
+  oka.model = "oka";
+  oka.oka_n1 = -1;
+  CHECK_THROWS_WITH(make_wear_law(oka), Catch::Contains("Wear law/Oka n1"));
+  oka.oka_n1 = 0.71;
+  oka.oka_k1 = -0.12; // an exponent may be negative
+  CHECK_NOTHROW(make_wear_law(oka));
+  CHECK(impact_measure(oka).kind == ImpactMeasure::Kind::oka);
+  CHECK(impact_measure({"archard", 5e-9, 0}).kind == ImpactMeasure::Kind::none);
 }
 
 TEST_CASE("least-squares wear fits through the origin and statistics", "[dem][wear]") {
