@@ -9,13 +9,16 @@ edge, y across; the worn depth measured from the unworn face), liner_profiles.pn
 face along the centreline y = 0 after every staged stage), liner_wear.png (the removed volume
 per stage and cumulative, and the largest ball-averaged von Mises stress per stage),
 stream_fields.png (the binned solid fraction and velocity of Scene/Fields in the chute's
-centre plane, averaged over the last stage's records).
+centre plane, averaged over the last stage's records), and for a law with an impact part
+(chute-impact.prm) liner_mechanisms.png (the depth per window worn by sliding and by impact
+over the liner face, and each mechanism's volume along the slope).
 Needs python3-matplotlib, python3-numpy and python3-h5py (Debian packages).
 """
 import csv
 import glob
 import math
 import os
+import re
 import sys
 
 import h5py
@@ -111,7 +114,78 @@ def main():
     written = "liner_wear_map.png, liner_profiles.png, liner_wear.png"
     if plot_fields(run, out):
         written += ", stream_fields.png"
+    if plot_mechanisms(liner, out):
+        written += ", liner_mechanisms.png"
     print(f"written to {out}/ ({written})")
+
+
+def read_vtu_cells(path):
+    """Points, triangles and the cell arrays (by name) of an ASCII VTU of meshes::write_vtu."""
+    with open(path) as f:
+        text = f.read()
+    arrays = {}
+    for m in re.finditer(r"<DataArray([^>]*)>([^<]*)</DataArray>", text):
+        name = re.search(r'Name="([^"]*)"', m.group(1))
+        arrays[name.group(1) if name else "points"] = np.array(m.group(2).split(), dtype=float)
+    return (arrays["points"].reshape(-1, 3), arrays["connectivity"].astype(int).reshape(-1, 3),
+            arrays)
+
+
+def plot_mechanisms(liner, out):
+    """Where the liner wears by sliding and where by impact: the wear-law volume of the staged
+    windows (parts/liner/loads/stage_<k>.vtu, each on the surface its loads fell on, not
+    amplified) split into its impact part and the rest, summed over the stages on the last
+    stage's faces (the mesh moves, it is not remeshed) and divided by the face areas: the
+    depth each mechanism removes per 2 s window."""
+    files = sorted(glob.glob(os.path.join(liner, "loads", "stage_*.vtu")))[1:]  # staged only
+    if not files:
+        return False
+    total = impact = None
+    for path in files:
+        points, tris, a = read_vtu_cells(path)
+        v, i = a["wear-law volume [m^3]"], a["impact wear-law volume [m^3]"]
+        if total is not None and len(v) != len(total):
+            total = impact = None  # a remesh: the stages after it only
+        total = v if total is None else total + v
+        impact = i if impact is None else impact + i
+    top = a["label"] == WEARING_LABEL
+    if not impact[top].any():
+        return False
+    e1, e2 = points[tris[:, 1]] - points[tris[:, 0]], points[tris[:, 2]] - points[tris[:, 0]]
+    area = 0.5 * np.linalg.norm(np.cross(e1, e2), axis=1)
+    n = len(files)
+    sliding_depth = (total - impact)[top] / area[top] / n * 1e6  # [um] per window
+    impact_depth = impact[top] / area[top] / n * 1e6
+    s, y, _ = face_coordinates(points)
+    t = mtri.Triangulation(s, y, tris[top])
+    fig, axes = plt.subplots(3, 1, figsize=(8, 11))
+    top_value = max(sliding_depth.max(), impact_depth.max())
+    for ax, depth, what in ((axes[0], sliding_depth, "sliding"), (axes[1], impact_depth, "impact")):
+        pc = ax.tripcolor(t, facecolors=depth, cmap="inferno_r", vmin=0, vmax=top_value,
+                          edgecolors="none")
+        fig.colorbar(pc, ax=ax, label="depth per window [um]")
+        ax.set_aspect("equal")
+        ax.set_ylabel("y, across [mm]")
+        ax.set_title(f"{what}: {depth.dot(area[top]) / area[top].sum():.3g} um mean, "
+                     f"{depth.max():.3g} um largest (mean of {n} windows of 2 s)")
+    # Along the slope: each mechanism's volume in 10 mm bands of s.
+    centroid_s = s[tris[top]].mean(axis=1)
+    bands = np.arange(0, 260, 10.0)
+    k = np.digitize(centroid_s, bands)
+    vs = [((total - impact)[top][k == b]).sum() / n * 1e9 for b in range(1, len(bands))]
+    vi = [(impact[top][k == b]).sum() / n * 1e9 for b in range(1, len(bands))]
+    mid = 0.5 * (bands[1:] + bands[:-1])
+    axes[2].bar(mid, vs, width=9, color="tab:blue", label="sliding")
+    axes[2].bar(mid, vi, width=9, bottom=vs, color="tab:red", label="impact")
+    axes[2].set_xlabel("s, down the slope from the upper edge [mm]")
+    axes[2].set_ylabel("volume per window [mm^3] in 10 mm of s")
+    axes[2].legend()
+    for ax in axes[:2]:
+        ax.set_xlabel("s, down the slope from the upper edge [mm]")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "liner_mechanisms.png"), dpi=150)
+    plt.close(fig)
+    return True
 
 
 def plot_fields(run, out):

@@ -29,6 +29,7 @@
 #include "meshes/sample_frame.h"
 #include "meshes/sample_generator.h"
 #include "meshes/stopwatch.h"
+#include "meshes/vtu_writer.h"
 
 #include <algorithm>
 #include <fstream>
@@ -247,6 +248,12 @@ void WearingPart::run_stage(
     log << format("stage %d, part '%s': %.4g mm^3 of the window's wear-law volume %.4g mm^3 "
                   "(%.1f %%) by impact\n",
                   r.stage, name_.c_str(), impact * 1e9, total * 1e9, 100 * impact / total);
+  if (writes_) { // the window's loads on the surface they fell on, before the stage moves it
+    meshes::ensure_directory(directory_ + "/loads");
+    meshes::write_vtu(sample_->surface(), directory_ + format("/loads/stage_%04d.vtu", r.stage),
+                      {&loads.wear_volume, &loads.impact_volume, &loads.archard,
+                       &loads.normal_impulse, &loads.contact_steps});
+  }
   record_increment(increment, stages_.empty() ? 0.0 : stages_.back().cumulative_applied, p.coupling,
                    r);
   r.wear_seconds = wear_clock.seconds();
