@@ -103,3 +103,50 @@ TEST_CASE("wearsim calibrate: the calibrated coefficient reproduces the measured
   run_scene_case(dem_case_of(q), log2, {false, 0});
   CHECK(wear_of_first_revolution(q.output.directory) == Approx(measured / 40).epsilon(1e-9));
 }
+
+TEST_CASE("wearsim calibrate: a law of sliding and impact scales both coefficients alike",
+          "[coupling][calibrate][impact]") {
+  // The sliding-impact law is linear in its two coefficients together: the calibration
+  // scales both by one factor (their ratio kept), and the run with them wears the measured
+  // volume, its impact part included.
+  auto p = small_tester_case("calibrate_impact_run", false);
+  p.dem.revolutions = 1;
+  p.wear_law.model = "sliding-impact";
+  p.wear_law.sliding_coefficient = 5e-9;
+  p.wear_law.impact_coefficient = 2e-8;
+  std::filesystem::remove_all(p.output.directory);
+  std::ostringstream log;
+  run_scene_case(dem_case_of(p), log, {false, 0});
+  const double simulated = wear_of_first_revolution(p.output.directory);
+  REQUIRE(simulated > 0);
+  const double measured = 10 * 0.4 * simulated;
+  const auto c = calibrate(p.output.directory, measured, 10, 1);
+  CHECK(c.coefficient_name == "Sliding coefficient");
+  CHECK(c.calibrated == Approx(0.4 * 5e-9).epsilon(1e-12));
+  REQUIRE(c.also_scaled.size() == 1);
+  CHECK(c.also_scaled[0].first == "Impact energy coefficient");
+  CHECK(c.also_scaled[0].second == 2e-8);
+  std::ostringstream out;
+  char volume[64];
+  std::snprintf(volume, sizeof volume, "%.17g m^3", measured);
+  REQUIRE(run_calibrate_command(
+              {p.output.directory, "--measured", volume, "--revolutions", "10", "--from", "1"},
+              out) == 0);
+  const CaseParameters calibrated = [&] {
+    std::ofstream prm("calibrated_impact_case.prm");
+    prm << "subsection Wear law\n  set Model = sliding-impact\nend\n"
+        << "INCLUDE "
+        << std::filesystem::absolute(p.output.directory + "/calibration.prm").string() << "\n";
+    prm.close();
+    return read_case("calibrated_impact_case.prm");
+  }();
+  CHECK(calibrated.wear_law.sliding_coefficient == Approx(0.4 * 5e-9).epsilon(1e-8));
+  CHECK(calibrated.wear_law.impact_coefficient == Approx(0.4 * 2e-8).epsilon(1e-8));
+  auto q = p;
+  q.output.directory = "calibrate_impact_check";
+  q.wear_law = calibrated.wear_law;
+  std::filesystem::remove_all(q.output.directory);
+  std::ostringstream log2;
+  run_scene_case(dem_case_of(q), log2, {false, 0});
+  CHECK(wear_of_first_revolution(q.output.directory) == Approx(measured / 10).epsilon(1e-9));
+}
