@@ -83,13 +83,11 @@ double number(const std::map<std::string, std::string>& row, const std::string& 
   return std::stod(it->second);
 }
 
-// The coefficient a law of the catalogue is linear in (its first parameter); none for an
-// unknown law or one without parameters.
+// The coefficient a law of the catalogue is linear in (its first parameter; of a sum, the
+// first law's); none for a law without parameters.
 const dem::WearLawParameter* linear_coefficient(const std::string& model) {
-  for (const auto& law : dem::wear_law_catalogue())
-    if (law.name == model && !law.parameters.empty())
-      return &law.parameters.front();
-  return nullptr;
+  const auto laws = dem::wear_laws_of(model);
+  return laws.front()->parameters.empty() ? nullptr : &laws.front()->parameters.front();
 }
 
 struct CalibrateArguments {
@@ -272,9 +270,14 @@ Calibration calibrate(const std::string& run, double measured_volume, double rev
                              "/parameters.prm' has no coefficient to calibrate");
   c.coefficient_name = coefficient->name;
   c.coefficient = p.wear_law.*coefficient->member;
-  for (const auto& other : dem::find_wear_law(c.model).parameters)
-    if (other.scales_with_first)
-      c.also_scaled.emplace_back(other.name, p.wear_law.*other.member);
+  // The law's other coefficients it is linear in, and a sum's other laws' coefficients.
+  const auto laws = dem::wear_laws_of(c.model);
+  for (std::size_t k = 0; k < laws.size(); ++k)
+    for (std::size_t i = 0; i < laws[k]->parameters.size(); ++i) {
+      const auto& other = laws[k]->parameters[i];
+      if (other.scales_with_first || (k > 0 && i == 0))
+        c.also_scaled.emplace_back(other.name, p.wear_law.*other.member);
+    }
   if (by_time) {
     calibrate_per_second(run, part, p, measured_volume, revolutions, from_revolution, c);
     if (!(c.simulated_per_rev > 0))

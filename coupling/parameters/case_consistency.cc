@@ -187,9 +187,9 @@ void check_worn_through(const CaseParameters& p) {
 }
 
 std::string coefficient_name(const std::string& model) {
-  for (const auto& law : dem::wear_law_catalogue())
-    if (law.name == model && !law.parameters.empty())
-      return "Wear law/" + law.parameters.front().name;
+  const auto laws = dem::wear_laws_of(model); // the first law's, of a sum
+  if (!laws.front()->parameters.empty())
+    return "Wear law/" + laws.front()->parameters.front().name;
   return "Wear law/Model";
 }
 

@@ -11,7 +11,9 @@
 // measure).
 #include "dem/wear/wear_law.h"
 
+#include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 namespace wear::dem {
@@ -185,6 +187,49 @@ WearLawEntry sliding_impact_law() {
           }};
 }
 
+// Several laws at once: their volumes add up per face, per mechanism and in total.
+class SumWearLaw final : public WearLaw {
+public:
+  SumWearLaw(std::string name, std::vector<std::unique_ptr<WearLaw>> terms)
+      : name_(std::move(name)), terms_(std::move(terms)) {}
+  std::string name() const override { return name_; }
+  std::vector<double> removed_volume(const WearIntegrals& w) const override {
+    std::vector<double> sum(w.archard.size(), 0.0);
+    for (const auto& law : terms_) {
+      const std::vector<double> v = law->removed_volume(w);
+      for (std::size_t f = 0; f < sum.size(); ++f)
+        sum[f] += v[f];
+    }
+    return sum;
+  }
+  double total_removed_volume(const WearIntegrals& w) const override {
+    double sum = 0;
+    for (const auto& law : terms_)
+      sum += law->total_removed_volume(w);
+    return sum;
+  }
+  std::vector<std::pair<std::string, std::vector<double>>>
+  removed_by_mechanism(const WearIntegrals& w) const override {
+    std::vector<std::pair<std::string, std::vector<double>>> out;
+    for (const auto& law : terms_)
+      for (auto& [mechanism, volume] : law->removed_by_mechanism(w)) {
+        auto at = std::find_if(out.begin(), out.end(),
+                               [&](const auto& e) { return e.first == mechanism; });
+        if (at == out.end()) {
+          out.emplace_back(mechanism, std::move(volume));
+          continue;
+        }
+        for (std::size_t f = 0; f < volume.size(); ++f)
+          at->second[f] += volume[f];
+      }
+    return out;
+  }
+
+private:
+  std::string name_;
+  std::vector<std::unique_ptr<WearLaw>> terms_;
+};
+
 void check_coefficient(double c, bool signed_, const std::string& parameter) {
   if (!std::isfinite(c) || (!signed_ && !(c >= 0)))
     throw std::invalid_argument("Wear law/" + parameter + ": must be a finite " +
@@ -210,16 +255,52 @@ const WearLawEntry& find_wear_law(const std::string& name) {
   throw std::invalid_argument("Wear law/Model: unknown law '" + name + "' (known: " + known + ")");
 }
 
+std::vector<const WearLawEntry*> wear_laws_of(const std::string& model) {
+  std::vector<const WearLawEntry*> laws;
+  std::stringstream in(model);
+  for (std::string term; std::getline(in, term, '+');) {
+    const auto first = term.find_first_not_of(" \t"), last = term.find_last_not_of(" \t");
+    if (first == std::string::npos)
+      throw std::invalid_argument("Wear law/Model: '" + model + "' has an empty term");
+    const WearLawEntry* law = &find_wear_law(term.substr(first, last - first + 1));
+    if (std::find(laws.begin(), laws.end(), law) != laws.end())
+      throw std::invalid_argument("Wear law/Model: '" + model + "' names '" + law->name +
+                                  "' twice");
+    for (const WearLawEntry* other : laws)
+      if (law->impact && other->impact)
+        throw std::invalid_argument("Wear law/Model: '" + model + "' sums '" + other->name +
+                                    "' and '" + law->name +
+                                    "', whose impacts the engine books by different measures; "
+                                    "keep one of them");
+    laws.push_back(law);
+  }
+  // getline yields no term after a trailing '+'
+  if (laws.empty() || laws.size() != std::size_t(std::count(model.begin(), model.end(), '+')) + 1)
+    throw std::invalid_argument("Wear law/Model: '" + model + "' has an empty term");
+  return laws;
+}
+
 std::unique_ptr<WearLaw> make_wear_law(const WearLawParameters& p) {
-  const WearLawEntry& law = find_wear_law(p.model);
-  for (const auto& c : law.parameters)
-    check_coefficient(p.*c.member, c.signed_, c.name);
-  return law.make(p);
+  const std::vector<const WearLawEntry*> laws = wear_laws_of(p.model);
+  for (const WearLawEntry* law : laws)
+    for (const auto& c : law->parameters)
+      check_coefficient(p.*c.member, c.signed_, c.name);
+  if (laws.size() == 1)
+    return laws[0]->make(p);
+  std::vector<std::unique_ptr<WearLaw>> terms;
+  std::string name;
+  for (const WearLawEntry* law : laws) {
+    terms.push_back(law->make(p));
+    name += (name.empty() ? "" : " + ") + law->name;
+  }
+  return std::make_unique<SumWearLaw>(name, std::move(terms));
 }
 
 ImpactMeasure impact_measure(const WearLawParameters& p) {
-  const WearLawEntry& law = find_wear_law(p.model);
-  return law.impact ? law.impact(p) : ImpactMeasure{};
+  for (const WearLawEntry* law : wear_laws_of(p.model))
+    if (law->impact)
+      return law->impact(p);
+  return ImpactMeasure{};
 }
 
 } // namespace wear::dem

@@ -17,7 +17,9 @@
 namespace wear::dem {
 
 struct WearLawParameters {
-  std::string model = "archard";      ///< name of the law (see wear_law_catalogue())
+  /// Name of the law (see wear_law_catalogue()), or several joined by '+' ("archard +
+  /// finnie"): their volumes add up, face by face and mechanism by mechanism.
+  std::string model = "archard";
   double archard_coefficient = 5e-9;  ///< [1/Pa] alpha = k / H of the Archard law
   double work_coefficient = 1.667e-8; ///< [m^3/J] volume per frictional work
   double finnie_coefficient = 1e-10;  ///< [1/Pa] c / (p psi K) of Finnie's law
@@ -79,8 +81,14 @@ const std::vector<WearLawEntry>& wear_law_catalogue();
 /// laws for an unknown name.
 const WearLawEntry& find_wear_law(const std::string& name);
 
+/// The laws a Model names, in its order: one, or several joined by '+'. Throws
+/// std::invalid_argument naming "Wear law/Model" for an unknown or repeated name, an empty
+/// term, or two laws whose impacts the engine books by different measures (finnie, oka).
+std::vector<const WearLawEntry*> wear_laws_of(const std::string& model);
+
 /// Throws std::invalid_argument naming "Wear law/Model" and the known laws for an unknown
-/// name, or the coefficient for a negative or non-finite one.
+/// name, or the coefficient for a negative or non-finite one. A Model of several laws gives
+/// their sum.
 std::unique_ptr<WearLaw> make_wear_law(const WearLawParameters& p);
 
 /// The engine's per-impact measure for the law `p` names (DemSettings::impact).
@@ -91,13 +99,12 @@ ImpactMeasure impact_measure(const WearLawParameters& p);
 template <typename Visitor>
 void visit_parameters(WearLawParameters& p, Visitor& v) {
   v.enter("Wear law");
-  std::string doc = "Wear law by name:";
-  std::string names;
-  for (const auto& law : wear_law_catalogue()) {
+  std::string doc = "Wear law by name, or several joined by '+' (archard + finnie), whose "
+                    "volumes add up per face (at most one of the laws with an impact measure, "
+                    "finnie or oka):";
+  for (const auto& law : wear_law_catalogue())
     doc += "\n  " + law.name + ": " + law.description;
-    names += (names.empty() ? "" : "|") + law.name;
-  }
-  v.selection("Model", p.model, names, doc);
+  v.text("Model", p.model, doc);
   for (const auto& law : wear_law_catalogue())
     for (const auto& c : law.parameters)
       v.real(c.name, p.*c.member, c.doc);

@@ -135,8 +135,8 @@ TEST_CASE("wearsim calibrate: a law of sliding and impact scales both coefficien
   const CaseParameters calibrated = [&] {
     std::ofstream prm("calibrated_impact_case.prm");
     prm << "subsection Wear law\n  set Model = sliding-impact\nend\n"
-        << "INCLUDE "
-        << std::filesystem::absolute(p.output.directory + "/calibration.prm").string() << "\n";
+        << "INCLUDE " << std::filesystem::absolute(p.output.directory + "/calibration.prm").string()
+        << "\n";
     prm.close();
     return read_case("calibrated_impact_case.prm");
   }();

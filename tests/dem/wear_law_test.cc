@@ -192,6 +192,45 @@ TEST_CASE("wear laws by name, bad names and coefficients", "[dem][wear]") {
   CHECK(impact_measure({"archard", 5e-9, 0}).kind == ImpactMeasure::Kind::none);
 }
 
+TEST_CASE("wear laws summed: the volumes of the laws add up per face and per mechanism",
+          "[dem][wear][impact]") {
+  WearIntegrals w;
+  w.archard = {2.0, 3.0};
+  w.sliding_work = {1.0, 0.5};
+  w.impact_measure = {4.0, 0.0};
+  w.impact_energy = {0.5, 1.0};
+  w.total_archard = 5.0;
+  w.total_sliding_work = 1.5;
+  w.total_impact_measure = 4.0;
+  w.total_impact_energy = 1.5;
+  WearLawParameters p;
+  p.archard_coefficient = 5e-9;
+  p.finnie_coefficient = 1e-10;
+  p.model = " archard +finnie ";
+  const auto sum = make_wear_law(p);
+  CHECK(sum->name() == "archard + finnie");
+  CHECK(sum->removed_volume(w)[0] == Approx(2 * 5e-9 + 4 * 1e-10).epsilon(1e-14));
+  CHECK(sum->removed_volume(w)[1] == Approx(3 * 5e-9).epsilon(1e-14));
+  CHECK(sum->total_removed_volume(w) == Approx(5 * 5e-9 + 4 * 1e-10).epsilon(1e-14));
+  const auto parts = sum->removed_by_mechanism(w);
+  REQUIRE(parts.size() == 2);
+  CHECK(parts[0].first == "sliding");
+  CHECK(parts[1].first == "impact");
+  CHECK(parts[1].second[0] == Approx(4e-10).epsilon(1e-14));
+  CHECK(impact_measure(p).kind == ImpactMeasure::Kind::finnie);
+  // Two sliding laws: one mechanism, added.
+  p.model = "archard + frictional-work";
+  p.work_coefficient = 1e-8;
+  const auto both = make_wear_law(p)->removed_by_mechanism(w);
+  REQUIRE(both.size() == 1);
+  CHECK(both[0].second[1] == Approx(3 * 5e-9 + 0.5 * 1e-8).epsilon(1e-14));
+  for (const char* bad : {"archard + oka + finnie", "archard + archard", "archard +", "+"}) {
+    p.model = bad;
+    INFO(bad);
+    CHECK_THROWS_WITH(make_wear_law(p), Catch::Contains("Wear law/Model"));
+  }
+}
+
 TEST_CASE("least-squares wear fits through the origin and statistics", "[dem][wear]") {
   std::vector<double> x{1, 2, 3, 4}, y;
   for (double v : x)
