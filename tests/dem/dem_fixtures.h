@@ -3,6 +3,7 @@
 #include "dem/engine/filling.h"
 #include "dem/engine/system.h"
 #include "meshes/constants.h"
+#include "meshes/structured_grid.h"
 #include "meshes/tester_walls.h"
 
 #include <catch2/catch.hpp>
@@ -46,6 +47,18 @@ inline meshes::SurfaceMesh box_walls(double L) {
 }
 
 /// Gravel-like material of the anchor workload (E = 5e7 Pa, nu = 0.25, rho = 2650).
+/// The flat square [-L, L]^2 at height z with n x n quads split by `diagonals`, normal +z,
+/// labelled as a sample's base.
+inline meshes::SurfaceMesh flat_square(double L, int n, double z = 0,
+                                       meshes::Diagonals diagonals = meshes::Diagonals::uniform) {
+  return meshes::structured_grid(
+      n, n,
+      [L, z](double u, double v) {
+        return meshes::Vec3{-L + 2 * L * u, -L + 2 * L * v, z};
+      },
+      false, meshes::label::base, diagonals);
+}
+
 inline int add_gravel(System& s, double e, double mu, double mu_r) {
   const int g = s.materials.add({"gravel", 5e7, 0.25, 2650});
   s.materials.set_pair(g, g, {e, mu, mu_r});

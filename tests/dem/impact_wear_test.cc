@@ -23,16 +23,6 @@ constexpr double r = 4e-3;                                      ///< [m]
 constexpr double density = 2650;                                ///< [kg/m^3]
 const double mass = density * 4.0 / 3.0 * wear::pi * r * r * r; ///< [kg]
 
-/// The flat square [-L, L]^2 at z = 0 with n x n quads, normal +z.
-wear::meshes::SurfaceMesh flat(double L, int n) {
-  return wear::meshes::structured_grid(
-      n, n,
-      [L](double u, double v) {
-        return Vec3{-L + 2 * L * u, -L + 2 * L * v, 0};
-      },
-      false, wear::meshes::label::base, wear::meshes::Diagonals::uniform);
-}
-
 WearLawParameters law_named(const std::string& model) {
   WearLawParameters p;
   p.model = model;
@@ -47,7 +37,7 @@ int plate_system(System& s, const WearLawParameters& law, double e, double mu, b
   if (!gravity)
     s.settings.gravity = {};
   s.settings.impact = impact_measure(law);
-  return s.add_wall(MeshWall(flat(0.05, 5), g, {}, true, "plate"));
+  return s.add_wall(MeshWall(flat_square(0.05, 5), g, {}, true, "plate"));
 }
 
 /// One sphere striking the plate at speed v [m/s] and angle alpha [deg] to it, no gravity,
@@ -213,7 +203,7 @@ TEST_CASE("impact wear: the faces' impact sums add up to the contacts' totals", 
   s.materials.set_pair(g, g, {0.5, 0.3, 0.0});
   s.settings.gravity = {};
   s.settings.impact = impact_measure(law);
-  const int w = s.add_wall(MeshWall(flat(0.05, 2), g, {}, true, "plate"));
+  const int w = s.add_wall(MeshWall(flat_square(0.05, 2), g, {}, true, "plate"));
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<double> u(-1, 1);
   for (int k = 0; k < 40; ++k) {

@@ -148,9 +148,8 @@ TEST_CASE("the pair kernel's lanes give every pair the contact law's forces and 
   PairBlock block;
   int n_contacts = 0;
   for (int k0 = 0; k0 < n_pairs; k0 += pair_block_size)
-    n_contacts += pair_block_forces(data, std::size_t(k0),
-                                    std::min(pair_block_size, n_pairs - k0), block, force.data(),
-                                    torque.data());
+    n_contacts += pair_block_forces(data, std::size_t(k0), std::min(pair_block_size, n_pairs - k0),
+                                    block, force.data(), torque.data());
   CHECK(n_contacts == n_pairs - n_apart);
   CHECK(foreign.n == 0);
 

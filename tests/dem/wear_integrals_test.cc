@@ -9,23 +9,11 @@ using namespace wear::dem;
 using namespace wear::dem::testing;
 using wear::meshes::Vec3;
 
-namespace {
-// Flat square [-L, L]^2 at z = 0 with n x n quads.
-wear::meshes::SurfaceMesh flat(double L, int n) {
-  return wear::meshes::structured_grid(
-      n, n,
-      [L](double u, double v) {
-        return Vec3{-L + 2 * L * u, -L + 2 * L * v, 0};
-      },
-      false, wear::meshes::label::base, wear::meshes::Diagonals::uniform);
-}
-} // namespace
-
 TEST_CASE("wear integrals: per-face sums (moments included) equal per-contact totals",
           "[dem][wear]") {
   System s;
   const int g = add_gravel(s, 0.5, 0.5, 0.1);
-  const int w = s.add_wall(MeshWall(flat(0.05, 8), g, {}, true, "sample"));
+  const int w = s.add_wall(MeshWall(flat_square(0.05, 8), g, {}, true, "sample"));
   // A particle sliding diagonally over many faces, edges and vertices of the mesh.
   const double r = 4e-3;
   s.particles.add({-0.04, -0.04, r - 1e-5}, {0.5, 0.5, 0}, r, 2650, g);

@@ -14,17 +14,6 @@ using namespace wear::dem::testing;
 using wear::meshes::Vec3;
 
 namespace {
-// Flat square [-L, L]^2 at height z with n x n quads, normal +z.
-wear::meshes::SurfaceMesh flat(double L, int n, double z = 0,
-                               wear::meshes::Diagonals d = wear::meshes::Diagonals::uniform) {
-  return wear::meshes::structured_grid(
-      n, n,
-      [L, z](double u, double v) {
-        return Vec3{-L + 2 * L * u, -L + 2 * L * v, z};
-      },
-      false, wear::meshes::label::base, d);
-}
-
 // Volume worn by one particle resting by its weight on a face moving at v under it.
 struct Held {
   double volume = 0, expected = 0, face_sum = 0;
@@ -37,7 +26,7 @@ Held held_particle(const Vec3& where) {
   s.materials.set_pair(g, g, {0.5, 0.0, 0.0}); // frictionless: the particle stays in place
   WallMotion conveyor;
   conveyor.surface_velocity = {0.3, 0, 0};
-  const int w = s.add_wall(MeshWall(flat(0.02, 4), g, conveyor, true, "sample"));
+  const int w = s.add_wall(MeshWall(flat_square(0.02, 4), g, conveyor, true, "sample"));
   const double r = 4e-3, m = 2650 * 4.0 / 3.0 * pi * r * r * r;
   const double e_star = 1 / (2 * (1 - 0.0625) / 5e7);
   const double delta = std::pow(m * 9.81 / (4.0 / 3.0 * e_star * std::sqrt(r)), 2.0 / 3.0);
@@ -93,7 +82,7 @@ TEST_CASE("wear volume under a particle bed is independent of the flat wall's me
     WallMotion conveyor;
     conveyor.surface_velocity = {0.2, 0, 0};
     const double L = 0.02;
-    const int w = s.add_wall(MeshWall(flat(L, n, 0, diag), g, conveyor, true, "floor"));
+    const int w = s.add_wall(MeshWall(flat_square(L, n, 0, diag), g, conveyor, true, "floor"));
     auto box = box_walls(2 * L);
     for (auto& v : box.vertices)
       v = v - Vec3{L, L, 0.001};
@@ -121,7 +110,7 @@ TEST_CASE("wear volume under a particle bed is independent of the flat wall's me
 }
 
 TEST_CASE("reference deformation: a uniformly loaded flat plate recedes uniformly", "[dem][wear]") {
-  auto plate = flat(0.02, 16, 0, wear::meshes::Diagonals::alternating);
+  auto plate = flat_square(0.02, 16, 0, wear::meshes::Diagonals::alternating);
   plate.roles.set(wear::meshes::label::base, wear::meshes::FaceRole::wearing);
   ReferenceDeformation def(plate);
   const auto area = wear::meshes::face_areas(plate);

@@ -147,13 +147,7 @@ TEST_CASE("two touching spheres leave a rank together with their history", "[dem
   // the same rebuild.
   const double x0 = world().n_ranks() == 3 ? 0.0102 : -0.0008;
   const auto make = [x0](System& s) {
-    const int g = s.materials.add({"gravel", 5e7, 0.25, 2650});
-    const int f = s.materials.add({"floor", 5e7, 0.25, 2650});
-    s.materials.set_pair(g, g, {0.5, 0.5, 0.0});
-    s.materials.set_pair(g, f, {0.5, 0.1, 0.0});
-    s.materials.set_pair(f, f, {0.5, 0.1, 0.0});
-    s.add_wall(MeshWall(floor_mesh(-0.1, 0.1, -0.05, 0.05, 20, 10), f, {}, false, "floor"));
-    s.settings.domain = {{-0.2, -0.2, -0.05}, {0.2, 0.2, 0.2}};
+    const int g = gravel_on_slippery_floor(s);
     s.particles.add({x0, 0, r - 1e-6}, {0.3, 0, 0}, r, 2650, g);
     s.particles.add({x0, 0, 3 * r - 3e-6}, {0.3, 0, 0}, r, 2650, g);
   };

@@ -85,13 +85,7 @@ TEST_CASE("a stack of clumps sliding across the cuts follows its one-rank trajec
   const double rm = shape.members[0].radius;
   const double x0 = world().n_ranks() == 3 ? 0.0116 : 0.0006;
   const auto make = [&](System& s) {
-    const int g = s.materials.add({"gravel", 5e7, 0.25, 2650});
-    const int f = s.materials.add({"floor", 5e7, 0.25, 2650});
-    s.materials.set_pair(g, g, {0.5, 0.5, 0.0});
-    s.materials.set_pair(g, f, {0.5, 0.1, 0.0});
-    s.materials.set_pair(f, f, {0.5, 0.1, 0.0});
-    s.add_wall(MeshWall(floor_mesh(-0.1, 0.1, -0.05, 0.05, 20, 10), f, {}, false, "floor"));
-    s.settings.domain = {{-0.2, -0.2, -0.05}, {0.2, 0.2, 0.2}};
+    const int g = gravel_on_slippery_floor(s);
     const Quaternion q{};
     s.add_clump(shape, 2650, g, {x0, 0, rm - 1e-6}, q, {0.3, 0, 0}, {0, -30, 0});
     s.add_clump(shape, 2650, g, {x0, 2e-4, 3 * rm - 3e-6}, q, {0.3, 0, 0}, {});
@@ -126,13 +120,7 @@ TEST_CASE("a clump running into another across a cut meets it where its member o
   const double xb = cut + 0.3e-3, xa = xb - 2 * c - 2 * rm - 0.5e-3;
   REQUIRE(c + 2 * rm - 0.3e-3 > 2 * rm + skin + 1e-3); // a's front member out of spheres' reach
   const auto make = [&](System& s) {
-    const int g = s.materials.add({"gravel", 5e7, 0.25, 2650});
-    const int f = s.materials.add({"floor", 5e7, 0.25, 2650});
-    s.materials.set_pair(g, g, {0.5, 0.5, 0.0});
-    s.materials.set_pair(g, f, {0.5, 0.1, 0.0});
-    s.materials.set_pair(f, f, {0.5, 0.1, 0.0});
-    s.add_wall(MeshWall(floor_mesh(-0.1, 0.1, -0.05, 0.05, 20, 10), f, {}, false, "floor"));
-    s.settings.domain = {{-0.2, -0.2, -0.05}, {0.2, 0.2, 0.2}};
+    const int g = gravel_on_slippery_floor(s);
     s.settings.skin = skin;
     s.add_clump(shape, 2650, g, {xa, 0, rm - 1e-6}, {}, {0.3, 0, 0}, {});
     s.add_clump(shape, 2650, g, {xb, 1e-4, rm - 1e-6}, {}, {}, {});

@@ -130,6 +130,20 @@ inline int gravel_on_floor(System& s, bool wearing) {
   return g;
 }
 
+/// Gravel (mu = 0.5 between grains) on a slippery floor (mu = 0.1) z = 0 of [-0.1, 0.1] x
+/// [-0.05, 0.05] (20 x 10 quads), no rolling friction: a grain sliding on it turns, so grains
+/// touching it and one another slip against each other. Returns the gravel's material.
+inline int gravel_on_slippery_floor(System& s) {
+  const int g = s.materials.add({"gravel", 5e7, 0.25, 2650});
+  const int f = s.materials.add({"floor", 5e7, 0.25, 2650});
+  s.materials.set_pair(g, g, {0.5, 0.5, 0.0});
+  s.materials.set_pair(g, f, {0.5, 0.1, 0.0});
+  s.materials.set_pair(f, f, {0.5, 0.1, 0.0});
+  s.add_wall(MeshWall(floor_mesh(-0.1, 0.1, -0.05, 0.05, 20, 10), f, {}, false, "floor"));
+  s.settings.domain = {{-0.2, -0.2, -0.05}, {0.2, 0.2, 0.2}};
+  return g;
+}
+
 /// A square pyramid of 2 x 2 layers: 8 x 2 spheres on the floor, 7 x 1 in their hollows.
 inline void pile(System& s, bool wearing) {
   const double r = bed_radius;
