@@ -162,7 +162,8 @@ void System::apply_particle_changes(const ParticleChanges& changes) {
         next_id_ += std::int64_t(n_ids);
         continue;
       }
-      if (next_id_ + std::int64_t(n_ids) >= (std::int64_t(1) << 32) - 1)
+      // The last id it takes must stay below 2^32 - 1 (pair keys hold two ids in 32 bits).
+      if (next_id_ + std::int64_t(n_ids) - 1 >= (std::int64_t(1) << 32) - 1)
         throw std::runtime_error("DEM: particle ids are exhausted (2^32 - 1 inserted)");
       if (q.shape) {
         place_clump(q.shape->scaled(2 * q.radius / q.shape->equivalent_diameter()), q.density,
@@ -173,8 +174,6 @@ void System::apply_particle_changes(const ParticleChanges& changes) {
       p.add(q.position, q.velocity, q.radius, q.density, q.material);
       p.angular_velocity.back() = q.angular_velocity;
       p.force.back() = settings.gravity * p.mass.back();
-      if (next_id_ >= (std::int64_t(1) << 32) - 1)
-        throw std::runtime_error("DEM: particle ids are exhausted (2^32 - 1 inserted)");
       p.id.back() = next_id_++;
     }
   if (!clumps_.empty()) // the rebuild's steps find the members by slot
