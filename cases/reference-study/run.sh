@@ -25,8 +25,9 @@
 # without a checkpoint replaces the summary of the same case only when it went further.
 # A case whose run has a summary but neither a run in its output folder nor a kept checkpoint
 # has ended (finished, distorted, or stopped by an error or without a checkpoint) and is not
-# run again: AFRESH=1 starts it from the beginning (its summary is replaced when it stops,
-# unless it keeps no checkpoint and gets less far).
+# run again. AFRESH=1 starts every case given from the beginning, whatever its output folder or
+# kept checkpoint holds (its summary is replaced when it stops, unless it keeps no checkpoint
+# and gets less far); without it a case continues from its checkpoint.
 set -uo pipefail
 cd "$(dirname "$0")/../.."
 wearsim=${WEARSIM:-}
@@ -59,7 +60,7 @@ run_one() { # <case>: start or continue one case, its log beside its folder
   local prm out mode=--overwrite
   prm=$(case_file "$1") out=$(out_dir "$1")
   mkdir -p "$(dirname "$out")"
-  [ -f "$out/checkpoint.h5" ] && mode=--resume
+  [ -f "$out/checkpoint.h5" ] && [ -z "${AFRESH:-}" ] && mode=--resume
   echo "=== $(date -u +%FT%TZ) $wearsim run $mode $prm" >> "$out.log"
   exec "$wearsim" run "$mode" "$prm" >> "$out.log" 2>&1
 }
@@ -87,7 +88,8 @@ for c in "${cases[@]}"; do
     echo "reference study: $c has ended (its summary: $(summary_dir "$c")); AFRESH=1 runs it again"
     continue
   fi
-  restored=$(restore_running "$c") || exit 2
+  restored=
+  [ -n "${AFRESH:-}" ] || restored=$(restore_running "$c") || exit 2
   [ -z "$restored" ] || echo "reference study: continues from the kept checkpoint: $restored"
   pool_run "$c" "$(out_dir "$c").log" run_one "$c"
   echo "reference study: $c started $(date -u +%TZ)"
