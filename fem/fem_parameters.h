@@ -88,6 +88,13 @@ void visit_parameters(FemParameters& f, Visitor& v) {
   v.real("Target edge", i.target_edge,
          "[m] Edge length of the new surface's triangles (isotropic remeshing), which the "
          "volume mesher keeps; at least twice the grid spacing.");
+  v.real("Flat edge", i.flat_edge,
+         "[m] 0: every new triangle has the target edge. Longer: the new surface is then "
+         "coarsened where that changes its shape by little (each kept vertex within half the "
+         "grid spacing, root mean square, of the planes it stands for), to edges up to this "
+         "length where it is flat, while where it curves the target-edge triangles stay, so "
+         "a worn element's remnant narrower than this is kept: fewer faces for the DEM's wall "
+         "and the kept checkpoints.");
   v.real("Volume tolerance", i.volume_tolerance,
          "[-] Relative tolerance of each wearing label's removed volume.");
   v.leave();

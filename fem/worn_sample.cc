@@ -129,34 +129,35 @@ Remeshed remesh_and_read(const meshes::SurfaceMesh& worn, const RemeshParameters
 std::vector<meshes::Vec3> fold_free_restoring_offset(const meshes::SurfaceMesh& fresh,
                                                      double target, RemeshReport& report) {
   const auto normals = meshes::face_normals(fresh);
-  std::vector<char> held(fresh.n_faces(), 0);
-  for (int rings = 0;;) {
+  std::vector<meshes::Vec3> taken;
+  const int rings = meshes::hold_still_around_folds(fresh, [&](const std::vector<char>& held) {
+    const bool any_held = std::find(held.begin(), held.end(), 1) != held.end();
     const auto restoring =
-        meshes::volume_restoring_offset(fresh, target, rings > 0 ? &held : nullptr);
+        meshes::volume_restoring_offset(fresh, target, any_held ? &held : nullptr);
     meshes::SurfaceMesh candidate = fresh;
     for (std::size_t v = 0; v < candidate.n_vertices(); ++v)
       candidate.vertices[v] += restoring.displacement[v];
-    const auto q = meshes::surface_quality(candidate, &normals);
+    auto q = meshes::surface_quality(candidate, &normals);
     if (q.valid()) {
       // The secant scaling can end short of the target (an offset that stops sweeping volume,
       // or free faces too few to hold it): the valid offset is kept, and what it does not
       // give back is reported, never counted as restored.
       if (restoring.missed_target())
         report.volume_not_restored = restoring.removed_volume - restoring.swept_volume;
-      return restoring.displacement;
+      taken = restoring.displacement;
     }
-    if (rings == 8) {
-      // Every restoring offset folded: hand on the remeshed surface (valid: remesh_sample
-      // refuses folds) with the chord volume not given back.
-      report.volume_not_restored = meshes::enclosed_volume(fresh) - target;
-      return std::vector<meshes::Vec3>(fresh.n_vertices());
-    }
-    rings = rings == 0 ? 1 : 2 * rings;
-    const auto around = meshes::faces_within_rings(fresh, q.bad_faces, rings);
-    for (std::size_t f = 0; f < held.size(); ++f)
-      held[f] |= around[f];
-    report.restore_held_rings = rings;
+    return q;
+  });
+  if (rings < 0) {
+    // Every restoring offset folded: hand on the remeshed surface (valid: remesh_sample
+    // refuses folds) with the chord volume not given back.
+    report.restore_held_rings = 8;
+    report.volume_not_restored = meshes::enclosed_volume(fresh) - target;
+    return std::vector<meshes::Vec3>(fresh.n_vertices());
   }
+  if (rings > 0)
+    report.restore_held_rings = rings;
+  return taken;
 }
 } // namespace
 

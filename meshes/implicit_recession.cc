@@ -66,9 +66,10 @@ void check_input(const SurfaceMesh& s, const std::vector<double>& removed,
   if (!check_closed(s).closed())
     throw std::invalid_argument("implicit recession: the surface is not closed");
   if (!(p.spacing > 0) || !(p.vanish_height >= 0) || !(p.volume_tolerance > 0) ||
-      p.max_iterations < 1 || !(p.max_edge > p.spacing) || !(p.target_edge > p.spacing))
-    throw std::invalid_argument("implicit recession: spacing, vanish height, volume tolerance "
-                                "iteration count or largest edge out of range");
+      p.max_iterations < 1 || !(p.max_edge > p.spacing) || !(p.target_edge > p.spacing) ||
+      !(p.flat_edge == 0 || p.flat_edge > p.target_edge))
+    throw std::invalid_argument("implicit recession: spacing, vanish height, volume tolerance, "
+                                "iteration count, largest, target or flat edge out of range");
 }
 
 // Dense index of every label of s.
@@ -541,6 +542,8 @@ ImplicitRecession implicit_recession(const SurfaceMesh& s,
   IsotropicRemeshParameters even;
   even.target_edge = p.target_edge;
   isotropic_remesh(r.surface, curves, even);
+  if (p.flat_edge > 0) // the flat regions coarsened, the curved ones kept (flat_edge)
+    decimate(r.surface, flat_region_coarsening(p.flat_edge, p.flat_error_fraction * h));
   const auto patch_of_face = nearest_labels(coarse_patches, r.surface);
   const auto restored = snap_untouched_vertices(s, patch, phi, psi, patch_of_face, r.surface);
   r.n_restored = std::size_t(std::count(restored.begin(), restored.end(), 1));

@@ -37,6 +37,14 @@ struct ImplicitRecessionParameters {
   /// The coarsened zero set is then remeshed isotropically (meshes/isotropic_remeshing.h) to
   /// edges of about this length, so that a volume mesher can keep its triangles. [m]
   double target_edge = 1e-3;
+  /// 0: target_edge everywhere. Longer: the remeshed surface is then coarsened where that
+  /// changes its shape by little (meshes/surface_decimation.h, flat_region_coarsening), to
+  /// edges up to this length on flat regions, while curved ones (a worn element's remnant
+  /// narrower than this, a rounded crest) keep their target_edge triangles. [m]
+  double flat_edge = 0;
+  /// The coarsening's error limit, the root-mean-square distance of a kept vertex to the
+  /// planes of the faces it stands for, as a fraction of the spacing.
+  double flat_error_fraction = 0.5;
 };
 
 struct ImplicitRecession {

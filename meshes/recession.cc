@@ -199,6 +199,22 @@ std::vector<char> faces_within_rings(const SurfaceMesh& m, const std::vector<std
   return in_region;
 }
 
+int hold_still_around_folds(
+    const SurfaceMesh& m, const std::function<SurfaceQuality(const std::vector<char>&)>& attempt) {
+  std::vector<char> held(m.n_faces(), 0);
+  for (int rings = 0;;) {
+    const SurfaceQuality q = attempt(held);
+    if (q.valid())
+      return rings;
+    if (rings == 8)
+      return -1;
+    rings = rings == 0 ? 1 : 2 * rings;
+    const auto around = faces_within_rings(m, q.bad_faces, rings);
+    for (std::size_t f = 0; f < held.size(); ++f)
+      held[f] |= around[f];
+  }
+}
+
 double spread_removed_volume(const SurfaceMesh& m, std::vector<double>& removed_volume,
                              const std::vector<std::uint32_t>& seeds, int rings) {
   const std::size_t nf = m.n_faces();

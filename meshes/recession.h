@@ -7,10 +7,12 @@
 // (volume_exact_recession), and gives back the volume a remesh cut off with the same field
 // (volume_restoring_offset). Where a recession would fold, the removed volume is spread over
 // the fold's neighbourhood first (spread_removed_volume).
+#include "meshes/mesh_quality.h"
 #include "meshes/surface_mesh.h"
 
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace wear::meshes {
@@ -67,6 +69,16 @@ Recession volume_restoring_offset(const SurfaceMesh& surface, double target_volu
 /// Per face: 1 for the seeds and the faces within `rings` vertex rings of them, else 0.
 std::vector<char> faces_within_rings(const SurfaceMesh& m, const std::vector<std::uint32_t>& seeds,
                                      int rings);
+
+/// An offset of the vertices of `m` that folds it (beside a low remnant of a worn element, at
+/// a concave corner) is held still near the fold while the rest of the surface takes its
+/// share. `attempt(held)` makes the offset with the vertices of the faces marked in `held`
+/// (one flag per face of m) kept still, and returns its candidate's quality; the first valid
+/// candidate is the one taken. Tried with no face held, then with the faces within 1, 2, 4
+/// and 8 vertex rings of every fold found so far held. Returns the rings held at the attempt
+/// taken (0: none), or -1 when every attempt folded.
+int hold_still_around_folds(const SurfaceMesh& m,
+                            const std::function<SurfaceQuality(const std::vector<char>&)>& attempt);
 
 /// Spreads removed volume [m^3 per face] around `seeds` (e.g. the faces where a recession
 /// folds): within `rings` vertex rings of a seed, over wearing faces only, the depth V_f / A_f

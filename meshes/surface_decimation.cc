@@ -292,6 +292,14 @@ private:
 
 } // namespace
 
+DecimationParameters flat_region_coarsening(double max_edge, double max_error) {
+  DecimationParameters p;
+  p.max_edge = max_edge;
+  p.max_error = max_error;
+  p.min_quality = 0.3;
+  return p;
+}
+
 DecimationReport decimate(SurfaceMesh& m, const DecimationParameters& p) {
   const Stopwatch clock;
   if (!(p.max_error > 0) || !(p.max_edge > 0) || !(p.min_normal_cos > -1 && p.min_normal_cos < 1) ||

@@ -25,6 +25,13 @@ struct DecimationReport {
   double seconds = 0;
 };
 
+/// The limits that coarsen an isotropic surface where it is flat and keep it where it curves:
+/// edges up to `max_edge` [m], a kept vertex within `max_error` [m] (root mean square) of the
+/// planes it stands for, no face below quality 0.3 (as an isotropic remeshing leaves them:
+/// a volume mesher keeps its triangles). A feature narrower than max_edge is not collapsed
+/// away, as a remeshing at that edge length would (a cone 1.5 mm wide under 2 mm edges).
+DecimationParameters flat_region_coarsening(double max_edge, double max_error);
+
 /// Coarsens the closed, labelled surface `m` in place by half-edge collapses (a vertex moves
 /// onto a neighbour), cheapest first by the quadric error of Garland and Heckbert, under the
 /// limits of `p`: the link condition keeps it a closed manifold, a vertex where three labels

@@ -122,13 +122,34 @@ NearestFace SurfaceLocator::nearest(const Vec3& p, int label) const {
 }
 
 double one_sided_distance(const SurfaceMesh& from, const SurfaceMesh& to) {
+  return farthest_point(from, to).distance;
+}
+
+SurfaceGap farthest_point(const SurfaceMesh& from, const SurfaceMesh& to) {
   const SurfaceLocator locator(to);
-  double worst = 0;
-  for (const auto& v : from.vertices)
-    worst = std::max(worst, locator.nearest(v).distance);
-  for (const auto& c : face_centroids(from))
-    worst = std::max(worst, locator.nearest(c).distance);
-  return worst;
+  std::vector<int> vertex_label(from.n_vertices(), 0);
+  for (std::size_t f = 0; f < from.n_faces(); ++f)
+    for (const auto v : from.triangles[f])
+      vertex_label[v] = from.face_labels[f];
+  SurfaceGap g;
+  double sum = 0;
+  const auto visit = [&](const Vec3& x, int label) {
+    const double d = locator.nearest(x).distance;
+    sum += d;
+    if (d > g.distance) {
+      g.distance = d;
+      g.at = x;
+      g.label = label;
+    }
+  };
+  for (std::size_t v = 0; v < from.n_vertices(); ++v)
+    visit(from.vertices[v], vertex_label[v]);
+  const auto centroid = face_centroids(from);
+  for (std::size_t f = 0; f < from.n_faces(); ++f)
+    visit(centroid[f], from.face_labels[f]);
+  const std::size_t n = from.n_vertices() + from.n_faces();
+  g.mean = n > 0 ? sum / double(n) : 0;
+  return g;
 }
 
 UnwornOffset farthest_unworn_face(const SurfaceMesh& moved, const SurfaceMesh& original) {

@@ -41,6 +41,15 @@ private:
 /// `to`: the one-sided Hausdorff distance sampled at those points. [m]
 double one_sided_distance(const SurfaceMesh& from, const SurfaceMesh& to);
 
+/// The same with where it is reached, and the mean over the sampled points.
+struct SurfaceGap {
+  double distance = 0; ///< [m] the largest
+  Vec3 at{0, 0, 0};    ///< [m] the point of `from` where it is reached
+  int label = 0;       ///< of a face of `from` at that point
+  double mean = 0;     ///< [m] over the vertices and face centroids of `from`
+};
+SurfaceGap farthest_point(const SurfaceMesh& from, const SurfaceMesh& to);
+
 /// The face of `moved` that does not wear (FaceRole other than wearing) whose centroid lies
 /// farthest from the surface `original`: how far an evolution of the worn surface moved what
 /// must stay where it was. distance 0 and face -1 when every face wears.

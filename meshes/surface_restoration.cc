@@ -75,8 +75,13 @@ ChordRestoration chord_restoring_offset(SurfaceMesh& m, const SurfaceMesh& refer
   const auto normal = vertex_normals(m);
   const auto face_normal = face_normals(m);
   ChordRestoration r;
-  std::vector<char> free = movable;
-  for (;;) {
+  SurfaceMesh taken;
+  const int rings = hold_still_around_folds(m, [&](const std::vector<char>& held) {
+    std::vector<char> free = movable;
+    for (std::size_t f = 0; f < m.n_faces(); ++f)
+      if (held[f])
+        for (const auto v : m.triangles[f])
+          free[v] = 0;
     SurfaceMesh candidate = m;
     for (std::size_t v = 0; v < m.n_vertices(); ++v)
       if (free[v] && weight[v] > 0)
@@ -90,23 +95,21 @@ ChordRestoration chord_restoring_offset(SurfaceMesh& m, const SurfaceMesh& refer
         candidate, outward, enclosed_volume(candidate) - target, &achieved, 1e-6);
     for (std::size_t v = 0; v < m.n_vertices(); ++v)
       candidate.vertices[v] += outward[v] * offset;
-    const auto q = surface_quality(candidate, &face_normal);
+    auto q = surface_quality(candidate, &face_normal);
     if (q.valid()) {
-      m = std::move(candidate);
+      taken = std::move(candidate);
       r.uniform_offset = offset;
-      return r;
     }
-    if (r.held_rings == 8) {
-      r.volume_not_restored = enclosed_volume(m) - target;
-      return r;
-    }
-    r.held_rings = r.held_rings == 0 ? 1 : 2 * r.held_rings;
-    const auto around = faces_within_rings(m, q.bad_faces, r.held_rings);
-    for (std::size_t f = 0; f < m.n_faces(); ++f)
-      if (around[f])
-        for (const auto v : m.triangles[f])
-          free[v] = 0;
+    return q;
+  });
+  if (rings < 0) {
+    r.held_rings = 8;
+    r.volume_not_restored = enclosed_volume(m) - target;
+    return r;
   }
+  r.held_rings = rings;
+  m = std::move(taken);
+  return r;
 }
 
 // Where the front has not reached (every corner of a vertex's grid cell has psi = phi), and on

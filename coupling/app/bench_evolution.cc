@@ -16,8 +16,13 @@
 //                  or out of the flow) to the surface before the stage; 0 where it stays
 //   worst triangle the smallest triangle quality of the surface handed on (meshes/mesh_quality.h)
 //   min scaled Jacobian of the volume mesh handed on
+//   surface faces  of the surface handed on (the implicit step's target edge sets it)
+// An evolution that takes implicit steps runs once per target edge of --target-edge and flat
+// edge of --flat-edge (lists): the distances between their surfaces say what a coarser new
+// surface costs in shape.
 // and between each pair that completed, the two-sided sampled Hausdorff distance of their
-// worn surfaces (meshes::one_sided_distance both ways): how far the evolutions disagree.
+// worn surfaces (meshes::farthest_point both ways), where it is reached, and the mean
+// distance of the sampled points: how far the evolutions disagree.
 // An evolution that gives up (the explicit recession where it still folds at its smallest
 // increment) is reported with its message, not as a failure of the benchmark.
 #include "coupling/app/bench_evolution.h"
@@ -52,6 +57,8 @@ struct BenchEvolutionArguments {
   double depth = 20e-6;               ///< [m] the generated stage's depth on a flat top
   std::vector<std::string> evolutions{"explicit only", "explicit then implicit", "implicit"};
   std::string directory = "output/bench-evolution";
+  meshes::ImplicitRecessionParameters implicit; ///< --grid-spacing
+  std::vector<double> target_edges, flat_edges; ///< [m] --target-edge, --flat-edge
 };
 
 double positive(const std::string& option, const std::string& value, double upper) {
@@ -74,6 +81,8 @@ BenchEvolutionArguments bench_evolution_arguments(const std::vector<std::string>
   a.state_sizes.mesh_size_bottom = 0.005;
   a.state_sizes.curvature_refinement = false;
   a.sample.mesh_size = 0.002; // cases/quick's wear-face mesh
+  const fem::FemParameters defaults;
+  a.implicit = defaults.worn_sample.implicit;
   for (std::size_t k = 0; k < args.size(); k += 2) {
     if (k + 1 >= args.size())
       throw std::invalid_argument("wearsim bench evolution: option " + args[k] + " needs a value");
@@ -105,11 +114,39 @@ BenchEvolutionArguments bench_evolution_arguments(const std::vector<std::string>
         a.evolutions.push_back(name);
         b = e + 1;
       }
+    } else if (f == "--grid-spacing")
+      a.implicit.spacing = positive(f, v, 0.005);
+    else if (f == "--flat-edge" || f == "--target-edge") {
+      auto& list = f == "--flat-edge" ? a.flat_edges : a.target_edges;
+      for (std::size_t b = 0; b <= v.size();) {
+        const std::size_t e = std::min(v.find(',', b), v.size());
+        const std::string x = v.substr(b, e - b);
+        list.push_back(f == "--flat-edge" && x == "0" ? 0.0 : positive(f, x, 0.01));
+        b = e + 1;
+      }
     } else if (f == "--output")
       a.directory = v;
     else
       throw std::invalid_argument("wearsim bench evolution: unknown option '" + f + "'");
   }
+  if (a.target_edges.empty())
+    a.target_edges.push_back(a.implicit.target_edge);
+  if (a.flat_edges.empty())
+    a.flat_edges.push_back(a.implicit.flat_edge);
+  for (const double edge : a.target_edges)
+    for (const double flat : a.flat_edges) {
+      fem::FemParameters checked; // the implicit step's parameters, checked as a case's are
+      checked.worn_sample.implicit = a.implicit;
+      checked.worn_sample.implicit.target_edge = edge;
+      checked.worn_sample.implicit.flat_edge = flat;
+      try {
+        fem::validate(checked);
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(
+            "wearsim bench evolution: --grid-spacing, --target-edge, --flat-edge: " +
+            std::string(e.what()));
+      }
+    }
   return a;
 }
 
@@ -160,12 +197,15 @@ struct Outcome {
   int unworn_offset_label = 0;
 };
 
-Outcome run_evolution(const Workload& w, const std::string& name, const std::string& dir) {
+// `label` names the outcome (the evolution, and its target edge where several are run).
+Outcome run_evolution(const Workload& w, const std::string& name, const std::string& label,
+                      const meshes::ImplicitRecessionParameters& implicit, const std::string& dir) {
   Outcome o;
-  o.evolution = name;
+  o.evolution = label;
   fem::FemParameters fp;
+  fp.worn_sample.implicit = implicit;
   fp.surface_evolution = name; // worn_sample_parameters() sets the evolution from its name
-  std::string sub = name;
+  std::string sub = label;
   std::replace(sub.begin(), sub.end(), ' ', '-');
   meshes::ensure_directory(dir + "/" + sub);
   fem::WornSample sample(w.state, fem::worn_sample_parameters(fp, w.sizes, dir + "/" + sub));
@@ -201,20 +241,22 @@ void report(const Workload& w, const std::vector<Outcome>& outcomes, std::ostrea
   out << "workload: " << w.description << ": " << w.state.surface.n_faces() << " faces, "
       << w.state.tetrahedra.size() / 4 << " tetrahedra, " << format("%.2f", asked * 1e9)
       << " mm^3 asked\n";
-  out << format("%-24s %9s %5s %7s %8s %9s %11s %10s %9s %8s\n", "evolution", "time [s]", "incr",
-                "remesh", "implicit", "implicit", "volume", "unworn", "worst", "min");
-  out << format("%-24s %9s %5s %7s %8s %9s %11s %10s %9s %8s\n", "", "", "", "(1st)", "steps",
-                "[s]", "error", "off [mm]", "triangle", "Jacobian");
+  out << format("%-24s %9s %5s %7s %8s %9s %11s %10s %9s %8s %8s\n", "evolution", "time [s]",
+                "incr", "remesh", "implicit", "implicit", "volume", "unworn", "worst", "min",
+                "surface");
+  out << format("%-24s %9s %5s %7s %8s %9s %11s %10s %9s %8s %8s\n", "", "", "", "(1st)", "steps",
+                "[s]", "error", "off [mm]", "triangle", "Jacobian", "faces");
   for (const auto& o : outcomes) {
     if (!o.surface) {
       out << format("%-24s %9.1f  gave up: %s\n", o.evolution.c_str(), o.seconds, o.error.c_str());
       continue;
     }
     const auto& r = o.report;
-    out << format("%-24s %9.1f %5d %3d (%d) %8d %9.1f %11.2e %10.4f %9.4f %8.4f\n",
+    out << format("%-24s %9.1f %5d %3d (%d) %8d %9.1f %11.2e %10.4f %9.4f %8.4f %8zu\n",
                   o.evolution.c_str(), o.seconds, r.increments, r.n_remeshes,
                   r.n_first_attempt_remeshes, r.n_implicit, r.implicit_seconds, o.volume_error,
-                  o.unworn_offset * 1e3, o.worst_triangle, r.quality.min_scaled_jacobian);
+                  o.unworn_offset * 1e3, o.worst_triangle, r.quality.min_scaled_jacobian,
+                  o.surface->n_faces());
   }
   for (const auto& o : outcomes) { // where a path handed over, and why
     for (const auto& why : o.report.explicit_remesh_failures)
@@ -234,11 +276,14 @@ void report(const Workload& w, const std::vector<Outcome>& outcomes, std::ostrea
   for (std::size_t i = 0; i < outcomes.size(); ++i)
     for (std::size_t j = i + 1; j < outcomes.size(); ++j)
       if (outcomes[i].surface && outcomes[j].surface) {
-        const double d =
-            std::max(meshes::one_sided_distance(*outcomes[i].surface, *outcomes[j].surface),
-                     meshes::one_sided_distance(*outcomes[j].surface, *outcomes[i].surface));
-        out << format("surfaces of '%s' and '%s' apart by at most %.4f mm\n",
-                      outcomes[i].evolution.c_str(), outcomes[j].evolution.c_str(), d * 1e3);
+        const auto ij = meshes::farthest_point(*outcomes[i].surface, *outcomes[j].surface);
+        const auto ji = meshes::farthest_point(*outcomes[j].surface, *outcomes[i].surface);
+        const auto& far = ij.distance >= ji.distance ? ij : ji;
+        out << format("surfaces of '%s' and '%s' apart by at most %.4f mm (%s, at (%.2f, %.2f, "
+                      "%.2f) mm), by %.4f mm on average\n",
+                      outcomes[i].evolution.c_str(), outcomes[j].evolution.c_str(),
+                      far.distance * 1e3, meshes::label::name(far.label).c_str(), far.at.x * 1e3,
+                      far.at.y * 1e3, far.at.z * 1e3, 0.5 * (ij.mean + ji.mean) * 1e3);
       }
 }
 
@@ -248,12 +293,25 @@ int run_bench_evolution(const std::vector<std::string>& args, std::ostream& out)
   const BenchEvolutionArguments a = bench_evolution_arguments(args);
   meshes::ensure_directory(a.directory);
   out << "machine: " << std::thread::hardware_concurrency() << " hardware threads\n";
+  out << "implicit step: grid spacing " << format("%g", a.implicit.spacing * 1e3) << " mm\n";
   const Workload w = a.state.empty() ? sample_workload(a) : state_workload(a);
   std::vector<Outcome> outcomes;
   for (const auto& name : a.evolutions) {
-    outcomes.push_back(run_evolution(w, name, a.directory));
-    out << "  " << name << ": " << format("%.1f s", outcomes.back().seconds)
-        << (outcomes.back().surface ? "" : ", gave up") << std::endl;
+    const bool implicit_steps =
+        fem::surface_evolution(name) != fem::SurfaceEvolution::explicit_only;
+    const std::size_t n_flat = a.flat_edges.size();
+    for (std::size_t k = 0; k < (implicit_steps ? a.target_edges.size() * n_flat : 1); ++k) {
+      auto implicit = a.implicit;
+      implicit.target_edge = a.target_edges[k / n_flat];
+      implicit.flat_edge = a.flat_edges[k % n_flat];
+      std::string label = name;
+      if (implicit_steps)
+        label += format(" %g mm", implicit.target_edge * 1e3) +
+                 (implicit.flat_edge > 0 ? format(" flat %g", implicit.flat_edge * 1e3) : "");
+      outcomes.push_back(run_evolution(w, name, label, implicit, a.directory));
+      out << "  " << label << ": " << format("%.1f s", outcomes.back().seconds)
+          << (outcomes.back().surface ? "" : ", gave up") << std::endl;
+    }
   }
   report(w, outcomes, out);
   return 0;

@@ -76,6 +76,7 @@ void usage(std::ostream& out) {
          "                           solves, mesh motion, remeshing\n"
          "  bench evolution [--state FILE] [--scale F] [--sample convex|plain] [--depth D]\n"
          "                  [--mesh-size H] [--evolutions explicit-only,implicit,...]\n"
+         "                  [--grid-spacing G] [--target-edge E1,E2,...] [--flat-edge F1,...]\n"
          "                  [--output DIR]\n"
          "                           one stage of wear by each surface evolution on the same\n"
          "                           sample (a worn stage file, or the unworn sample): time,\n"

@@ -145,6 +145,9 @@ std::vector<Row> out_of_range_rows() {
        "subsection FEM\n subsection Implicit recession\n  set Target edge = 0.3e-3\n "
        "end\nend\n",
        {"FEM/Implicit recession/Target edge"}},
+      {"a flat edge shorter than the target edge",
+       "subsection FEM\n subsection Implicit recession\n  set Flat edge = 0.8e-3\n end\nend\n",
+       {"FEM/Implicit recession/Flat edge"}},
       {"an unknown surface evolution",
        "subsection FEM\n set Surface evolution = level set\nend\n",
        {"Surface evolution"}},

@@ -4,6 +4,8 @@
 // boundaries or as curves, and without either they are cut.
 #include "meshes/isotropic_remeshing.h"
 #include "meshes/mesh_quality.h"
+#include "meshes/surface_decimation.h"
+#include "meshes/surface_locator.h"
 #include "test_shapes.h"
 
 #include <catch2/catch.hpp>
@@ -53,6 +55,11 @@ TEST_CASE("isotropic remeshing keeps a box's planes, corners and label areas",
     for (std::size_t f = 0; f < m.n_faces(); ++f)
       m.face_labels[f] = int(f / 2) + 1; // one label per side
     std::vector<std::pair<std::uint32_t, std::uint32_t>> curves;
+    const auto normal = face_normals(m);
+    for (const auto& [edge, faces] : edge_faces(m)) // the block's vertical edges (one label)
+      if (m.face_labels[faces[0]] == m.face_labels[faces[1]] &&
+          dot(normal[faces[0]], normal[faces[1]]) < 0.5)
+        curves.push_back(edge);
     const auto r = isotropic_remesh(m, curves, p);
     INFO(r.n_faces_after << " faces, worst quality " << r.min_quality_after);
     CHECK(check_closed(m).closed());
@@ -91,4 +98,57 @@ TEST_CASE("isotropic remeshing keeps a box's planes, corners and label areas",
     // Its vertices are projected onto the box, but triangles span the edges and cut them.
     CHECK(enclosed_volume(m) < a * a * a * (1 - 1e-4));
   }
+}
+
+TEST_CASE("flat regions coarsened after an isotropic remeshing keep a narrow bump that long "
+          "edges cut",
+          "[isotropic_remeshing]") {
+  // A 20 x 20 x 5 mm block whose top carries a bump h cos^2(pi r / (2 r0)), r0 = 1.5 mm,
+  // h = 1.5 mm (a worn element's remnant), on a 0.25 mm grid. Remeshed at 2 mm edges the
+  // bump's faces are collapsed into a few long ones that cut through it. Remeshed at 1 mm and
+  // then coarsened where flat (flat_region_coarsening: edges up to 2 mm, 0.125 mm error, the
+  // implicit recession's flat edge at its 0.25 mm grid) the bump keeps its 1 mm triangles and
+  // its shape, and the flat top, sides and bottom take long ones: far fewer faces than 1 mm.
+  constexpr double l = 20e-3, z0 = 5e-3, r0 = 1.5e-3, h = 1.5e-3;
+  const auto top = [&](double x, double y) {
+    const double r = std::hypot(x - l / 2, y - l / 2);
+    const double c = std::cos(M_PI * r / (2 * r0));
+    return r < r0 ? z0 + h * c * c : z0;
+  };
+  const auto block =
+      testing::height_field_block(80, 80, l, l, top, [](double, double) { return label::base; });
+  const auto remeshed = [&](double target, double flat) {
+    auto m = block;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> curves;
+    const auto normal = face_normals(m);
+    for (const auto& [edge, faces] : edge_faces(m)) // the block's vertical edges (one label)
+      if (m.face_labels[faces[0]] == m.face_labels[faces[1]] &&
+          dot(normal[faces[0]], normal[faces[1]]) < 0.5)
+        curves.push_back(edge);
+    IsotropicRemeshParameters p;
+    p.target_edge = target;
+    isotropic_remesh(m, curves, p);
+    if (flat > 0)
+      decimate(m, flat_region_coarsening(flat, 0.125e-3));
+    INFO("target " << target << ", flat " << flat << ": " << m.n_faces() << " faces");
+    CHECK(check_closed(m).closed());
+    CHECK(surface_quality(m).valid());
+    return m;
+  };
+  const auto coarse = remeshed(2e-3, 0), fine = remeshed(1e-3, 0), adaptive = remeshed(1e-3, 2e-3);
+  // How far the block's own vertices (the bump at 0.25 mm) lie from each remeshed surface.
+  const double off_coarse = farthest_point(block, coarse).distance,
+               off_fine = farthest_point(block, fine).distance,
+               off_adaptive = farthest_point(block, adaptive).distance;
+  INFO("block off the surfaces at 2 mm: "
+       << off_coarse * 1e3 << " mm, 1 mm: " << off_fine * 1e3 << " mm, 1 mm coarsened: "
+       << off_adaptive * 1e3 << " mm; faces " << coarse.n_faces() << ", " << fine.n_faces() << ", "
+       << adaptive.n_faces() << "; worst quality " << min_triangle_quality(coarse) << ", "
+       << min_triangle_quality(fine) << ", " << min_triangle_quality(adaptive));
+  CHECK(off_adaptive < off_fine + 0.01e-3); // the bump's 1 mm triangles kept
+  CHECK(off_coarse > 1.5 * off_fine);
+  CHECK(adaptive.n_faces() < 0.5 * fine.n_faces());
+  CHECK(min_triangle_quality(adaptive) > 0.3);
+  // Volume: the coarsening keeps vertices in place, so flat regions lose nothing.
+  CHECK(std::abs(enclosed_volume(adaptive) - enclosed_volume(fine)) < 1e-3 * enclosed_volume(fine));
 }
