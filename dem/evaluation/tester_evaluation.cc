@@ -12,6 +12,11 @@
 //     cover the footprint once (a hexagonal layer of the mean diameter)
 //   bottom layer: particles above the footprint whose gap to the wear surface is below one
 //     layer diameter; their |v| and |omega| pooled over all samples of the revolution.
+// A grain is a sphere or a clump's body (BedGrains): a body is over the footprint when its
+// centre of mass is, counts once, with its centre's speed and its angular speed, its gap the
+// least over its members (the lowest point above the surface under that member) and its
+// top the highest member point; so the bottom layer is the bodies one of whose members lies
+// within a layer diameter of the surface, their mean |v_centre| and |omega|.
 // Coefficient of variation C_v = sigma / mu over the samples of a revolution; the run is
 // steady once C_v of speed, bed height and wear rate stay below the threshold for the given
 // number of consecutive revolutions.
@@ -23,6 +28,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace wear::dem {
@@ -187,13 +193,73 @@ void TesterEvaluation::resume_samples(const RevolutionSamples& samples) {
   open_ = samples;
 }
 
-void TesterEvaluation::sample(const Particles& p, const meshes::SurfaceMesh& placed, double time,
-                              const std::vector<double>& removed,
+void BedGrains::add(const Vec3& x, double v, double w, double g, double t) {
+  centre.push_back(x);
+  speed.push_back(v);
+  spin.push_back(w);
+  gap.push_back(g);
+  top.push_back(t);
+}
+
+std::vector<double> BedGrains::packed() const {
+  std::vector<double> out;
+  out.reserve(7 * size());
+  for (std::size_t i = 0; i < size(); ++i)
+    out.insert(out.end(),
+               {centre[i].x, centre[i].y, centre[i].z, speed[i], spin[i], gap[i], top[i]});
+  return out;
+}
+
+void BedGrains::append_packed(const std::vector<double>& values) {
+  for (std::size_t k = 0; k + 7 <= values.size(); k += 7) {
+    const double* v = values.data() + k;
+    add({v[0], v[1], v[2]}, v[3], v[4], v[5], v[6]);
+  }
+}
+
+BedGrains TesterEvaluation::grains(const Particles& p, const Clumps* clumps,
+                                   const meshes::SurfaceMesh& placed) {
+  update_height_map(placed);
+  BedGrains g;
+  std::vector<char> member;
+  if (clumps && !clumps->empty()) {
+    member.assign(p.n_real, 0);
+    for (const auto slot : clumps->member_slot)
+      if (slot < p.n_real)
+        member[slot] = 1;
+  }
+  for (std::size_t i = 0; i < p.n_real; ++i) {
+    if ((!member.empty() && member[i]) || !over_sample(p.position[i]))
+      continue;
+    const Vec3 x = frame_.point_to_sample(p.position[i]);
+    g.add(x, meshes::norm(p.velocity[i]), meshes::norm(p.angular_velocity[i]),
+          x.z - p.radius[i] - surface_height(x.x, x.y), x.z + p.radius[i]);
+  }
+  if (member.empty())
+    return g;
+  for (std::size_t b = 0; b < clumps->size(); ++b) {
+    if (!over_sample(clumps->position[b]))
+      continue;
+    double gap = std::numeric_limits<double>::infinity(), top = -gap;
+    Vec3 spin{0, 0, 0};
+    for (auto k = clumps->member_begin[b]; k < clumps->member_begin[b + 1]; ++k) {
+      const std::uint32_t i = clumps->member_slot[k];
+      const Vec3 x = frame_.point_to_sample(p.position[i]);
+      gap = std::min(gap, x.z - p.radius[i] - surface_height(x.x, x.y));
+      top = std::max(top, x.z + p.radius[i]);
+      spin = p.angular_velocity[i]; // every member carries the body's
+    }
+    g.add(frame_.point_to_sample(clumps->position[b]), meshes::norm(clumps->velocity[b]),
+          meshes::norm(spin), gap, top);
+  }
+  return g;
+}
+
+void TesterEvaluation::sample(const BedGrains& g, double time, const std::vector<double>& removed,
                               const std::vector<double>& normal_impulse) {
   const double dt = time - open_.last_time;
   if (!(dt > 0))
     return;
-  update_height_map(placed);
   const std::size_t nf = removed.size();
   if (open_.last_removed.empty()) {
     open_.last_removed.assign(nf, 0);
@@ -220,17 +286,13 @@ void TesterEvaluation::sample(const Particles& p, const meshes::SurfaceMesh& pla
   const double L = geometry_.length, W = geometry_.width;
   double speed = 0, n_over = 0, n_bottom = 0;
   std::vector<double> tops;
-  for (std::size_t i = 0; i < p.n_real; ++i) {
-    if (!over_sample(p.position[i]))
-      continue;
-    const Vec3 x = frame_.point_to_sample(p.position[i]);
-    const double v = meshes::norm(p.velocity[i]);
+  for (std::size_t i = 0; i < g.size(); ++i) {
+    const double v = g.speed[i];
     speed += v;
     n_over += 1;
-    tops.push_back(x.z + p.radius[i]);
-    const double gap = x.z - p.radius[i] - surface_height(x.x, x.y);
-    if (gap < layer_diameter_) {
-      const double w = meshes::norm(p.angular_velocity[i]);
+    tops.push_back(g.top[i]);
+    if (g.gap[i] < layer_diameter_) {
+      const double w = g.spin[i];
       n_bottom += 1;
       open_.bottom_v += v;
       open_.bottom_v2 += v * v;

@@ -3,6 +3,7 @@
 // (total, column, convex element), normal force on the sample, bottom-layer speeds, the
 // coefficients of variation that judge steady state, and least-squares fits of wear volume
 // vs revolutions.
+#include "dem/engine/clumps.h"
 #include "dem/engine/particles.h"
 #include "meshes/geometry_parameters.h"
 #include "meshes/sample_frame.h"
@@ -77,6 +78,24 @@ struct RevolutionSamples {
   double bottom_w = 0, bottom_w2 = 0;             ///< [rad/s], [rad^2/s^2] sums of their spins
 };
 
+/// The grains over the sample as the evaluation reads them: each sphere, and each clump as
+/// one body, in the sample's frame. A body's centre is its centre of mass, its speed that
+/// centre's, its spin the body's angular speed |omega| (space frame, which is the tester's and
+/// the sample's: the sample stands still), its gap the least over its members of the
+/// member's lowest point above the wear surface under it, its top the highest member point.
+struct BedGrains {
+  std::vector<Vec3> centre;  ///< [m] sample frame
+  std::vector<double> speed; ///< [m/s]
+  std::vector<double> spin;  ///< [rad/s]
+  std::vector<double> gap;   ///< [m] above the wear surface
+  std::vector<double> top;   ///< [m] sample frame z of the highest point
+  std::size_t size() const { return speed.size(); }
+  void add(const Vec3& x, double v, double w, double g, double t);
+  /// Seven values per grain, in order, for a gather over ranks; and back (appended).
+  std::vector<double> packed() const;
+  void append_packed(const std::vector<double>& values);
+};
+
 class TesterEvaluation {
 public:
   /// `sample`: the sample surface in its own frame (face order as in the DEM wall).
@@ -94,11 +113,15 @@ public:
   const std::vector<int>& face_column() const { return face_column_; }
 
   void begin_revolution(double time);
-  /// One sample during the revolution. `placed` is the current wearing wall in the tester
-  /// frame; `removed` and `normal_impulse` are per-face window integrals since the start of
-  /// the revolution ([m^3], [N s]).
-  void sample(const Particles& p, const meshes::SurfaceMesh& placed, double time,
-              const std::vector<double>& removed, const std::vector<double>& normal_impulse);
+  /// One sample during the revolution, of the grains over the sample (grains(); over ranks,
+  /// every rank's in rank order); `removed` and `normal_impulse` are per-face window
+  /// integrals since the start of the revolution ([m^3], [N s]).
+  void sample(const BedGrains& grains, double time, const std::vector<double>& removed,
+              const std::vector<double>& normal_impulse);
+  /// The grains of `p` over the sample (over_sample of a sphere's or a body's centre):
+  /// spheres as themselves, the members of `clumps` (when given) as their bodies. `placed` is
+  /// the current wearing wall in the tester frame (the gaps are taken to it).
+  BedGrains grains(const Particles& p, const Clumps* clumps, const meshes::SurfaceMesh& placed);
   /// True when a particle centred at x (tester frame) is one sample() counts: over the
   /// sample's footprint, above its base less 1 mm. Over ranks the tester gathers these.
   bool over_sample(const Vec3& x) const;

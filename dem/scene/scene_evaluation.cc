@@ -14,7 +14,7 @@
 // angle, the first distortion; cumulative).
 #include "dem/scene/scene_evaluation.h"
 
-#include "dem/engine/rank_states.h"
+#include "dem/engine/rank_link.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -54,16 +54,15 @@ void SceneEvaluation::observe(const SceneRun& scene, const SceneWindow& w, const
   ++open_.n_windows;
 
   const meshes::SurfaceMesh& placed = scene.walls().at(wall_).surface.mesh;
-  RankLink* link = scene.system().rank_link();
-  if (link && link->n_ranks() > 1) {
-    const Particles& p = scene.system().particles;
-    const Particles over = gather_particles(p, link, GatherTo::every_rank, [&](std::size_t i) {
-      return evaluation_.over_sample(p.position[i]);
-    });
-    evaluation_.sample(over, placed, w.t_end, open_.removed, open_.normal_impulse);
-  } else
-    evaluation_.sample(scene.system().particles, placed, w.t_end, open_.removed,
-                       open_.normal_impulse);
+  const System& system = scene.system();
+  BedGrains grains = evaluation_.grains(system.particles, &system.clumps(), placed);
+  if (RankLink* link = system.rank_link(); link && link->n_ranks() > 1) {
+    std::vector<double> all; // every rank's grains, in rank order
+    link->gather_in_rank_order(grains.packed(), all);
+    grains = BedGrains{};
+    grains.append_packed(all);
+  }
+  evaluation_.sample(grains, w.t_end, open_.removed, open_.normal_impulse);
 
   if (open_.n_windows < n_samples_)
     return;

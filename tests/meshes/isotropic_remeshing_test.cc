@@ -55,11 +55,6 @@ TEST_CASE("isotropic remeshing keeps a box's planes, corners and label areas",
     for (std::size_t f = 0; f < m.n_faces(); ++f)
       m.face_labels[f] = int(f / 2) + 1; // one label per side
     std::vector<std::pair<std::uint32_t, std::uint32_t>> curves;
-    const auto normal = face_normals(m);
-    for (const auto& [edge, faces] : edge_faces(m)) // the block's vertical edges (one label)
-      if (m.face_labels[faces[0]] == m.face_labels[faces[1]] &&
-          dot(normal[faces[0]], normal[faces[1]]) < 0.5)
-        curves.push_back(edge);
     const auto r = isotropic_remesh(m, curves, p);
     INFO(r.n_faces_after << " faces, worst quality " << r.min_quality_after);
     CHECK(check_closed(m).closed());
