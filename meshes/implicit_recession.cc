@@ -542,8 +542,8 @@ ImplicitRecession implicit_recession(const SurfaceMesh& s,
   IsotropicRemeshParameters even;
   even.target_edge = p.target_edge;
   isotropic_remesh(r.surface, curves, even);
-  if (p.flat_edge > 0) // the flat regions coarsened, the curved ones kept (flat_edge)
-    decimate(r.surface, flat_region_coarsening(p.flat_edge, p.flat_error_fraction * h));
+  if (p.flat_edge > 0) // the flat regions coarsened, the curved ones and the curves kept
+    coarsen_flat_regions(r.surface, curves, p.flat_edge, p.flat_error_fraction * h);
   const auto patch_of_face = nearest_labels(coarse_patches, r.surface);
   const auto restored = snap_untouched_vertices(s, patch, phi, psi, patch_of_face, r.surface);
   r.n_restored = std::size_t(std::count(restored.begin(), restored.end(), 1));

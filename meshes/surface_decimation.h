@@ -5,6 +5,10 @@
 // boundaries kept as curves.
 #include "meshes/surface_mesh.h"
 
+#include <cstdint>
+#include <utility>
+#include <vector>
+
 namespace wear::meshes {
 
 struct DecimationParameters {
@@ -24,6 +28,16 @@ struct DecimationReport {
   std::size_t n_collapses = 0;
   double seconds = 0;
 };
+
+/// Coarsens `m` in place where it is flat (flat_region_coarsening limits) with the edges in
+/// `curves` (vertex pairs: sharp edges inside a label, as isotropic_remesh returns them) kept
+/// as the label boundaries are: each region bounded by curves and label boundaries is
+/// coarsened as a label of its own, so no face comes to span a curve (a side's vertical
+/// corner cut into a face normal to no axis). The faces keep their labels.
+DecimationReport
+coarsen_flat_regions(SurfaceMesh& m,
+                     const std::vector<std::pair<std::uint32_t, std::uint32_t>>& curves,
+                     double max_edge, double max_error);
 
 /// The limits that coarsen an isotropic surface where it is flat and keep it where it curves:
 /// edges up to `max_edge` [m], a kept vertex within `max_error` [m] (root mean square) of the
