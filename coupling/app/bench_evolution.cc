@@ -6,7 +6,8 @@
 //     removed volume per face of one of its stages, scaled by --scale (the wear-out's stage
 //     24, tests/data/wear-out/stage23.h5, is the surface on which the explicit recession
 //     folds), or
-//   - the unworn reference sample (--sample convex|plain, --mesh-size) with the pattern of
+//   - the unworn reference sample (--sample convex|plain, --mesh-size; its sides free, or held
+//     as in the holder with --holder frame) with the pattern of
 //     `wearsim bench fem`: depth x n_z^2 per wearing face (tops and flats most, flanks less;
 //     --depth, default 20 um, a stage of the default case is about 1 um).
 // Each evolution applies the same stage to its own fresh copy of the sample
@@ -53,6 +54,7 @@ struct BenchEvolutionArguments {
   std::string state;                  ///< a worn stage file, or empty: the generated sample
   double scale = 1;                   ///< [-] on the state's removed volume
   meshes::SampleGeometry sample;      ///< the generated sample (convex unless --sample plain)
+  bool held_sides = false;            ///< --holder frame: its sides held, as in the holder
   meshes::SampleGeometry state_sizes; ///< remesh sizes of the state (the wear-out case's)
   double depth = 20e-6;               ///< [m] the generated stage's depth on a flat top
   std::vector<std::string> evolutions{"explicit only", "explicit then implicit", "implicit"};
@@ -95,6 +97,10 @@ BenchEvolutionArguments bench_evolution_arguments(const std::vector<std::string>
       if (v != "convex" && v != "plain")
         throw std::invalid_argument("wearsim bench evolution: --sample is convex or plain");
       a.sample.convex = v == "convex";
+    } else if (f == "--holder") {
+      if (v != "frame" && v != "none")
+        throw std::invalid_argument("wearsim bench evolution: --holder is frame or none");
+      a.held_sides = v == "frame";
     } else if (f == "--mesh-size")
       a.sample.mesh_size = a.state_sizes.mesh_size = positive(f, v, 0.01);
     else if (f == "--depth")
@@ -169,7 +175,8 @@ Workload state_workload(const BenchEvolutionArguments& a) {
 
 Workload sample_workload(const BenchEvolutionArguments& a) {
   const std::string msh = a.directory + "/unworn.msh";
-  const auto generated = meshes::generate_sample(a.sample, msh);
+  auto generated = meshes::generate_sample(a.sample, msh);
+  generated.surface.roles = meshes::sample_roles(a.held_sides);
   const fem::FemParameters defaults;
   fem::WornSample unworn(msh, generated.surface,
                          fem::worn_sample_parameters(defaults, a.sample, a.directory));
@@ -182,7 +189,8 @@ Workload sample_workload(const BenchEvolutionArguments& a) {
     if (s.face_wears(f))
       w.removed[f] = a.depth * normal[f].z * normal[f].z * area[f];
   w.description =
-      std::string(a.sample.convex ? "convex" : "plain") + " sample, " +
+      std::string(a.sample.convex ? "convex" : "plain") + " sample" +
+      (a.held_sides ? " (sides held)" : "") + ", " +
       format("%g mm mesh, %g um x n_z^2 a face", a.sample.mesh_size * 1e3, a.depth * 1e6);
   return w;
 }

@@ -75,6 +75,7 @@ void usage(std::ostream& out) {
          "                           FEM benchmark on the reference convex sample: stress\n"
          "                           solves, mesh motion, remeshing\n"
          "  bench evolution [--state FILE] [--scale F] [--sample convex|plain] [--depth D]\n"
+         "                  [--holder frame|none]\n"
          "                  [--mesh-size H] [--evolutions explicit-only,implicit,...]\n"
          "                  [--grid-spacing G] [--target-edge E1,E2,...] [--flat-edge F1,...]\n"
          "                  [--output DIR]\n"
