@@ -280,24 +280,11 @@ void merge_label_islands(SurfaceMesh& m, double fraction) {
 // Patches of the old surface: faces of one label joined across edges where their normals turn
 // by less than the feature angle (union-find).
 std::vector<int> old_patches(const SurfaceMesh& s, double feature_angle_deg) {
-  std::vector<int> parent(s.n_faces());
-  for (std::size_t f = 0; f < parent.size(); ++f)
-    parent[f] = int(f);
-  const auto root = [&](int f) {
-    while (parent[std::size_t(f)] != f)
-      f = parent[std::size_t(f)] = parent[std::size_t(parent[std::size_t(f)])];
-    return f;
-  };
   const auto normal = face_normals(s);
   const double cos_feature = std::cos(feature_angle_deg * 3.14159265358979323846 / 180);
-  for (const auto& [edge, faces] : edge_faces(s))
-    if (faces.size() == 2 && s.face_labels[faces[0]] == s.face_labels[faces[1]] &&
-        dot(normal[faces[0]], normal[faces[1]]) >= cos_feature)
-      parent[std::size_t(root(int(faces[0])))] = root(int(faces[1]));
-  std::vector<int> patch(s.n_faces());
-  for (std::size_t f = 0; f < patch.size(); ++f)
-    patch[f] = root(int(f));
-  return patch;
+  return face_patches(s, [&](std::uint32_t f, std::uint32_t g, auto) {
+    return s.face_labels[f] == s.face_labels[g] && dot(normal[f], normal[g]) >= cos_feature;
+  });
 }
 
 // The edges between two patches of one label (faces labelled by patch, `label_of_patch`) where

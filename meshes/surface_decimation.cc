@@ -304,37 +304,26 @@ DecimationReport
 coarsen_flat_regions(SurfaceMesh& m,
                      const std::vector<std::pair<std::uint32_t, std::uint32_t>>& curves,
                      double max_edge, double max_error) {
-  // Regions: faces joined across edges that are neither label boundaries nor curves, found
-  // by a flood fill; each becomes a label of its own for the decimation, which keeps label
-  // boundaries (a boundary vertex moves only along its boundary, a corner never).
+  // Regions: faces joined across edges that are neither label boundaries nor curves; each
+  // becomes a label of its own for the decimation, which keeps label boundaries (a boundary
+  // vertex moves only along its boundary, a corner never).
   std::vector<std::pair<std::uint32_t, std::uint32_t>> cut(curves);
   for (auto& e : cut)
     e = std::minmax(e.first, e.second);
   std::sort(cut.begin(), cut.end());
-  std::vector<std::vector<std::uint32_t>> across(m.n_faces());
-  for (const auto& [edge, faces] : edge_faces(m))
-    if (faces.size() == 2 && m.face_labels[faces[0]] == m.face_labels[faces[1]] &&
-        !std::binary_search(cut.begin(), cut.end(), edge)) {
-      across[faces[0]].push_back(faces[1]);
-      across[faces[1]].push_back(faces[0]);
+  const auto patch = face_patches(m, [&](std::uint32_t f, std::uint32_t g, const auto& edge) {
+    return m.face_labels[f] == m.face_labels[g] &&
+           !std::binary_search(cut.begin(), cut.end(), edge);
+  });
+  // Dense region ids in the order of the regions' first faces.
+  std::vector<int> region(m.n_faces()), id_of_patch(m.n_faces(), -1), label_of_region;
+  for (std::size_t f = 0; f < m.n_faces(); ++f) {
+    int& id = id_of_patch[std::size_t(patch[f])];
+    if (id < 0) {
+      id = int(label_of_region.size());
+      label_of_region.push_back(m.face_labels[f]);
     }
-  std::vector<int> region(m.n_faces(), -1), label_of_region;
-  for (std::size_t seed = 0; seed < m.n_faces(); ++seed) {
-    if (region[seed] >= 0)
-      continue;
-    const int id = int(label_of_region.size());
-    label_of_region.push_back(m.face_labels[seed]);
-    std::vector<std::uint32_t> front{std::uint32_t(seed)};
-    region[seed] = id;
-    while (!front.empty()) {
-      const auto f = front.back();
-      front.pop_back();
-      for (const auto g : across[f])
-        if (region[g] < 0) {
-          region[g] = id;
-          front.push_back(g);
-        }
-    }
+    region[f] = id;
   }
   m.face_labels = region;
   const DecimationReport r = decimate(m, flat_region_coarsening(max_edge, max_error));

@@ -220,6 +220,27 @@ edge_faces(const SurfaceMesh& m) {
   return e;
 }
 
+std::vector<int>
+face_patches(const SurfaceMesh& m,
+             const std::function<bool(std::uint32_t, std::uint32_t,
+                                      std::pair<std::uint32_t, std::uint32_t>)>& joined) {
+  std::vector<int> parent(m.n_faces());
+  for (std::size_t f = 0; f < parent.size(); ++f)
+    parent[f] = int(f);
+  const auto root = [&](int f) {
+    while (parent[std::size_t(f)] != f)
+      f = parent[std::size_t(f)] = parent[std::size_t(parent[std::size_t(f)])];
+    return f;
+  };
+  for (const auto& [edge, faces] : edge_faces(m))
+    if (faces.size() == 2 && joined(faces[0], faces[1], edge))
+      parent[std::size_t(root(int(faces[0])))] = root(int(faces[1]));
+  std::vector<int> patch(m.n_faces());
+  for (std::size_t f = 0; f < patch.size(); ++f)
+    patch[f] = root(int(f));
+  return patch;
+}
+
 VertexFaces vertex_faces(const SurfaceMesh& m) {
   VertexFaces vf;
   vf.offsets.assign(m.n_vertices() + 1, 0);

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <utility>
@@ -123,6 +124,13 @@ double volume_above_plane(const SurfaceMesh& m, int label_id, double z0);
 /// Undirected edge (smaller vertex index first) -> faces that share it.
 std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>>
 edge_faces(const SurfaceMesh& m);
+/// Per face, its patch: faces are joined across each edge two faces share where
+/// `joined(f, g, edge)` holds (union-find; the id is a face of the patch, the same for every
+/// face of it).
+std::vector<int>
+face_patches(const SurfaceMesh& m,
+             const std::function<bool(std::uint32_t, std::uint32_t,
+                                      std::pair<std::uint32_t, std::uint32_t>)>& joined);
 /// Vertex -> faces around it (CSR: offsets has n_vertices + 1 entries).
 struct VertexFaces {
   std::vector<std::uint32_t> offsets, faces;

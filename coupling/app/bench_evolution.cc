@@ -77,6 +77,16 @@ double positive(const std::string& option, const std::string& value, double uppe
   return x;
 }
 
+std::vector<std::string> comma_separated(const std::string& v) {
+  std::vector<std::string> items;
+  for (std::size_t b = 0; b <= v.size();) {
+    const std::size_t e = std::min(v.find(',', b), v.size());
+    items.push_back(v.substr(b, e - b));
+    b = e + 1;
+  }
+  return items;
+}
+
 BenchEvolutionArguments bench_evolution_arguments(const std::vector<std::string>& args) {
   BenchEvolutionArguments a;
   a.state_sizes.mesh_size = 0.003; // cases/wear-out: the stage-24 file's sizes
@@ -107,9 +117,7 @@ BenchEvolutionArguments bench_evolution_arguments(const std::vector<std::string>
       a.depth = positive(f, v, 0.005);
     else if (f == "--evolutions") {
       a.evolutions.clear();
-      for (std::size_t b = 0; b <= v.size();) {
-        const std::size_t e = std::min(v.find(',', b), v.size());
-        std::string name = v.substr(b, e - b);
+      for (std::string name : comma_separated(v)) {
         std::replace(name.begin(), name.end(), '-', ' ');
         try {
           fem::surface_evolution(name);
@@ -118,18 +126,13 @@ BenchEvolutionArguments bench_evolution_arguments(const std::vector<std::string>
                                       std::string(e.what()));
         }
         a.evolutions.push_back(name);
-        b = e + 1;
       }
     } else if (f == "--grid-spacing")
       a.implicit.spacing = positive(f, v, 0.005);
     else if (f == "--flat-edge" || f == "--target-edge") {
       auto& list = f == "--flat-edge" ? a.flat_edges : a.target_edges;
-      for (std::size_t b = 0; b <= v.size();) {
-        const std::size_t e = std::min(v.find(',', b), v.size());
-        const std::string x = v.substr(b, e - b);
+      for (const std::string& x : comma_separated(v))
         list.push_back(f == "--flat-edge" && x == "0" ? 0.0 : positive(f, x, 0.01));
-        b = e + 1;
-      }
     } else if (f == "--output")
       a.directory = v;
     else
