@@ -15,12 +15,12 @@
 // factor) until each label's booked volume matches its asked one. The zero set of the
 // interpolant (marching tetrahedra) encloses exactly vol(psi < 0) of the grid; the grid's own
 // zero set of phi encloses less than the input (chords across edges and curved faces: the
-// grid loss). Where the front has not passed, the new surface is put back onto the old one
-// (vertices onto their patch, onto the old sharp edge, onto the old corner), which gives that
-// loss back there; where it has, the chords of the grid, of the coarsening and of the
-// isotropic remeshing are given back by an offset of each vertex in proportion to the gap
-// between its faces and the grid's zero set, scaled so that the new surface encloses
-// V_input - V: the volume returns where it went missing, label by label.
+// grid loss). Where the front has not reached the old surface (g >= 0 at the old point), the
+// new surface is put back onto it (vertices onto their patch, onto the old sharp edge, onto
+// the old corner), which gives that loss back there; where it has, the chords of the grid, of
+// the coarsening and of the isotropic remeshing are given back by an offset of each vertex in
+// proportion to the gap between its faces and the grid's zero set, scaled so that the new
+// surface encloses V_input - V: the volume returns where it went missing, label by label.
 //
 // Labels: a new face lies either on the old surface (phi = 0 there: it keeps the nearest old
 // face's label and patch) or on the receded front (g = 0: it takes those of the face whose
@@ -45,6 +45,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -143,29 +144,13 @@ std::vector<std::uint32_t> label_new_faces(const SurfaceMesh& old, const Surface
                                            SurfaceMesh& fresh) {
   std::vector<std::uint32_t> from_face(fresh.n_faces());
   const auto centroid = face_centroids(fresh);
-  const double h = grid.spacing();
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::int64_t f = 0; f < std::int64_t(fresh.n_faces()); ++f) {
     const Vec3 c = centroid[std::size_t(f)];
     const auto on_old = locate.nearest(c);
-    int cell[3];
-    for (int d = 0; d < 3; ++d)
-      cell[d] = std::clamp(int(std::floor((c[d] - grid.origin()[d]) / h)), 0, grid.n(d) - 2);
-    double g = std::numeric_limits<double>::infinity();
-    long from = -1;
-    for (int corner = 0; corner < 8; ++corner) {
-      const auto src = source[grid.index(cell[0] + (corner & 1), cell[1] + ((corner >> 1) & 1),
-                                         cell[2] + ((corner >> 2) & 1))];
-      if (src < 0)
-        continue;
-      const double gf = front_value(old, vertex_depth, std::size_t(src), c);
-      if (gf < g) {
-        g = gf;
-        from = src;
-      }
-    }
-    const bool front = from >= 0 && std::abs(g) < on_old.distance;
-    from_face[std::size_t(f)] = std::uint32_t(front ? from : on_old.face);
+    const auto g = front_at(old, vertex_depth, grid, source, c);
+    const bool front = g.face >= 0 && std::abs(g.value) < on_old.distance;
+    from_face[std::size_t(f)] = std::uint32_t(front ? g.face : on_old.face);
     fresh.face_labels[std::size_t(f)] = old.face_labels[from_face[std::size_t(f)]];
   }
   return from_face;
@@ -288,27 +273,28 @@ std::vector<int> old_patches(const SurfaceMesh& s, double feature_angle_deg) {
 }
 
 // The edges between two patches of one label (faces labelled by patch, `label_of_patch`) where
-// the front has not passed at any vertex of either face, or whose label is clamped or held: the
-// old sharp edges, chamfered by the grid, which the isotropic remeshing keeps as curves.
+// the front has not reached the old edge between those patches beside either end
+// (`reached_old`, at the nearest point of that edge), or whose label is clamped or held: the
+// old sharp edges, chamfered by the grid, which the isotropic remeshing keeps as curves (a
+// free side's vertical corner, up to the worn top beside it).
 std::vector<std::pair<std::uint32_t, std::uint32_t>>
 untouched_patch_boundaries(const SurfaceMesh& m, const std::map<int, int>& label_of_patch,
-                           const LevelSetGrid& phi, const LevelSetGrid& psi) {
-  std::vector<char> passed(m.n_vertices());
-  for (std::size_t v = 0; v < passed.size(); ++v)
-    passed[v] = front_passed(phi, psi, m.vertices[v]);
+                           const PatchSeams& seams,
+                           const std::function<bool(const Vec3&)>& reached_old) {
   std::vector<std::pair<std::uint32_t, std::uint32_t>> curves;
   for (const auto& [edge, faces] : edge_faces(m)) {
-    if (faces.size() != 2 || m.face_labels[faces[0]] == m.face_labels[faces[1]] ||
-        label_of_patch.at(m.face_labels[faces[0]]) != label_of_patch.at(m.face_labels[faces[1]]))
+    const int p = m.face_labels[faces[0]], q = faces.size() == 2 ? m.face_labels[faces[1]] : p;
+    if (p == q || label_of_patch.at(p) != label_of_patch.at(q))
       continue;
     // Clamped and held faces never move, nor do the sharp edges between two of their patches
     // (a corner of the holder's sides), wherever the front passed above them.
-    bool untouched = m.roles.fixed(label_of_patch.at(m.face_labels[faces[0]]));
+    bool untouched = m.roles.fixed(label_of_patch.at(p));
     if (!untouched) {
       untouched = true;
-      for (const auto f : faces)
-        for (const auto v : m.triangles[f])
-          untouched &= !passed[v];
+      for (const auto v : {edge.first, edge.second}) {
+        const auto [y, distance] = seams.nearest(p, q, m.vertices[v]);
+        untouched &= std::isfinite(distance) && !reached_old(y);
+      }
     }
     if (untouched)
       curves.push_back(edge);
@@ -505,6 +491,11 @@ ImplicitRecession implicit_recession(const SurfaceMesh& s,
   // coarsened, so that both keep the patches apart; then each patch's label is put back.
   const SurfaceLocator locate_old(s);
   const auto from_face = label_new_faces(s, locate_old, depth, psi, source, r.surface);
+  // Whether the front reached a point y of the old surface (by more than a hundredth of the
+  // spacing): where it did not, the new surface stands for the old one.
+  const auto reached_old = [&](const Vec3& y) {
+    return front_at(s, depth, psi, source, y).value < -0.01 * h;
+  };
   r.n_fine_faces = r.surface.n_faces();
   const auto patch = old_patches(s, p.feature_angle_deg);
   std::map<int, int> label_of_patch;
@@ -523,7 +514,8 @@ ImplicitRecession implicit_recession(const SurfaceMesh& s,
   // the front has not passed (the old sharp edges, chamfered by the grid) stay curves of the
   // isotropic remeshing, and the new faces find their patch on the coarse surface.
   const SurfaceMesh coarse_patches = r.surface;
-  auto curves = untouched_patch_boundaries(r.surface, label_of_patch, phi, psi);
+  const PatchSeams seams(s, patch);
+  auto curves = untouched_patch_boundaries(r.surface, label_of_patch, seams, reached_old);
   for (auto& label : r.surface.face_labels)
     label = label_of_patch.at(label);
   IsotropicRemeshParameters even;
@@ -532,7 +524,8 @@ ImplicitRecession implicit_recession(const SurfaceMesh& s,
   if (p.flat_edge > 0) // the flat regions coarsened, the curved ones and the curves kept
     coarsen_flat_regions(r.surface, curves, p.flat_edge, p.flat_error_fraction * h);
   const auto patch_of_face = nearest_labels(coarse_patches, r.surface);
-  const auto restored = snap_untouched_vertices(s, patch, phi, psi, patch_of_face, r.surface);
+  const auto restored =
+      snap_untouched_vertices(s, patch, seams, patch_of_face, reached_old, h, r.surface);
   r.n_restored = std::size_t(std::count(restored.begin(), restored.end(), 1));
   snap_fixed_vertices(s, *std::max_element(depth.begin(), depth.end()) + 2 * h, restored,
                       r.surface);

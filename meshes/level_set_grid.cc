@@ -234,6 +234,26 @@ double front_value(const SurfaceMesh& s, const std::vector<double>& vertex_depth
   return front_point(s, vertex_depth, f, x).value;
 }
 
+FrontSample front_at(const SurfaceMesh& s, const std::vector<double>& vertex_depth,
+                     const LevelSetGrid& grid, const std::vector<std::int32_t>& source,
+                     const Vec3& x) {
+  const double h = grid.spacing();
+  int cell[3];
+  for (int d = 0; d < 3; ++d)
+    cell[d] = std::clamp(int(std::floor((x[d] - grid.origin()[d]) / h)), 0, grid.n(d) - 2);
+  FrontSample best{std::numeric_limits<double>::infinity(), -1};
+  for (int corner = 0; corner < 8; ++corner) {
+    const auto f = source[grid.index(cell[0] + (corner & 1), cell[1] + ((corner >> 1) & 1),
+                                     cell[2] + ((corner >> 2) & 1))];
+    if (f < 0)
+      continue;
+    const double g = front_value(s, vertex_depth, std::size_t(f), x);
+    if (g < best.value)
+      best = {g, f};
+  }
+  return best;
+}
+
 void receding_front(const SurfaceMesh& s, const std::vector<double>& vertex_depth,
                     const std::vector<char>& receding, LevelSetGrid& grid, double band,
                     std::vector<std::int32_t>& source, std::vector<std::int32_t>& owner) {

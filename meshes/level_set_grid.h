@@ -59,6 +59,17 @@ void receding_front(const SurfaceMesh& s, const std::vector<double>& vertex_dept
                     const std::vector<char>& receding, LevelSetGrid& grid, double band,
                     std::vector<std::int32_t>& source, std::vector<std::int32_t>& owner);
 
+/// The front's value at any point x and the face it comes from: the least front_value over
+/// the faces that minimise it at the corners of x's grid cell (`source` of receding_front);
+/// value +infinity and face -1 where no face reaches that cell.
+struct FrontSample {
+  double value; ///< [m]
+  long face;
+};
+FrontSample front_at(const SurfaceMesh& s, const std::vector<double>& vertex_depth,
+                     const LevelSetGrid& grid, const std::vector<std::int32_t>& source,
+                     const Vec3& x);
+
 /// Volume of {value < 0} of the piecewise-linear interpolant on the grid's tetrahedra (each
 /// cube cut into six along its main diagonal). [m^3]
 double negative_volume(const LevelSetGrid& grid);

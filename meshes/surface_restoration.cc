@@ -1,14 +1,15 @@
 // Putting the implicit recession's new surface back where the old one stands for it
 // (docs/theory.md section 6.3, step 8), and its chords' volume back where it went missing.
 //
-// Where the front has not passed, the grid's zero set of the old surface cuts the sharp edges
-// into chamfers and the curved faces into chords; the old surface is exact there, so the new
-// vertices go back onto it: onto their own patch, onto the old edge between their two
-// patches, onto the old corner of three. Clamped and held faces never move: their vertices go
-// back onto the old clamped and held faces. Where the front has passed, the chords of the
-// triangulation against the finer surface it was made from (the grid's zero set, coarsened)
-// cut off volume where the surface is convex; each vertex moves out by the mean gap of its
-// faces to that surface, and a uniform offset makes up what is left to the asked volume.
+// Where the front has not reached the old surface (tested at the old point a vertex would go
+// to), the grid's zero set of the old surface cuts the sharp edges into chamfers and the curved
+// faces into chords; the old surface is exact there, so the new vertices go back onto it: onto
+// their own patch, onto the old edge between their two patches, onto the old corner of three.
+// Clamped and held faces never move: their vertices go back onto the old clamped and held faces.
+// Where the front has passed, the chords of the triangulation against the finer surface it was made
+// from (the grid's zero set, coarsened) cut off volume where the surface is convex; each vertex
+// moves out by the mean gap of its faces to that surface, and a uniform offset makes up what is
+// left to the asked volume.
 #include "meshes/surface_restoration.h"
 
 #include "meshes/mesh_quality.h"
@@ -20,23 +21,9 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <tuple>
 
 namespace wear::meshes {
-
-// Whether the front changed the part in the grid cell of x (a corner where psi != phi).
-bool front_passed(const LevelSetGrid& phi, const LevelSetGrid& psi, const Vec3& x) {
-  const double h = phi.spacing();
-  int cell[3];
-  for (int d = 0; d < 3; ++d)
-    cell[d] = std::clamp(int(std::floor((x[d] - phi.origin()[d]) / h)), 0, phi.n(d) - 2);
-  for (int corner = 0; corner < 8; ++corner) {
-    const auto n = phi.index(cell[0] + (corner & 1), cell[1] + ((corner >> 1) & 1),
-                             cell[2] + ((corner >> 2) & 1));
-    if (psi.value[n] != phi.value[n])
-      return true;
-  }
-  return false;
-}
 
 // The chords of a triangulation whose vertices lie on a finer curved surface (`reference`)
 // cut off volume where it is convex and add it where it is concave. Each new face's gap is
@@ -112,25 +99,43 @@ ChordRestoration chord_restoring_offset(SurfaceMesh& m, const SurfaceMesh& refer
   return r;
 }
 
-// Where the front has not reached (every corner of a vertex's grid cell has psi = phi), and on
-// the edges and corners between clamped and held patches everywhere, the new surface stands
-// for the old one, and the grid only cut its edges into chamfers and its
-// curved faces into chords: a vertex there goes back onto the old surface, onto its own patch
-// (faces of one patch only), onto the old edges between its two patches (a vertex on a patch
-// boundary), or onto the old vertex its three or more patches share (a corner). Moves longer
-// than the spacing are not made (a vertex whose patch lies elsewhere). Returns the number of
-// vertices moved.
+PatchSeams::PatchSeams(const SurfaceMesh& s, const std::vector<int>& patch) : surface_(s) {
+  for (const auto& [edge, faces] : edge_faces(s))
+    if (faces.size() == 2 && patch[faces[0]] != patch[faces[1]])
+      edges_[std::minmax(patch[faces[0]], patch[faces[1]])].push_back(edge);
+}
+
+std::pair<Vec3, double> PatchSeams::nearest(int p, int q, const Vec3& x) const {
+  std::pair<Vec3, double> best{x, std::numeric_limits<double>::infinity()};
+  const auto it = edges_.find(std::minmax(p, q));
+  if (it != edges_.end())
+    for (const auto& [a, b] : it->second) {
+      const Vec3 y = closest_point_on_segment(x, surface_.vertices[a], surface_.vertices[b]);
+      if (const double d = norm(y - x); d < best.second)
+        best = {y, d};
+    }
+  return best;
+}
+
+// Where the front has not reached the old surface, and on the edges and corners between
+// clamped and held patches everywhere, the new surface stands for the old one, and the grid
+// only cut its edges into chamfers and its curved faces into chords: a vertex there goes back
+// onto the old surface, onto its own patch (faces of one patch only), onto the old edges
+// between its two patches (a vertex on a patch boundary), or onto the old vertex its three or
+// more patches share (a corner). The test is made at the old points: a vertex goes onto
+// those of its patches whose old surface the front has not reached beside it, and only to an
+// old point the front has not reached. A vertex on the new corner of a worn top and an
+// unworn side goes onto the side (their old edge is gone with the top); one on the side's
+// vertical corner, below the worn top, onto that corner. Moves longer than `reach` are not made
+// (a vertex whose patch lies elsewhere). Returns, per vertex, whether it moved.
 std::vector<char> snap_untouched_vertices(const SurfaceMesh& old, const std::vector<int>& old_patch,
-                                          const LevelSetGrid& phi, const LevelSetGrid& psi,
+                                          const PatchSeams& seams,
                                           const std::vector<int>& patch_of_face,
-                                          SurfaceMesh& fresh) {
+                                          const std::function<bool(const Vec3&)>& reached,
+                                          double reach, SurfaceMesh& fresh) {
   SurfaceMesh by_patch = old;
   by_patch.face_labels = old_patch;
   const SurfaceLocator locate(by_patch);
-  std::map<std::pair<int, int>, std::vector<std::pair<std::uint32_t, std::uint32_t>>> seams;
-  for (const auto& [edge, faces] : edge_faces(old))
-    if (faces.size() == 2 && old_patch[faces[0]] != old_patch[faces[1]])
-      seams[std::minmax(old_patch[faces[0]], old_patch[faces[1]])].push_back(edge);
   std::vector<std::vector<int>> old_vertex_patches(old.n_vertices());
   for (std::size_t f = 0; f < old.n_faces(); ++f)
     for (const auto v : old.triangles[f]) {
@@ -149,7 +154,6 @@ std::vector<char> snap_untouched_vertices(const SurfaceMesh& old, const std::vec
   for (std::size_t f = 0; f < old.n_faces(); ++f)
     if (old.face_fixed(f))
       fixed_patch[std::size_t(old_patch[f])] = 1;
-  const double h = phi.spacing();
   std::vector<char> moved(fresh.n_vertices(), 0);
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::int64_t i = 0; i < std::int64_t(fresh.n_vertices()); ++i) {
@@ -161,32 +165,30 @@ std::vector<char> snap_untouched_vertices(const SurfaceMesh& old, const std::vec
     const bool between_fixed =
         mine.size() >= 2 && std::all_of(mine.begin(), mine.end(),
                                         [&](int q) { return fixed_patch[std::size_t(q)] != 0; });
-    if (!between_fixed && front_passed(phi, psi, x))
-      continue;
+    // The patches whose old surface the front has not reached beside x: a vertex on the
+    // corner of a worn top and an unworn side goes onto the side, not onto their old edge.
+    std::vector<int> open;
+    if (between_fixed)
+      open = mine;
+    else
+      for (const int q : mine) {
+        const auto near = locate.nearest(x, q);
+        if (near.face >= 0 && !reached(near.point))
+          open.push_back(q);
+      }
     Vec3 target = x;
     double best = std::numeric_limits<double>::infinity();
-    if (mine.size() == 1) {
-      const auto near = locate.nearest(x, mine[0]);
-      if (near.face >= 0) {
-        target = near.point;
-        best = near.distance;
-      }
-    } else if (mine.size() == 2) {
-      const auto it = seams.find(std::minmax(mine[0], mine[1]));
-      if (it != seams.end())
-        for (const auto& [a, b] : it->second) {
-          const Vec3 y = closest_point_on_segment(x, old.vertices[a], old.vertices[b]);
-          const double d = norm(y - x);
-          if (d < best) {
-            best = d;
-            target = y;
-          }
-        }
-    } else {
+    if (open.size() == 1) {
+      const auto near = locate.nearest(x, open[0]);
+      target = near.point;
+      best = near.distance;
+    } else if (open.size() == 2) {
+      std::tie(target, best) = seams.nearest(open[0], open[1], x);
+    } else if (open.size() > 2) {
       for (std::size_t w = 0; w < old.n_vertices(); ++w) {
         const auto& theirs = old_vertex_patches[w];
         bool all = true;
-        for (const int q : mine)
+        for (const int q : open)
           all &= std::find(theirs.begin(), theirs.end(), q) != theirs.end();
         const double d = norm(old.vertices[w] - x);
         if (all && d < best) {
@@ -195,7 +197,7 @@ std::vector<char> snap_untouched_vertices(const SurfaceMesh& old, const std::vec
         }
       }
     }
-    if (best < h) {
+    if (best < reach && (between_fixed || !reached(target))) {
       x = target;
       moved[v] = 1;
     }

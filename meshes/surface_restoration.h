@@ -5,22 +5,37 @@
 #include "meshes/level_set_grid.h"
 #include "meshes/surface_mesh.h"
 
+#include <functional>
+#include <map>
+#include <utility>
 #include <vector>
 
 namespace wear::meshes {
 
-/// Whether the front changed the part in the grid cell of x (a corner where psi != phi).
-bool front_passed(const LevelSetGrid& phi, const LevelSetGrid& psi, const Vec3& x);
+/// The old sharp edges between two patches of a surface (`patch` per face), by pair of
+/// patches.
+class PatchSeams {
+public:
+  PatchSeams(const SurfaceMesh& s, const std::vector<int>& patch);
+  /// The point of the edges between patches p and q nearest x, and its distance [m]
+  /// (infinity where the two patches do not meet).
+  std::pair<Vec3, double> nearest(int p, int q, const Vec3& x) const;
 
-/// Vertices of `fresh` where the front has not passed, and those between clamped and held
-/// patches only wherever it passed, go back onto the old surface `old`:
-/// onto their patch (`old_patch` per old face, `patch_of_face` per new face), onto the old
+private:
+  const SurfaceMesh& surface_;
+  std::map<std::pair<int, int>, std::vector<std::pair<std::uint32_t, std::uint32_t>>> edges_;
+};
+
+/// Vertices of `fresh` go back onto the old surface `old` where the front did not reach it
+/// (`reached`, at an old point), and those between clamped and held patches only wherever it
+/// did: onto their patch (`old_patch` per old face, `patch_of_face` per new face), onto the old
 /// edges between their two patches, or onto the old corner of their three or more; moves
-/// longer than the grid spacing are not made. Returns, per vertex, whether it was moved.
+/// longer than `reach` [m] are not made. Returns, per vertex, whether it was moved.
 std::vector<char> snap_untouched_vertices(const SurfaceMesh& old, const std::vector<int>& old_patch,
-                                          const LevelSetGrid& phi, const LevelSetGrid& psi,
+                                          const PatchSeams& seams,
                                           const std::vector<int>& patch_of_face,
-                                          SurfaceMesh& fresh);
+                                          const std::function<bool(const Vec3&)>& reached,
+                                          double reach, SurfaceMesh& fresh);
 
 /// The vertices of the clamped and held faces of `fresh` (those not `restored`) go back onto
 /// the nearest clamped or held face of `old`, when it lies within `reach` [m].

@@ -7,6 +7,7 @@
 #include "meshes/level_set_grid.h"
 #include "meshes/mesh_quality.h"
 #include "meshes/sample_generator.h"
+#include "meshes/surface_locator.h"
 #include "tests/meshes/test_shapes.h"
 
 #include <catch2/catch.hpp>
@@ -196,4 +197,35 @@ TEST_CASE("the unworn convex sample's base recedes beside the elements' feet wit
   CHECK(check_closed(r.surface).closed());
   CHECK(r.volume_not_restored == 0);
   CHECK(r.removed_volume == Approx(sum(removed)).epsilon(1e-3));
+}
+
+TEST_CASE("a worn top beside free sides that do not wear leaves the sides where they were",
+          "[implicit_recession]") {
+  // A 12 x 10 x 6 mm block whose top wears 1 mm and whose sides are free (they neither wear
+  // nor are held): the top recedes to a sharp corner with the sides, which stay plane, and
+  // the vertical corners between two sides stay sharp up to the new top. The grid's cells
+  // there are crossed by the front (the top's balls reach the sides' upper millimetre), so a
+  // test per cell would leave the sides' chamfered corners as the grid cut them.
+  const double a = 12e-3, b = 10e-3, c = 6e-3, d = 1e-3, h = 0.25e-3;
+  auto s = testing::box(a, b, c);
+  for (std::size_t f = 0; f < s.n_faces(); ++f)
+    s.face_labels[f] = f < 2 ? label::bottom : f < 4 ? label::base : label::side;
+  s.roles = sample_roles(false);
+  REQUIRE(s.roles.of(label::side) == FaceRole::free);
+  const auto r = recede_uniformly(s, d, h);
+  const auto off = farthest_unworn_face(r.surface, s);
+  double top_low = 1, top_high = 0;
+  for (std::size_t f = 0; f < r.surface.n_faces(); ++f)
+    if (r.surface.face_labels[f] == label::base)
+      for (const auto v : r.surface.triangles[f]) {
+        top_low = std::min(top_low, r.surface.vertices[v].z);
+        top_high = std::max(top_high, r.surface.vertices[v].z);
+      }
+  INFO("unworn face farthest off " << off.distance * 1e3 << " mm at (" << off.centroid.x * 1e3
+                                   << ", " << off.centroid.y * 1e3 << ", " << off.centroid.z * 1e3
+                                   << ") mm; top between " << top_low * 1e3 << " and "
+                                   << top_high * 1e3 << " mm");
+  CHECK(off.distance < 0.05 * h);
+  CHECK(top_high < c - d + 0.2 * h);
+  CHECK(top_low > c - d - 0.5 * h);
 }
