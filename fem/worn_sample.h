@@ -76,6 +76,10 @@ struct WearStageReport {
   double implicit_seconds = 0; ///< [s] spent in them
   /// [m^3] grid volume the implicit recessions took from the wear (their grid_loss)
   double implicit_grid_loss = 0;
+  /// fragments the implicit recessions dropped (pieces the front cut off the part) and the
+  /// volume they held [m^3], removed beside the wear
+  std::size_t n_fragments = 0;
+  double fragment_volume = 0;
   /// why each remesh of an explicit increment failed with every attempt (in explicit then
   /// implicit the implicit recession then took the rest of the stage from the surface before
   /// the increment)

@@ -20,7 +20,8 @@
 // the old corner), which gives that loss back there; where it has, the chords of the grid, of
 // the coarsening and of the isotropic remeshing are given back by an offset of each vertex in
 // proportion to the gap between its faces and the grid's zero set, scaled so that the new
-// surface encloses V_input - V: the volume returns where it went missing, label by label.
+// surface encloses V_input - V - V_fragments (closed pieces under 8 h^3 the front cut off,
+// dropped as material lost): the volume returns where it went missing, label by label.
 //
 // Labels: a new face lies either on the old surface (phi = 0 there: it keeps the nearest old
 // face's label and patch) or on the receded front (g = 0: it takes those of the face whose
@@ -374,6 +375,49 @@ void vertex_depths(const SurfaceMesh& s, const std::vector<double>& unit_depth,
   }
 }
 
+// Drops the closed pieces of `m` that enclose less than `smallest` [m^3] (either sign): a
+// fragment of a few grid cells that the front cut off (the tip of an element whose flanks
+// receded past it) is material gone with the wear, and decimated to a few faces it leaves a
+// pocket of two faces on one another that no volume mesher takes. Returns the volume dropped.
+double drop_small_pieces(SurfaceMesh& m, double smallest, std::size_t& n_dropped) {
+  const auto piece = face_patches(m, [](std::uint32_t, std::uint32_t, auto) { return true; });
+  std::map<int, double> volume;
+  for (std::size_t f = 0; f < m.n_faces(); ++f) {
+    const auto& t = m.triangles[f];
+    volume[piece[f]] += dot(m.vertices[t[0]], cross(m.vertices[t[1]], m.vertices[t[2]])) / 6;
+  }
+  double dropped = 0;
+  n_dropped = 0;
+  for (const auto& [id, v] : volume)
+    if (std::abs(v) < smallest) {
+      dropped += v;
+      ++n_dropped;
+    }
+  if (n_dropped == 0)
+    return 0;
+  SurfaceMesh kept;
+  kept.roles = m.roles;
+  std::vector<std::int64_t> index(m.n_vertices(), -1);
+  for (std::size_t f = 0; f < m.n_faces(); ++f) {
+    if (std::abs(volume[piece[f]]) < smallest)
+      continue;
+    Triangle t;
+    for (int k = 0; k < 3; ++k) {
+      auto& i = index[m.triangles[f][std::size_t(k)]];
+      if (i < 0) {
+        i = std::int64_t(kept.vertices.size());
+        kept.vertices.push_back(m.vertices[m.triangles[f][std::size_t(k)]]);
+      }
+      t[std::size_t(k)] = std::uint32_t(i);
+    }
+    kept.triangles.push_back(t);
+    kept.face_labels.push_back(m.face_labels[f]);
+  }
+  kept.set_revision(m.revision());
+  m = std::move(kept);
+  return dropped;
+}
+
 } // namespace
 
 ImplicitRecession implicit_recession(const SurfaceMesh& s,
@@ -487,6 +531,7 @@ ImplicitRecession implicit_recession(const SurfaceMesh& s,
 
   r.surface = zero_surface(psi);
   r.surface.roles = s.roles;
+  r.fragment_volume = drop_small_pieces(r.surface, 8 * h * h * h, r.n_fragments);
   // The new faces carry their old patch as label while islands are merged and the surface is
   // coarsened, so that both keep the patches apart; then each patch's label is put back.
   const SurfaceLocator locate_old(s);
@@ -534,7 +579,8 @@ ImplicitRecession implicit_recession(const SurfaceMesh& s,
   // The chords of the grid, of the coarsening and of the remeshing where the front passed cut
   // off volume there; an offset in proportion to each face's gap gives it back, so that the
   // new surface encloses the input's volume less the asked one.
-  const double target = volume_before - r.asked_volume;
+  // A fragment dropped is material lost with the wear: the rest keeps its volume.
+  const double target = volume_before - r.asked_volume - r.fragment_volume;
   r.coarsening_loss = target - enclosed_volume(r.surface);
   const auto movable = free_wearing_vertices(r.surface, restored);
   const auto chords = chord_restoring_offset(r.surface, coarse_patches, movable, target);

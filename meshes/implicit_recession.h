@@ -55,7 +55,12 @@ struct ImplicitRecession {
   std::map<int, double> removed;    ///< [m^3] per label, as the grid books the removed material
   std::size_t n_restored = 0;       ///< vertices put back onto the old surface (front not there)
   std::vector<int> vanished_labels; ///< labels worn away (their faces joined a neighbour)
-  double worn_through_area = 0;     ///< [m^2] clamped area removed (a hole through the part)
+  /// closed pieces of the grid's zero set under 8 spacing^3 dropped (fragments the front cut
+  /// off the part), and the volume they enclosed [m^3], removed with the asked volume (it is
+  /// in removed_volume)
+  std::size_t n_fragments = 0;
+  double fragment_volume = 0;
+  double worn_through_area = 0; ///< [m^2] clamped area removed (a hole through the part)
   /// [m^3] volume the grid's zero set of the input loses against it (the chords of the
   /// interpolant across edges and curved faces), given back where the front has not passed
   /// by putting the surface back onto the old one, and where it has by the offset below

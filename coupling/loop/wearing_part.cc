@@ -340,6 +340,9 @@ void WearingPart::log_geometry_notes(const StageRecord& r, const fem::WearStageR
     log << where << report.n_implicit << " implicit recession(s), "
         << format("%.1f s, grid loss %.3g mm^3", report.implicit_seconds,
                   report.implicit_grid_loss * 1e9);
+  if (report.n_fragments > 0)
+    log << format("; %zu fragment(s) cut off and dropped, %.3g mm^3", report.n_fragments,
+                  report.fragment_volume * 1e9);
   if (!report.vanished_labels.empty()) {
     log << (report.n_implicit > 0 ? "; " : where) << "worn away:";
     for (const int label : report.vanished_labels)

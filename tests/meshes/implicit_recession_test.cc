@@ -229,3 +229,42 @@ TEST_CASE("a worn top beside free sides that do not wear leaves the sides where 
   CHECK(top_high < c - d + 0.2 * h);
   CHECK(top_low > c - d - 0.5 * h);
 }
+
+TEST_CASE("a fragment of a few grid cells cut off the part is dropped, the volume kept exact",
+          "[implicit_recession]") {
+  // A 10 mm cube worn 1 mm on every face, beside a separate 0.4 mm cube (a fragment the front
+  // left of an element's tip; 0.064 mm^3, below 8 h^3 = 0.125 mm^3). Decimated, such a piece
+  // became two faces lying on one another, which gmsh refused (the wear-out's stage 11).
+  const double a = 10e-3, b = 0.4e-3, d = 1e-3, h = 0.25e-3;
+  auto s = testing::box(a, a, a);
+  auto fragment = testing::box(b, b, b);
+  const auto n = std::uint32_t(s.n_vertices());
+  for (auto v : fragment.vertices)
+    s.vertices.push_back(v + Vec3(a + 2e-3, 0, 0));
+  for (auto t : fragment.triangles)
+    s.triangles.push_back({t[0] + n, t[1] + n, t[2] + n});
+  s.face_labels.assign(s.n_faces(), label::base);
+  s.roles.set(label::base, FaceRole::wearing);
+  auto removed = uniform_depth_volume(s, d);
+  for (std::size_t f = 12; f < removed.size(); ++f)
+    removed[f] = 0; // the fragment does not wear: it stays whole on the grid
+  ImplicitRecessionParameters p;
+  p.spacing = h;
+  const auto r = implicit_recession(s, removed, p);
+  INFO(r.n_fragments << " fragments, " << r.fragment_volume * 1e9 << " mm^3");
+  CHECK(r.n_fragments == 1);
+  // The grid's zero set of the small cube (its corners and edges cut by the 0.25 mm cells).
+  CHECK(r.fragment_volume > 0);
+  CHECK(r.fragment_volume < b * b * b);
+  double right = 0;
+  for (const auto& v : r.surface.vertices)
+    right = std::max(right, v.x);
+  CHECK(right < a);
+  CHECK(check_closed(r.surface).closed());
+  CHECK(surface_quality(r.surface).valid());
+  // What the fragment held (as the grid saw it) is removed with the asked volume; the cube
+  // keeps its own volume less the asked one.
+  CHECK(r.removed_volume == Approx(sum(removed) + r.fragment_volume).epsilon(1e-6));
+  CHECK(enclosed_volume(r.surface) ==
+        Approx(enclosed_volume(s) - sum(removed) - r.fragment_volume).epsilon(1e-9));
+}
