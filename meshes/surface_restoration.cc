@@ -168,23 +168,23 @@ std::vector<char> snap_untouched_vertices(const SurfaceMesh& old, const std::vec
     // The patches whose old surface the front has not reached beside x: a vertex on the
     // corner of a worn top and an unworn side goes onto the side, not onto their old edge.
     std::vector<int> open;
+    Vec3 target = x;
+    double best = std::numeric_limits<double>::infinity();
     if (between_fixed)
       open = mine;
     else
       for (const int q : mine) {
         const auto near = locate.nearest(x, q);
-        if (near.face >= 0 && !reached(near.point))
+        if (near.face >= 0 && !reached(near.point)) {
           open.push_back(q);
+          target = near.point; // the target where this patch is the only open one
+          best = near.distance;
+        }
       }
-    Vec3 target = x;
-    double best = std::numeric_limits<double>::infinity();
-    if (open.size() == 1) {
-      const auto near = locate.nearest(x, open[0]);
-      target = near.point;
-      best = near.distance;
-    } else if (open.size() == 2) {
+    if (open.size() == 2) {
       std::tie(target, best) = seams.nearest(open[0], open[1], x);
     } else if (open.size() > 2) {
+      best = std::numeric_limits<double>::infinity();
       for (std::size_t w = 0; w < old.n_vertices(); ++w) {
         const auto& theirs = old_vertex_patches[w];
         bool all = true;
