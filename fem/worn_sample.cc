@@ -437,6 +437,7 @@ void WornSample::take_implicit(meshes::FaceField<double>& remaining, WearStageRe
   r.implicit_grid_loss += receded.grid_loss;
   r.n_fragments += receded.n_fragments;
   r.fragment_volume += receded.fragment_volume;
+  r.n_teeth_joined += receded.n_teeth_joined;
   r.n_held_restorations += receded.restore_held_rings > 0;
   r.volume_not_restored += receded.volume_not_restored;
   r.worn_through_area += receded.worn_through_area;

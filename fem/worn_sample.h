@@ -80,6 +80,8 @@ struct WearStageReport {
   /// volume they held [m^3], removed beside the wear
   std::size_t n_fragments = 0;
   double fragment_volume = 0;
+  /// faces of no width the implicit recessions joined to the label beside them
+  std::size_t n_teeth_joined = 0;
   /// why each remesh of an explicit increment failed with every attempt (in explicit then
   /// implicit the implicit recession then took the rest of the stage from the surface before
   /// the increment)

@@ -303,14 +303,25 @@ untouched_patch_boundaries(const SurfaceMesh& m, const std::map<int, int>& label
   return curves;
 }
 
-// Per face of `m`, the label of the face of `from` nearest its centroid.
-std::vector<int> nearest_labels(const SurfaceMesh& from, const SurfaceMesh& m) {
-  const SurfaceLocator locate(from);
+// Per face of `m`, the patch of the face of `patches` (labelled by patch) nearest its
+// centroid among the faces of its own label: a face beside a label boundary that the
+// remesher moved keeps a patch of its label, so that no vertex inside one label is taken
+// for one on a seam.
+std::vector<int> nearest_patches(const SurfaceMesh& patches,
+                                 const std::map<int, int>& label_of_patch, const SurfaceMesh& m) {
+  SurfaceMesh by_label = patches;
+  for (auto& label : by_label.face_labels)
+    label = label_of_patch.at(label);
+  const SurfaceLocator locate(by_label);
   const auto centroid = face_centroids(m);
-  std::vector<int> label(m.n_faces());
-  for (std::size_t f = 0; f < label.size(); ++f)
-    label[f] = from.face_labels[std::size_t(locate.nearest(centroid[f]).face)];
-  return label;
+  std::vector<int> patch(m.n_faces());
+  for (std::size_t f = 0; f < patch.size(); ++f) {
+    auto near = locate.nearest(centroid[f], m.face_labels[f]);
+    if (near.face < 0)
+      near = locate.nearest(centroid[f]);
+    patch[f] = patches.face_labels[std::size_t(near.face)];
+  }
+  return patch;
 }
 
 // Vertices of wearing faces that are neither on a clamped or held face nor `restored`.
@@ -416,6 +427,42 @@ double drop_small_pieces(SurfaceMesh& m, double smallest, std::size_t& n_dropped
   kept.set_revision(m.revision());
   m = std::move(kept);
   return dropped;
+}
+
+// A face of one label whose three vertices went onto one seam of the old surface is left of
+// no width: a tooth of its label into the next one, where the remesher's label boundary
+// doubles back on itself. Where two of its edges border faces of one other label and the
+// vertex between those edges (the tooth's tip) has no other face of the tooth's label, the
+// face joins that label and its patch: the boundary then runs along its third edge, and the
+// tip goes onto the other label's patch. Returns the faces joined.
+std::size_t join_label_teeth(SurfaceMesh& m, std::vector<int>& patch_of_face) {
+  const auto across = face_neighbours(m);
+  const auto around = vertex_faces(m);
+  std::size_t n_joined = 0;
+  for (std::size_t f = 0; f < m.n_faces(); ++f) {
+    const auto& t = m.triangles[f];
+    if (triangle_quality(m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]) >= 1e-3)
+      continue;
+    const int own = m.face_labels[f];
+    for (int k = 0; k < 3; ++k) {
+      // Edge k runs from vertex k to k + 1: the edges k and k + 2 meet at vertex k.
+      const auto g = across[f][std::size_t(k)], h = across[f][std::size_t((k + 2) % 3)];
+      const int other = m.face_labels[g];
+      if (other == own || m.face_labels[h] != other)
+        continue;
+      const auto tip = m.triangles[f][std::size_t(k)];
+      bool alone = true;
+      for (auto i = around.offsets[tip]; i < around.offsets[tip + 1] && alone; ++i)
+        alone = around.faces[i] == f || m.face_labels[around.faces[i]] != own;
+      if (!alone)
+        continue;
+      m.face_labels[f] = other;
+      patch_of_face[f] = patch_of_face[g];
+      ++n_joined;
+      break;
+    }
+  }
+  return n_joined;
 }
 
 } // namespace
@@ -568,9 +615,15 @@ ImplicitRecession implicit_recession(const SurfaceMesh& s,
   isotropic_remesh(r.surface, curves, even);
   if (p.flat_edge > 0) // the flat regions coarsened, the curved ones and the curves kept
     coarsen_flat_regions(r.surface, curves, p.flat_edge, p.flat_error_fraction * h);
-  const auto patch_of_face = nearest_labels(coarse_patches, r.surface);
-  const auto restored =
+  auto patch_of_face = nearest_patches(coarse_patches, label_of_patch, r.surface);
+  const auto unsnapped = r.surface.vertices;
+  auto restored =
       snap_untouched_vertices(s, patch, seams, patch_of_face, reached_old, h, r.surface);
+  r.n_teeth_joined = join_label_teeth(r.surface, patch_of_face);
+  if (r.n_teeth_joined > 0) { // the tips go onto their new label's patch
+    r.surface.vertices = unsnapped;
+    restored = snap_untouched_vertices(s, patch, seams, patch_of_face, reached_old, h, r.surface);
+  }
   r.n_restored = std::size_t(std::count(restored.begin(), restored.end(), 1));
   snap_fixed_vertices(s, *std::max_element(depth.begin(), depth.end()) + 2 * h, restored,
                       r.surface);

@@ -4,12 +4,20 @@
 // Each round: edges longer than 4/3 L are split at their midpoint, edges shorter than 4/5 L
 // collapsed (unless that makes an edge longer than 4/3 L or folds a face), edges flipped where
 // that brings the valences of their four vertices closer to 6, and every free vertex moved
-// to the area-weighted centroid of its neighbours in its tangent plane, then projected back
-// onto the input surface (an AABB tree of the input's triangles). The result's triangles are
+// to the centroid of its neighbours in its tangent plane, then projected back onto the input
+// surface (an AABB tree of the input's triangles of its patch). The result's triangles are
 // close to equilateral with edges near L, and every vertex lies on the input.
 //
+// The rounds are CGAL's remesher's steps, driven here; the relaxation is ours, the same as
+// CGAL's (uniform weights, the vertex normal's tangent plane, all moves computed and then
+// made, a move halved up to five times while it turns a face against its neighbour across a
+// free edge, else not made), except that a vertex none of whose faces has a normal left (all
+// degenerate) does not move. CGAL 5.5's own relaxation dereferences a null half-edge there
+// (CGAL issue 7345), a segmentation fault the wear-out's zero sets reach.
+//
 // Labels: each label is a patch; the edges between patches are constraints, split and
-// collapsed only along the polyline they form, their vertices relaxed only along it; a
+// collapsed only along the polyline they form, their vertices relaxed only along it (halfway
+// to the middle of their two neighbours on it, where it turns by less than 60 degrees); a
 // vertex where three or more patches meet is a corner and never moves. A new face keeps its
 // patch, so the label boundaries, and the volume to the order of the chords the input
 // already has, are what they were. The input must be a closed 2-manifold.
@@ -19,6 +27,8 @@
 #include "meshes/stopwatch.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/internal/Isotropic_remeshing/remesh_impl.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -32,6 +42,81 @@ namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
+using Vector = Kernel::Vector_3;
+using EdgeFlags = Mesh::Property_map<Mesh::Edge_index, bool>;
+using FacePatches = Mesh::Property_map<Mesh::Face_index, int>;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+// One round of tangential relaxation of `mesh` (see the top of this file). An edge on a curve
+// (`on_curve`) or between two patches is constrained.
+void relax_tangentially(Mesh& mesh, const EdgeFlags& on_curve, const FacePatches& patch) {
+  const auto constrained = [&](Mesh::Halfedge_index h) {
+    return on_curve[mesh.edge(h)] || patch[mesh.face(h)] != patch[mesh.face(mesh.opposite(h))];
+  };
+  auto normal = mesh.add_property_map<Mesh::Vertex_index, Vector>("v:relax-normal").first;
+  PMP::compute_vertex_normals(mesh, normal);
+  std::vector<std::pair<Mesh::Vertex_index, Kernel::Point_3>> moves;
+  std::vector<Mesh::Halfedge_index> along;
+  for (const auto v : mesh.vertices()) {
+    if (mesh.is_isolated(v))
+      continue;
+    const auto& x = mesh.point(v);
+    along.clear();
+    Vector sum = CGAL::NULL_VECTOR;
+    unsigned n = 0;
+    for (const auto h : CGAL::halfedges_around_target(v, mesh))
+      if (constrained(h))
+        along.push_back(h);
+      else {
+        sum = sum + (mesh.point(mesh.source(h)) - x);
+        ++n;
+      }
+    if (along.empty()) {
+      const Kernel::Point_3 centroid = x + sum / double(n);
+      const Vector& u = normal[v];
+      moves.emplace_back(v, centroid + (u * (x - centroid)) * u);
+    } else if (along.size() == 2) {
+      const auto& a = mesh.point(mesh.source(along[0]));
+      const auto& b = mesh.point(mesh.source(along[1]));
+      const double c = (a - x) * (b - x);
+      if (c * c > 0.25 * CGAL::squared_distance(a, x) * CGAL::squared_distance(b, x))
+        moves.emplace_back(v, CGAL::barycenter(a, 0.25, b, 0.25, x, 0.5));
+    }
+  }
+  mesh.remove_property_map(normal);
+  // Whether no face of v turns against the one before it across a free edge; false where
+  // every face of v is degenerate (no normal to compare).
+  const auto faces_agree = [&](Mesh::Vertex_index v) {
+    Vector first = CGAL::NULL_VECTOR, previous = CGAL::NULL_VECTOR;
+    Mesh::Halfedge_index first_h;
+    bool any = false;
+    for (const auto h : CGAL::halfedges_around_target(v, mesh)) {
+      const Vector u = PMP::compute_face_normal(mesh.face(h), mesh);
+      if (u == CGAL::NULL_VECTOR)
+        continue;
+      if (!any) {
+        any = true;
+        first = u;
+        first_h = h;
+      } else if (!constrained(h) && u * previous <= 0)
+        return false;
+      previous = u;
+    }
+    return any && (constrained(first_h) || first * previous > 0);
+  };
+  for (const auto& [v, target] : moves) {
+    const Kernel::Point_3 start = mesh.point(v);
+    const Vector step = target - start;
+    mesh.point(v) = target;
+    double fraction = 1;
+    while (fraction > 0.03 && !faces_agree(v)) {
+      fraction *= 0.5;
+      mesh.point(v) = start + fraction * step;
+    }
+    if (fraction <= 0.02)
+      mesh.point(v) = start;
+  }
+}
 
 } // namespace
 
@@ -91,14 +176,22 @@ IsotropicRemeshReport isotropic_remesh(SurfaceMesh& m,
     if (n_curve_edges != 0 && n_curve_edges != 2)
       corner[v] = true;
   }
-  namespace PMP = CGAL::Polygon_mesh_processing;
-  PMP::isotropic_remeshing(faces(mesh), p.target_edge, mesh,
-                           CGAL::parameters::number_of_iterations(unsigned(p.n_iterations))
-                               .face_patch_map(patch)
-                               .edge_is_constrained_map(on_curve)
-                               .vertex_is_constrained_map(corner)
-                               .protect_constraints(false)
-                               .relax_constraints(true));
+  {
+    auto points = mesh.points();
+    const auto face_index = CGAL::get_initialized_face_index_map(mesh);
+    PMP::internal::Incremental_remesher<Mesh, decltype(points), Kernel, EdgeFlags, decltype(corner),
+                                        FacePatches, decltype(face_index)>
+        remesher(mesh, points, Kernel(), false, on_curve, corner, patch, face_index, true);
+    remesher.init_remeshing(faces(mesh));
+    const double low = 4. / 5. * p.target_edge, high = 4. / 3. * p.target_edge;
+    for (int round = 0; round < p.n_iterations; ++round) {
+      remesher.split_long_edges(high);
+      remesher.collapse_short_edges(low, high, true);
+      remesher.flip_edges_for_valence_and_shape();
+      relax_tangentially(mesh, on_curve, patch);
+      remesher.project_to_surface(CGAL::internal_np::Param_not_found());
+    }
+  }
   mesh.collect_garbage();
 
   SurfaceMesh out;

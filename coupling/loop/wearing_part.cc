@@ -343,6 +343,9 @@ void WearingPart::log_geometry_notes(const StageRecord& r, const fem::WearStageR
   if (report.n_fragments > 0)
     log << format("; %zu fragment(s) cut off and dropped, %.3g mm^3", report.n_fragments,
                   report.fragment_volume * 1e9);
+  if (report.n_teeth_joined > 0)
+    log << format("; %zu face(s) of no width joined to the label beside them",
+                  report.n_teeth_joined);
   if (!report.vanished_labels.empty()) {
     log << (report.n_implicit > 0 ? "; " : where) << "worn away:";
     for (const int label : report.vanished_labels)

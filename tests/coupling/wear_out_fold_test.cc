@@ -6,7 +6,9 @@
 // stage 23, the wear the next stage repeats on the same bed. The worn-geometry evolution must
 // apply it: the volume removed exactly (0.1 %), the clamped bottom where it was. The explicit
 // recession folds there, and the implicit one takes the rest of the stage ([long]: a stage of
-// increments, mesh motions and remeshes of 38,000 tetrahedra, about 4 min).
+// increments, mesh motions and remeshes of 38,000 tetrahedra, about 4 min). stage10.h5, the
+// convex sample after stage 10 of the implicit wear-out, is the surface on which CGAL 5.5's
+// tangential relaxation crashed (tests/data/wear-out/README.md).
 #include "coupling/output/worn_stage_file.h"
 #include "fem/remesher.h"
 #include "fem/worn_sample.h"
@@ -26,9 +28,12 @@ namespace {
 
 using WearOutStage = coupling::WornStage;
 
+WearOutStage read_stage(const std::string& file) {
+  return coupling::read_worn_stage(std::string(WEAR_SOURCE_DIR) + "/tests/data/wear-out/" + file);
+}
+
 WearOutStage read_stage23() {
-  return coupling::read_worn_stage(std::string(WEAR_SOURCE_DIR) +
-                                   "/tests/data/wear-out/stage23.h5");
+  return read_stage("stage23.h5");
 }
 
 } // namespace
@@ -81,8 +86,14 @@ namespace {
 // unfolded surface of well-shaped triangles; each label books its asked volume to the
 // tolerance, the total exactly; where nothing wears the old surface stays; gmsh keeps the
 // triangles and meshes the volume at its first attempt.
+struct StageBounds {
+  bool per_label = true;        ///< each label books its asked volume to 1e-4
+  double unworn = 0.02 * 3e-3;  ///< [m] farthest an unworn face may be from where it was
+  double uniform_offset = 1e-6; ///< [m] the offset left to the wearing faces as a whole
+};
+
 void check_implicit_stage(const WearOutStage& data, const meshes::ImplicitRecessionParameters& p,
-                          const std::string& name) {
+                          const std::string& name, const StageBounds& bounds = {}) {
   const auto& s = data.state.surface;
   const auto r = meshes::implicit_recession(s, data.removed_volume, p);
   INFO("fine faces " << r.n_fine_faces << ", faces " << r.surface.n_faces() << ", nodes "
@@ -92,16 +103,19 @@ void check_implicit_stage(const WearOutStage& data, const meshes::ImplicitRecess
                      << r.uniform_offset * 1e6 << " um), worst face " << r.min_face_quality << ", "
                      << r.n_fragments << " fragments dropped (" << r.fragment_volume * 1e9
                      << " mm^3)");
+  for (const int label : r.vanished_labels)
+    UNSCOPED_INFO("worn away: " << meshes::label::name(label));
   CHECK(meshes::check_closed(r.surface).closed());
   CHECK(meshes::surface_quality(r.surface).valid());
   CHECK(r.min_face_quality > 0.1);
   CHECK(r.removed_volume == Approx(r.asked_volume).epsilon(1e-6));
   // The offset gives back chords where they are; what is left for a uniform offset of the
   // wearing faces is below a micrometre.
-  CHECK(std::abs(r.uniform_offset) < 1e-6);
+  CHECK(std::abs(r.uniform_offset) < bounds.uniform_offset);
   for (const auto& [label, asked] : r.asked) {
-    INFO(meshes::label::name(label) << " asked " << asked * 1e9 << " mm^3");
-    CHECK(r.removed.at(label) == Approx(asked).epsilon(1e-4));
+    INFO(meshes::label::name(label)
+         << " asked " << asked * 1e9 << " mm^3, removed " << r.removed.at(label) * 1e9 << " mm^3");
+    CHECK((!bounds.per_label || r.removed.at(label) == Approx(asked).epsilon(1e-4)));
   }
   // The faces that do not wear stay on the old surface, within 0.05 of the 3 mm mesh size
   // (the stated tolerance), bit for bit in the bottom's plane. The sharp edges between the
@@ -114,7 +128,7 @@ void check_implicit_stage(const WearOutStage& data, const meshes::ImplicitRecess
       CHECK(x.z == 0.0);
   INFO("farthest unworn face " << off * 1e3 << " mm");
   CHECK(off < 0.05 * 3e-3);
-  CHECK(off < 0.02 * 3e-3);
+  CHECK(off < bounds.unworn);
 
   fem::RemeshParameters remesh;
   remesh.sizes.mesh_size = 0.003; // the wear-out case's sizes
@@ -140,4 +154,24 @@ TEST_CASE("the implicit recession takes the wear-out's stage-24 wear whole, with
           "and the remesher keeps its triangles",
           "[fem][wear-out][long]") {
   check_implicit_stage(read_stage23(), meshes::ImplicitRecessionParameters{}, "stage24-implicit");
+}
+
+TEST_CASE("the implicit recession takes the wear-out's stage-11 wear on the study's triangles, "
+          "1 mm coarsened to 3 mm where flat, where CGAL's relaxation crashed",
+          "[fem][wear-out][long]") {
+  // tests/data/wear-out/stage10.h5: the convex sample after stage 10 of the wear-out on the
+  // implicit evolution, with stage 10's wear. CGAL 5.5's tangential relaxation ended in a
+  // segmentation fault on its zero set (a vertex all of whose faces had become degenerate).
+  // C55, the most worn element, is asked 18.1 mm^3 of which its balls take 10.9 at the
+  // largest label scale (the base's balls reach its flanks first); the common factor spreads
+  // the rest over the other labels (+1 % each), so only the total is exact here. The sides'
+  // corners below the worn top are 0.095 mm off (the stated tolerance: 0.15 mm).
+  meshes::ImplicitRecessionParameters p;
+  p.target_edge = 1e-3;
+  p.flat_edge = 3e-3;
+  StageBounds bounds;
+  bounds.per_label = false;
+  bounds.unworn = 0.05 * 3e-3;
+  bounds.uniform_offset = 2e-6;
+  check_implicit_stage(read_stage("stage10.h5"), p, "stage11-implicit", bounds);
 }
