@@ -26,6 +26,13 @@
 #include "meshes/mesh_quality.h"
 #include "meshes/stopwatch.h"
 
+#include <CGAL/version.h>
+// The remesher's rounds are driven through CGAL's internal Incremental_remesher, whose
+// interface is CGAL 5.5's (Debian 12); another release must be checked before it is used.
+#if CGAL_VERSION_NR < 1050500000 || CGAL_VERSION_NR >= 1050600000
+#error "meshes/isotropic_remeshing.cc drives CGAL 5.5's internal remesher: check its interface"
+#endif
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/internal/Isotropic_remeshing/remesh_impl.h>
