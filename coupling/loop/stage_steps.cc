@@ -10,6 +10,8 @@
 // per label across a remesh (meshes::FaceTransfer).
 #include "coupling/loop/stage_steps.h"
 
+#include "coupling/output/worn_stage_file.h"
+
 #include "fem/volume_output.h"
 #include "meshes/face_transfer.h"
 #include "meshes/stopwatch.h"
@@ -58,7 +60,25 @@ StageStress solve_stage_stress(const fem::WornSample& sample, const dem::WallLoa
 GeometryUpdate apply_stage_wear(fem::WornSample& sample, const WearIncrement& increment,
                                 const StageStress& stress, StageRecord& r) {
   const meshes::SurfaceMesh before = sample.surface();
-  GeometryUpdate update{increment.removed, stress.von_mises, sample.apply_wear(increment.removed)};
+  // A stage whose wear the sample cannot take leaves its surface and wear in a file beside
+  // the meshes, the workload that repeats the failure (`wearsim bench evolution --state`).
+  const fem::WornSampleState start = sample.state();
+  fem::WearStageReport applied;
+  try {
+    applied = sample.apply_wear(increment.removed);
+  } catch (const std::exception& e) {
+    const std::string path =
+        sample.parameters().mesh_directory + "/failed-stage-" + std::to_string(r.stage) + ".h5";
+    try {
+      write_worn_stage(path, start, increment.removed.values());
+    } catch (const std::exception& w) {
+      throw std::runtime_error(std::string(e.what()) + " (its stage file not written: " + w.what() +
+                               ")");
+    }
+    throw std::runtime_error(std::string(e.what()) + "; the stage's surface and wear are in '" +
+                             path + "' (wearsim bench evolution --state " + path + ")");
+  }
+  GeometryUpdate update{increment.removed, stress.von_mises, applied};
   const auto& report = update.report;
   r.geometry_volume_change = report.volume_change;
   r.increments = report.increments;

@@ -7,7 +7,9 @@
 #include "coupling/output/hdf5_file.h"
 #include "meshes/sample_generator.h"
 
+#include <array>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 
 namespace wear::coupling {
@@ -62,6 +64,40 @@ WornStage read_worn_stage(const std::string& path) {
   st.removed_volume.assign(labels.size(), 0.0);
   st.wear_depth.assign(labels.size(), 0.0);
   return s;
+}
+
+void write_worn_stage(const std::string& path, const fem::WornSampleState& state,
+                      const std::vector<double>& removed_volume) {
+  const auto& m = state.surface;
+  if (removed_volume.size() != m.n_faces())
+    throw std::runtime_error("worn stage file '" + path +
+                             "': " + std::to_string(removed_volume.size()) +
+                             " removed volumes for " + std::to_string(m.n_faces()) + " faces");
+  std::map<std::array<double, 3>, int> volume_vertex;
+  for (std::size_t v = 0; 3 * v < state.vertices.size(); ++v)
+    volume_vertex.emplace(std::array<double, 3>{state.vertices[3 * v], state.vertices[3 * v + 1],
+                                                state.vertices[3 * v + 2]},
+                          int(v));
+  std::vector<int> to_volume(m.n_vertices());
+  for (std::size_t v = 0; v < m.n_vertices(); ++v) {
+    const auto it = volume_vertex.find({m.vertices[v].x, m.vertices[v].y, m.vertices[v].z});
+    if (it == volume_vertex.end())
+      throw std::runtime_error("worn stage file '" + path + "': surface vertex " +
+                               std::to_string(v) + " is not a vertex of the volume mesh");
+    to_volume[v] = it->second;
+  }
+  std::vector<int> triangles;
+  triangles.reserve(3 * m.n_faces());
+  for (const auto& t : m.triangles)
+    for (const auto v : t)
+      triangles.push_back(to_volume[v]);
+  Hdf5File h5(path);
+  h5.write("vertices", state.vertices, {state.vertices.size() / 3, 3});
+  h5.write("tetrahedra", state.tetrahedra, {state.tetrahedra.size() / 4, 4});
+  h5.write("triangles", triangles, {m.n_faces(), 3});
+  h5.write("labels", m.face_labels, {m.n_faces()});
+  h5.write("removed_volume", removed_volume, {m.n_faces()});
+  h5.commit();
 }
 
 } // namespace wear::coupling

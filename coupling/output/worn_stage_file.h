@@ -20,4 +20,11 @@ struct WornStage {
 /// (meshes::sample_roles(true)). Throws std::runtime_error naming the file and what is wrong.
 WornStage read_worn_stage(const std::string& path);
 
+/// Writes `state` (its volume mesh and surface) with one stage's `removed_volume` per surface
+/// face to `path` in the layout read_worn_stage reads, atomically: the surface's triangles in
+/// volume-vertex numbers (each surface vertex is a volume vertex, the same doubles). Throws
+/// std::runtime_error naming the file where a surface vertex is not a volume vertex.
+void write_worn_stage(const std::string& path, const fem::WornSampleState& state,
+                      const std::vector<double>& removed_volume);
+
 } // namespace wear::coupling

@@ -1,7 +1,7 @@
 // A worn stage file (coupling/output/worn_stage_file.h) reads back as the sample it describes:
 // a unit tetrahedron's boundary as the surface, in the file's face order, with its labels,
 // roles and removed volumes; a file whose arrays do not fit together is refused naming the
-// file and the array.
+// file and the array; a sample and stage written with write_worn_stage read back the same.
 #include "coupling/output/hdf5_file.h"
 #include "coupling/output/worn_stage_file.h"
 #include "meshes/surface_mesh.h"
@@ -62,5 +62,38 @@ TEST_CASE("a worn stage file reads back as its sample and stage, and a broken on
   CHECK_THROWS_WITH(coupling::read_worn_stage(path), Catch::Contains("names vertex 7 of 4"));
   write_stage(path, {0, -1e-12, 0, 0}, boundary);
   CHECK_THROWS_WITH(coupling::read_worn_stage(path), Catch::Contains("negative"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("a worn stage written from a sample's state reads back face for face",
+          "[worn_stage_file]") {
+  const std::string dir =
+      (std::filesystem::temp_directory_path() / "worn-stage-file-write-test").string();
+  std::filesystem::create_directories(dir);
+  write_stage(dir + "/in.h5", {0, 1e-12, 2e-12, 3e-12}, boundary);
+  auto s = coupling::read_worn_stage(dir + "/in.h5");
+  // The surface's vertices in another order than the volume's: the writer maps them back.
+  auto& m = s.state.surface;
+  std::swap(m.vertices[0], m.vertices[3]);
+  for (auto& t : m.triangles)
+    for (auto& v : t)
+      v = v == 0 ? 3 : v == 3 ? 0 : v;
+  coupling::write_worn_stage(dir + "/out.h5", s.state, {4e-12, 3e-12, 2e-12, 1e-12});
+  const auto back = coupling::read_worn_stage(dir + "/out.h5");
+  REQUIRE(back.state.surface.n_faces() == 4);
+  CHECK(back.removed_volume == std::vector<double>{4e-12, 3e-12, 2e-12, 1e-12});
+  CHECK(back.state.surface.face_labels == m.face_labels);
+  for (std::size_t f = 0; f < 4; ++f)
+    for (int k = 0; k < 3; ++k) {
+      const auto& a = back.state.surface.vertices[back.state.surface.triangles[f][k]];
+      const auto& b = m.vertices[m.triangles[f][k]];
+      CHECK((a.x == b.x && a.y == b.y && a.z == b.z));
+    }
+  CHECK(meshes::enclosed_volume(back.state.surface) == Approx(1e-9 / 6).epsilon(1e-12));
+  // A surface vertex that is not a volume vertex is refused, naming the file.
+  m.vertices[1].x += 1e-9;
+  CHECK_THROWS_WITH(coupling::write_worn_stage(dir + "/bad.h5", s.state, {0, 0, 0, 0}),
+                    Catch::Contains("bad.h5") && Catch::Contains("not a vertex of the volume"));
+  CHECK(!std::filesystem::exists(dir + "/bad.h5"));
   std::filesystem::remove_all(dir);
 }
