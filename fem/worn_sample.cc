@@ -438,6 +438,8 @@ void WornSample::take_implicit(meshes::FaceField<double>& remaining, WearStageRe
   r.n_fragments += receded.n_fragments;
   r.fragment_volume += receded.fragment_volume;
   r.n_teeth_joined += receded.n_teeth_joined;
+  r.n_folds_mended += receded.n_folds_mended;
+  r.n_folds_left += receded.n_folds_left;
   r.n_held_restorations += receded.restore_held_rings > 0;
   r.volume_not_restored += receded.volume_not_restored;
   r.worn_through_area += receded.worn_through_area;

@@ -82,6 +82,8 @@ struct WearStageReport {
   double fragment_volume = 0;
   /// faces of no width the implicit recessions joined to the label beside them
   std::size_t n_teeth_joined = 0;
+  /// folded edges the implicit recessions' remeshing left: mended, and left unmended
+  std::size_t n_folds_mended = 0, n_folds_left = 0;
   /// why each remesh of an explicit increment failed with every attempt (in explicit then
   /// implicit the implicit recession then took the rest of the stage from the surface before
   /// the increment)

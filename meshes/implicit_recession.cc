@@ -31,8 +31,13 @@
 // The coarsening (meshes/surface_decimation.h) keeps the old patches apart; the isotropic
 // remeshing (meshes/isotropic_remeshing.h) keeps the label boundaries, and the old sharp
 // edges where the front has not passed, as curves, and gives triangles a volume mesher keeps.
+// Where it leaves a fold (two faces whose normals are more than 120 degrees apart: a vertex of
+// valence 3 beside a nearly straight label boundary), a flip, collapse or move of a free
+// wearing vertex within two spacings mends it (meshes/fold_mending.h) before the volume
+// offset, which may then fold no edge at that criterion either.
 #include "meshes/implicit_recession.h"
 
+#include "meshes/fold_mending.h"
 #include "meshes/isotropic_remeshing.h"
 #include "meshes/level_set_grid.h"
 #include "meshes/mesh_quality.h"
@@ -628,6 +633,20 @@ ImplicitRecession implicit_recession(const SurfaceMesh& s,
   snap_fixed_vertices(s, *std::max_element(depth.begin(), depth.end()) + 2 * h, restored,
                       r.surface);
   r.vanished_labels = merge_vanished_elements(r.surface, p.vanish_height);
+  // The remeshing can leave a vertex of valence 3 beside a nearly straight label boundary
+  // (an element's foot), one of whose faces turns over; it is mended where it is.
+  FoldMendingParameters mend;
+  mend.max_shift = 2 * h;
+  const auto mended = mend_folds(r.surface, free_wearing_vertices(r.surface, restored), mend);
+  r.n_folds_mended = mended.n_folds_before - mended.n_folds_after;
+  r.n_folds_left = mended.n_folds_after;
+  if (mended.n_flips + mended.n_collapses + mended.n_moves > 0) {
+    std::vector<char> kept(r.surface.n_vertices(), 0);
+    for (std::size_t v = 0; v < restored.size(); ++v)
+      if (mended.new_index[v] != no_vertex)
+        kept[mended.new_index[v]] |= restored[v];
+    restored = std::move(kept);
+  }
   r.surface.set_revision(s.revision() + 1);
   // The chords of the grid, of the coarsening and of the remeshing where the front passed cut
   // off volume there; an offset in proportion to each face's gap gives it back, so that the
@@ -636,7 +655,9 @@ ImplicitRecession implicit_recession(const SurfaceMesh& s,
   const double target = volume_before - r.asked_volume - r.fragment_volume;
   r.coarsening_loss = target - enclosed_volume(r.surface);
   const auto movable = free_wearing_vertices(r.surface, restored);
-  const auto chords = chord_restoring_offset(r.surface, coarse_patches, movable, target);
+  // The offset folds no edge at the mending's criterion, unless the mending left one.
+  const auto chords = chord_restoring_offset(r.surface, coarse_patches, movable, target,
+                                             r.n_folds_left == 0 ? mend.fold_cos : -0.95);
   r.uniform_offset = chords.uniform_offset;
   r.restore_held_rings = chords.held_rings;
   r.volume_not_restored = chords.volume_not_restored;

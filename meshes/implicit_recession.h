@@ -55,6 +55,8 @@ struct ImplicitRecession {
   std::map<int, double> removed;    ///< [m^3] per label, as the grid books the removed material
   std::size_t n_restored = 0;       ///< vertices put back onto the old surface (front not there)
   std::size_t n_teeth_joined = 0;   ///< faces of no width joined to the label beside them
+  std::size_t n_folds_mended = 0;   ///< folded edges the remeshing left, mended (fold_mending.h)
+  std::size_t n_folds_left = 0;     ///< folded edges the mending could not mend
   std::vector<int> vanished_labels; ///< labels worn away (their faces joined a neighbour)
   /// closed pieces of the grid's zero set under 8 spacing^3 dropped (fragments the front cut
   /// off the part), and the volume they enclosed [m^3], removed with the asked volume (it is

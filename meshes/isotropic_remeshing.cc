@@ -18,13 +18,18 @@
 // Labels: each label is a patch; the edges between patches are constraints, split and
 // collapsed only along the polyline they form, their vertices relaxed only along it (halfway
 // to the middle of their two neighbours on it, where it turns by less than 60 degrees); a
-// vertex where three or more patches meet is a corner and never moves. A new face keeps its
+// vertex where three or more patches meet is a corner and never moves. Unlike CGAL, a vertex
+// on the boundary between two patches is put back onto the input's boundary between them after
+// that move (CGAL projects it onto the surface of one patch only, which leaves it inside the
+// chord of a curved boundary, such as a worn element's foot, where the faces beside it turn
+// over: the wear-out's stage 6). A new face keeps its
 // patch, so the label boundaries, and the volume to the order of the chords the input
 // already has, are what they were. The input must be a closed 2-manifold.
 #include "meshes/isotropic_remeshing.h"
 
 #include "meshes/mesh_quality.h"
 #include "meshes/stopwatch.h"
+#include "meshes/surface_restoration.h"
 
 #include <CGAL/version.h>
 // The remesher's rounds are driven through CGAL's internal Incremental_remesher, whose
@@ -40,6 +45,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -56,7 +62,8 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 
 // One round of tangential relaxation of `mesh` (see the top of this file). An edge on a curve
 // (`on_curve`) or between two patches is constrained.
-void relax_tangentially(Mesh& mesh, const EdgeFlags& on_curve, const FacePatches& patch) {
+void relax_tangentially(Mesh& mesh, const EdgeFlags& on_curve, const FacePatches& patch,
+                        const PatchSeams& seams) {
   const auto constrained = [&](Mesh::Halfedge_index h) {
     return on_curve[mesh.edge(h)] || patch[mesh.face(h)] != patch[mesh.face(mesh.opposite(h))];
   };
@@ -86,8 +93,24 @@ void relax_tangentially(Mesh& mesh, const EdgeFlags& on_curve, const FacePatches
       const auto& a = mesh.point(mesh.source(along[0]));
       const auto& b = mesh.point(mesh.source(along[1]));
       const double c = (a - x) * (b - x);
-      if (c * c > 0.25 * CGAL::squared_distance(a, x) * CGAL::squared_distance(b, x))
-        moves.emplace_back(v, CGAL::barycenter(a, 0.25, b, 0.25, x, 0.5));
+      if (c * c > 0.25 * CGAL::squared_distance(a, x) * CGAL::squared_distance(b, x)) {
+        auto y = CGAL::barycenter(a, 0.25, b, 0.25, x, 0.5);
+        // On a boundary between two patches (not a curve) y goes back onto the input's
+        // boundary between them: across a curved one (an element's foot) the halfway move
+        // cuts the chord, and the faces beside it turn over.
+        const auto pair = [&](Mesh::Halfedge_index h) {
+          const int p = patch[mesh.face(h)], q = patch[mesh.face(mesh.opposite(h))];
+          return std::make_pair(std::min(p, q), std::max(p, q));
+        };
+        const auto [p, q] = pair(along[0]);
+        if (p != q && pair(along[1]) == std::make_pair(p, q) && !on_curve[mesh.edge(along[0])] &&
+            !on_curve[mesh.edge(along[1])]) {
+          const auto [z, d] = seams.nearest(p, q, {y.x(), y.y(), y.z()});
+          if (std::isfinite(d))
+            y = {z.x, z.y, z.z};
+        }
+        moves.emplace_back(v, y);
+      }
     }
   }
   mesh.remove_property_map(normal);
@@ -190,12 +213,13 @@ IsotropicRemeshReport isotropic_remesh(SurfaceMesh& m,
                                         FacePatches, decltype(face_index)>
         remesher(mesh, points, Kernel(), false, on_curve, corner, patch, face_index, true);
     remesher.init_remeshing(faces(mesh));
+    const PatchSeams seams(m, m.face_labels);
     const double low = 4. / 5. * p.target_edge, high = 4. / 3. * p.target_edge;
     for (int round = 0; round < p.n_iterations; ++round) {
       remesher.split_long_edges(high);
       remesher.collapse_short_edges(low, high, true);
       remesher.flip_edges_for_valence_and_shape();
-      relax_tangentially(mesh, on_curve, patch);
+      relax_tangentially(mesh, on_curve, patch, seams);
       remesher.project_to_surface(CGAL::internal_np::Param_not_found());
     }
   }

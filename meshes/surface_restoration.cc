@@ -41,7 +41,8 @@ namespace wear::meshes {
 // the other movable vertices make up the volume, as the remesher's restoring offset does
 // (fem/worn_sample.cc); with every ring count folding the surface is handed on unmoved.
 ChordRestoration chord_restoring_offset(SurfaceMesh& m, const SurfaceMesh& reference,
-                                        const std::vector<char>& movable, double target) {
+                                        const std::vector<char>& movable, double target,
+                                        double fold_cos) {
   const SurfaceLocator locate(reference);
   const auto centroid = face_centroids(m);
   const auto area = face_areas(m);
@@ -82,7 +83,7 @@ ChordRestoration chord_restoring_offset(SurfaceMesh& m, const SurfaceMesh& refer
         candidate, outward, enclosed_volume(candidate) - target, &achieved, 1e-6);
     for (std::size_t v = 0; v < m.n_vertices(); ++v)
       candidate.vertices[v] += outward[v] * offset;
-    auto q = surface_quality(candidate, &face_normal);
+    auto q = surface_quality(candidate, &face_normal, 1e-10, fold_cos);
     if (q.valid()) {
       taken = std::move(candidate);
       r.uniform_offset = offset;

@@ -53,9 +53,11 @@ struct ChordRestoration {
 /// Each `movable` vertex of `m` moves along its normal by the area-weighted mean gap of its
 /// faces to `reference` (the finer surface its vertices lie on), then all of them by one
 /// uniform offset, so that `m` encloses `target` [m^3]. Where that folds `m` (an edge whose
-/// faces lie on each other, a crossing or an inverted face), the vertices within 1, 2, 4, 8
-/// rings of the fold stay still; when it folds even then, `m` is left as it was.
+/// faces' normals have a cosine below `fold_cos`, a crossing or an inverted face), the
+/// vertices within 1, 2, 4, 8 rings of the fold stay still; when it folds even then, `m` is
+/// left as it was.
 ChordRestoration chord_restoring_offset(SurfaceMesh& m, const SurfaceMesh& reference,
-                                        const std::vector<char>& movable, double target);
+                                        const std::vector<char>& movable, double target,
+                                        double fold_cos);
 
 } // namespace wear::meshes

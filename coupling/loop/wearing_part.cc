@@ -346,6 +346,9 @@ void WearingPart::log_geometry_notes(const StageRecord& r, const fem::WearStageR
   if (report.n_teeth_joined > 0)
     log << format("; %zu face(s) of no width joined to the label beside them",
                   report.n_teeth_joined);
+  if (report.n_folds_mended + report.n_folds_left > 0)
+    log << format("; %zu folded edge(s) mended, %zu left", report.n_folds_mended,
+                  report.n_folds_left);
   if (!report.vanished_labels.empty()) {
     log << (report.n_implicit > 0 ? "; " : where) << "worn away:";
     for (const int label : report.vanished_labels)
