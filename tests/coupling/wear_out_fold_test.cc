@@ -156,6 +156,14 @@ void check_implicit_stage(const WearOutStage& data, const meshes::ImplicitRecess
   std::filesystem::remove_all(dir);
 }
 
+// The wear-out study's triangles: 1 mm, coarsened to 3 mm where flat.
+meshes::ImplicitRecessionParameters study_triangles() {
+  meshes::ImplicitRecessionParameters p;
+  p.target_edge = 1e-3;
+  p.flat_edge = 3e-3;
+  return p;
+}
+
 } // namespace
 
 TEST_CASE("the implicit recession takes the wear-out's stage-24 wear whole, without folding, "
@@ -178,15 +186,12 @@ TEST_CASE("the implicit recession takes the wear-out's stage-11 wear on the stud
   // feet, 18 are mended; 5 across a foot's label boundary are not, and the offset then leaves
   // 14 (none beyond the volume mesher's 162 degrees; 34 without the mending and the boundary
   // projection).
-  meshes::ImplicitRecessionParameters p;
-  p.target_edge = 1e-3;
-  p.flat_edge = 3e-3;
   StageBounds bounds;
   bounds.per_label = false;
   bounds.unworn = 0.05 * 3e-3;
   bounds.uniform_offset = 2e-6;
   bounds.folds_left = 5;
-  check_implicit_stage(read_stage("stage10.h5"), p, "stage11-implicit", bounds);
+  check_implicit_stage(read_stage("stage10.h5"), study_triangles(), "stage11-implicit", bounds);
 }
 
 TEST_CASE("the implicit recession takes the wear-out's stage-6 wear on both samples, the "
@@ -198,13 +203,11 @@ TEST_CASE("the implicit recession takes the wear-out's stage-6 wear on both samp
   // worn top at its rim with a side, one of whose faces turned down (plain); the first was
   // refused as a fold, the second by gmsh (two facets intersect).
   // The plain sample's wearing faces are left a uniform offset of 1.25 um.
-  meshes::ImplicitRecessionParameters p;
-  p.target_edge = 1e-3;
-  p.flat_edge = 3e-3;
   StageBounds bounds;
   bounds.uniform_offset = 2e-6;
   for (const std::string sample : {"convex", "plain"}) {
     INFO(sample);
-    check_implicit_stage(read_stage("stage6-" + sample + ".h5"), p, "stage6-" + sample, bounds);
+    check_implicit_stage(read_stage("stage6-" + sample + ".h5"), study_triangles(),
+                         "stage6-" + sample, bounds);
   }
 }
