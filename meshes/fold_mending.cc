@@ -350,37 +350,17 @@ FoldMending mend_folds(SurfaceMesh& m, const std::vector<char>& removable,
   if (r.n_flips + r.n_collapses + r.n_moves == 0)
     return r;
   // Dead faces and collapsed vertices go; the rest keep their order.
-  std::vector<Triangle> triangles;
-  std::vector<int> labels;
-  for (std::size_t f = 0; f < m.n_faces(); ++f)
-    if (!w.dead[f]) {
-      triangles.push_back(m.triangles[f]);
-      labels.push_back(m.face_labels[f]);
-    }
-  std::vector<char> used(m.n_vertices(), 0);
-  for (const auto& t : triangles)
-    for (const auto v : t)
-      used[v] = 1;
-  std::vector<std::uint32_t> compact(m.n_vertices(), 0);
-  std::vector<Vec3> vertices;
-  for (std::uint32_t v = 0; v < m.n_vertices(); ++v)
-    if (used[v]) {
-      compact[v] = std::uint32_t(vertices.size());
-      vertices.push_back(m.vertices[v]);
-    }
-  for (auto& t : triangles)
-    for (auto& v : t)
-      v = compact[v];
   const auto into = r.new_index;
+  std::vector<char> live(m.n_faces());
+  for (std::size_t f = 0; f < m.n_faces(); ++f)
+    live[f] = !w.dead[f];
+  const auto kept = keep_faces(m, live);
   for (std::uint32_t v = 0; v < into.size(); ++v) {
     auto target = v;
-    while (!used[target] && into[target] != target) // collapsed, maybe into one collapsed later
+    while (kept[target] == no_vertex && into[target] != target) // collapsed, maybe in turn
       target = into[target];
-    r.new_index[v] = used[target] ? compact[target] : no_vertex;
+    r.new_index[v] = kept[target];
   }
-  m.vertices = std::move(vertices);
-  m.triangles = std::move(triangles);
-  m.face_labels = std::move(labels);
   m.bump_revision();
   r.n_folds_after = count_folded_edges(m, p.fold_cos);
   return r;

@@ -18,8 +18,6 @@ struct FoldMendingParameters {
   int max_passes = 8; ///< rounds of finding the folds and mending each once
 };
 
-constexpr std::uint32_t no_vertex = 0xffffffffu;
-
 struct FoldMending {
   std::size_t n_folds_before = 0; ///< folded edges found at the start
   std::size_t n_folds_after = 0;  ///< folded edges left (none could be mended)

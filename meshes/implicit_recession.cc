@@ -411,6 +411,9 @@ double drop_small_pieces(SurfaceMesh& m, double smallest, std::size_t& n_dropped
     }
   if (n_dropped == 0)
     return 0;
+  // The kept vertices are numbered by first use, not in keep_faces' index order: the
+  // coarsening and remeshing after this take their ties in vertex order, and on the
+  // wear-out's stage 11 the index order left folds at the elements' feet that gmsh refused.
   SurfaceMesh kept;
   kept.roles = m.roles;
   std::vector<std::int64_t> index(m.n_vertices(), -1);

@@ -268,24 +268,7 @@ private:
   }
 
   void compact() {
-    std::vector<std::uint32_t> new_index(m_.n_vertices(), 0);
-    std::vector<Vec3> vertices;
-    for (std::size_t v = 0; v < m_.n_vertices(); ++v)
-      if (!faces_of_[v].empty()) {
-        new_index[v] = std::uint32_t(vertices.size());
-        vertices.push_back(m_.vertices[v]);
-      }
-    std::vector<Triangle> triangles;
-    std::vector<int> labels;
-    for (std::size_t f = 0; f < m_.n_faces(); ++f)
-      if (alive_face_[f]) {
-        const auto& t = m_.triangles[f];
-        triangles.push_back({new_index[t[0]], new_index[t[1]], new_index[t[2]]});
-        labels.push_back(m_.face_labels[f]);
-      }
-    m_.vertices = std::move(vertices);
-    m_.triangles = std::move(triangles);
-    m_.face_labels = std::move(labels);
+    keep_faces(m_, alive_face_);
     m_.bump_revision();
   }
 };

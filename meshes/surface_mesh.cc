@@ -340,6 +340,32 @@ std::size_t orient_outward(SurfaceMesh& m) {
   return n_flipped;
 }
 
+std::vector<std::uint32_t> keep_faces(SurfaceMesh& m, const std::vector<char>& keep) {
+  std::vector<std::uint32_t> new_index(m.n_vertices(), no_vertex);
+  std::vector<Triangle> triangles;
+  std::vector<int> labels;
+  for (std::size_t f = 0; f < m.n_faces(); ++f)
+    if (keep[f]) {
+      triangles.push_back(m.triangles[f]);
+      labels.push_back(m.face_labels[f]);
+      for (const auto v : m.triangles[f])
+        new_index[v] = 0;
+    }
+  std::vector<Vec3> vertices;
+  for (std::size_t v = 0; v < m.n_vertices(); ++v)
+    if (new_index[v] != no_vertex) {
+      new_index[v] = std::uint32_t(vertices.size());
+      vertices.push_back(m.vertices[v]);
+    }
+  for (auto& t : triangles)
+    for (auto& v : t)
+      v = new_index[v];
+  m.vertices = std::move(vertices);
+  m.triangles = std::move(triangles);
+  m.face_labels = std::move(labels);
+  return new_index;
+}
+
 void merge_identical_vertices(SurfaceMesh& m) {
   struct Hash {
     std::size_t operator()(const Vec3& p) const {

@@ -154,4 +154,11 @@ std::size_t orient_outward(SurfaceMesh& m);
 /// Merge vertices with bit-identical coordinates (STL soups) and drop unused ones.
 void merge_identical_vertices(SurfaceMesh& m);
 
+/// A vertex index that names no vertex (one dropped by keep_faces).
+constexpr std::uint32_t no_vertex = 0xffffffffu;
+/// Keeps the faces f with keep[f], in their order, and the vertices they use, in theirs;
+/// returns each old vertex's new index (no_vertex for a vertex no kept face uses). The
+/// revision is left to the caller.
+std::vector<std::uint32_t> keep_faces(SurfaceMesh& m, const std::vector<char>& keep);
+
 } // namespace wear::meshes

@@ -114,3 +114,32 @@ TEST_CASE("validate rejects bad indices and NaN", "[meshes]") {
   n.vertices[0].x = std::nan("");
   CHECK_THROWS_WITH(n.validate("test mesh"), Catch::Contains("non-finite"));
 }
+
+TEST_CASE("keeping some faces drops the vertices no kept face uses, the order kept", "[meshes]") {
+  // Two boxes, the second (2 x 3 x 5, labelled base) after the first's 8 vertices.
+  auto m = testing::box();
+  const auto second = testing::box(2, 3, 5);
+  for (const auto& x : second.vertices)
+    m.vertices.push_back(x + Vec3{10, 0, 0});
+  for (auto t : second.triangles) {
+    for (auto& v : t)
+      v += 8;
+    m.triangles.push_back(t);
+    m.face_labels.push_back(label::base);
+  }
+  std::vector<char> keep(m.n_faces(), 0);
+  for (std::size_t f = 12; f < 24; ++f)
+    keep[f] = 1;
+  const auto new_index = keep_faces(m, keep);
+  REQUIRE(new_index.size() == 16);
+  for (std::uint32_t v = 0; v < 8; ++v) {
+    CHECK(new_index[v] == no_vertex);
+    CHECK(new_index[v + 8] == v);
+  }
+  CHECK(m.n_vertices() == 8);
+  CHECK(m.n_faces() == 12);
+  CHECK(m.labels() == std::vector<int>{label::base});
+  CHECK(check_closed(m).closed());
+  CHECK(enclosed_volume(m) == Approx(30).epsilon(1e-14));
+  CHECK(m.vertices[0] == second.vertices[0] + Vec3{10, 0, 0});
+}
