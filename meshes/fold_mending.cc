@@ -247,22 +247,13 @@ std::vector<std::uint32_t> faces_to_mend(const Work& w, double fold_cos,
 
 } // namespace
 
-std::size_t count_folded_edges(const SurfaceMesh& m, double fold_cos) {
-  std::size_t n = 0;
-  for (const auto& [edge, faces] : edge_faces(m))
-    if (faces.size() == 2 && cosine(face_normal_unnormalized(m, faces[0]),
-                                    face_normal_unnormalized(m, faces[1])) < fold_cos)
-      ++n;
-  return n;
-}
-
 FoldMending mend_folds(SurfaceMesh& m, const std::vector<char>& removable,
                        const FoldMendingParameters& p) {
   FoldMending r;
   r.new_index.resize(m.n_vertices());
   for (std::uint32_t v = 0; v < m.n_vertices(); ++v)
     r.new_index[v] = v;
-  r.n_folds_before = count_folded_edges(m, p.fold_cos);
+  r.n_folds_before = find_folded_edges(m, p.fold_cos).size();
   r.n_folds_after = r.n_folds_before;
   if (r.n_folds_before == 0)
     return r;
@@ -362,7 +353,7 @@ FoldMending mend_folds(SurfaceMesh& m, const std::vector<char>& removable,
     r.new_index[v] = kept[target];
   }
   m.bump_revision();
-  r.n_folds_after = count_folded_edges(m, p.fold_cos);
+  r.n_folds_after = find_folded_edges(m, p.fold_cos).size();
   return r;
 }
 

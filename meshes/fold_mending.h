@@ -42,7 +42,4 @@ struct FoldMending {
 FoldMending mend_folds(SurfaceMesh& m, const std::vector<char>& removable,
                        const FoldMendingParameters& p);
 
-/// Folded edges of a closed surface (the two faces' normals' cosine below fold_cos).
-std::size_t count_folded_edges(const SurfaceMesh& m, double fold_cos);
-
 } // namespace wear::meshes

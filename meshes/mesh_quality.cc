@@ -144,6 +144,20 @@ find_self_intersections(const SurfaceMesh& m, std::size_t max_pairs) {
   return hits;
 }
 
+std::vector<std::pair<std::uint32_t, std::uint32_t>> find_folded_edges(const SurfaceMesh& m,
+                                                                       double fold_cos) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> folds;
+  for (const auto& [edge, faces] : edge_faces(m)) {
+    if (faces.size() != 2)
+      continue;
+    const Vec3 a = face_normal_unnormalized(m, faces[0]), b = face_normal_unnormalized(m, faces[1]);
+    const double na = norm(a), nb = norm(b);
+    if (na > 0 && nb > 0 && dot(a, b) < fold_cos * na * nb)
+      folds.emplace_back(std::uint32_t(faces[0]), std::uint32_t(faces[1]));
+  }
+  return folds;
+}
+
 SurfaceQuality surface_quality(const SurfaceMesh& m, const std::vector<Vec3>* reference_normals,
                                double relative_area_tolerance, double folded_edge_cos) {
   SurfaceQuality q;
@@ -184,16 +198,11 @@ SurfaceQuality surface_quality(const SurfaceMesh& m, const std::vector<Vec3>* re
       mark(f);
     }
   }
-  for (const auto& [edge, faces] : edge_faces(m)) {
-    if (faces.size() != 2)
-      continue;
-    const Vec3 a = face_normal_unnormalized(m, faces[0]), b = face_normal_unnormalized(m, faces[1]);
-    const double na = norm(a), nb = norm(b);
-    if (na > 0 && nb > 0 && dot(a, b) < folded_edge_cos * na * nb) {
-      ++q.n_folded_edges;
-      mark(faces[0]);
-      mark(faces[1]);
-    }
+  const auto folds = find_folded_edges(m, folded_edge_cos);
+  q.n_folded_edges = folds.size();
+  for (const auto& [i, j] : folds) {
+    mark(i);
+    mark(j);
   }
   const auto hits = find_self_intersections(m);
   q.n_self_intersections = hits.size();

@@ -9,6 +9,11 @@
 
 namespace wear::meshes {
 
+/// The cosine between the normals of two faces across an edge below which the edge is a fold:
+/// the faces lie nearly on each other, a flat fin that no volume mesher accepts (gmsh refused
+/// a worn surface at -0.952 across an element's foot).
+inline constexpr double volume_mesher_fold_cos = -0.95;
+
 struct SurfaceQuality {
   double min_angle_deg = 180;           ///< smallest interior angle of any face [deg]
   double max_aspect_ratio = 0;          ///< longest edge / (2 sqrt(3) inradius); 1 = equilateral
@@ -36,7 +41,12 @@ double min_triangle_quality(const SurfaceMesh& m);
 SurfaceQuality surface_quality(const SurfaceMesh& m,
                                const std::vector<Vec3>* reference_normals = nullptr,
                                double relative_area_tolerance = 1e-10,
-                               double folded_edge_cos = -0.95);
+                               double folded_edge_cos = volume_mesher_fold_cos);
+
+/// Pairs of faces across an edge of two faces whose normals' cosine is below fold_cos (a face
+/// of zero area has no normal and folds nothing: it is degenerate).
+std::vector<std::pair<std::uint32_t, std::uint32_t>>
+find_folded_edges(const SurfaceMesh& m, double fold_cos = volume_mesher_fold_cos);
 
 /// Pairs of faces (i < j) that cross each other. Faces sharing an edge are never tested;
 /// faces sharing one vertex are tested with the edges that avoid the shared vertex.

@@ -9,13 +9,14 @@
 
 namespace wear::meshes {
 
-/// A convex element (label C<j><k>) as it stands on the part.
+/// A convex element (label C<j><k>) as it stands on the part, measured against its foot: the
+/// surface its boundary spans (in plan view, the mean value interpolant of the boundary's
+/// heights), which is the base's plane under an unworn element and follows the worn base's
+/// tilt and waviness around a remnant.
 struct ElementStanding {
-  double top = 0;                ///< [m] its highest vertex (z)
-  double foot = 0;               ///< [m] mean z of the vertices it shares with other wearing labels
-  double volume = 0;             ///< [m^3] between its faces and the plane z = foot
+  double height = 0; ///< [m] the most a vertex of it stands above its foot (z); 0 for a hollow
+  double volume = 0; ///< [m^3] between its faces and its foot, negative below it
   std::map<int, int> neighbours; ///< the wearing labels around it, with the edges it shares
-  double height() const { return top - foot; } ///< [m]
 };
 
 /// Every convex element label of `m` that still borders another wearing label.

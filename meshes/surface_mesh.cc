@@ -257,6 +257,35 @@ VertexFaces vertex_faces(const SurfaceMesh& m) {
   return vf;
 }
 
+// Sorting the half-edges by their vertices pairs each edge's two uses.
+std::vector<std::array<std::uint32_t, 3>> face_neighbours(const SurfaceMesh& m) {
+  struct HalfEdge {
+    std::uint32_t lo, hi, face, slot;
+  };
+  std::vector<HalfEdge> e;
+  e.reserve(3 * m.n_faces());
+  for (std::uint32_t f = 0; f < m.n_faces(); ++f)
+    for (std::uint32_t k = 0; k < 3; ++k) {
+      const auto a = m.triangles[f][k], b = m.triangles[f][(k + 1) % 3];
+      e.push_back({std::min(a, b), std::max(a, b), f, k});
+    }
+  std::sort(e.begin(), e.end(), [](const HalfEdge& x, const HalfEdge& y) {
+    return x.lo != y.lo ? x.lo < y.lo : x.hi < y.hi;
+  });
+  std::vector<std::array<std::uint32_t, 3>> across(m.n_faces());
+  if (e.size() % 2 != 0)
+    throw std::runtime_error("face_neighbours: the surface is not a closed manifold (" +
+                             std::to_string(m.n_faces()) + " faces, an odd number)");
+  for (std::size_t i = 0; i + 1 < e.size(); i += 2) {
+    if (e[i].lo != e[i + 1].lo || e[i].hi != e[i + 1].hi)
+      throw std::runtime_error("face_neighbours: the surface is not a closed manifold (edge " +
+                               std::to_string(e[i].lo) + "-" + std::to_string(e[i].hi) + ")");
+    across[e[i].face][e[i].slot] = e[i + 1].face;
+    across[e[i + 1].face][e[i + 1].slot] = e[i].face;
+  }
+  return across;
+}
+
 namespace {
 // Directed use of edge (a, b) in face f: +1 when f traverses a -> b with a < b.
 int edge_direction(const Triangle& t, std::uint32_t a, std::uint32_t b) {

@@ -136,6 +136,9 @@ struct VertexFaces {
   std::vector<std::uint32_t> offsets, faces;
 };
 VertexFaces vertex_faces(const SurfaceMesh& m);
+/// Per face, the faces across its edges k = 0, 1, 2 (edge k runs from its vertex k to k + 1);
+/// the surface must be a closed manifold (each edge in two faces), else std::runtime_error.
+std::vector<std::array<std::uint32_t, 3>> face_neighbours(const SurfaceMesh& m);
 
 struct ClosednessReport {
   std::size_t n_boundary_edges = 0;    ///< edges with one face (holes)

@@ -463,7 +463,7 @@ void WearingPart::record_life(int stage, const meshes::SurfaceMesh& surface,
          << what << "," << height << "," << volume << "\n";
   };
   for (const auto& [label, e] : life.elements)
-    row(meshes::label::name(label), e.height(), e.volume);
+    row(meshes::label::name(label), e.height, e.volume);
   row("part", life.thinnest, life.volume);
   life_rows_ += rows.str();
   if (writes_)

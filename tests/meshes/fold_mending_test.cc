@@ -3,6 +3,7 @@
 // mended back into a flat top; the box stays closed, its volume and labels are kept, and a
 // vertex that may not move is left as it is.
 #include "meshes/fold_mending.h"
+#include "meshes/mesh_quality.h"
 
 #include <catch2/catch.hpp>
 
@@ -79,7 +80,7 @@ TEST_CASE("a face turned over beside a label boundary is mended, the box kept", 
   m.face_labels.push_back(label::base);
   REQUIRE(check_closed(m).closed());
   REQUIRE(check_closed(m).consistently_oriented());
-  const auto n_folded = count_folded_edges(m, -0.5);
+  const auto n_folded = find_folded_edges(m, -0.5).size();
   REQUIRE(n_folded == 2); // (p, q, v) faces down, against (q, r, v) and (r, p, v)
   const auto area = area_per_label(m);
   const double volume = enclosed_volume(m);
@@ -93,7 +94,7 @@ TEST_CASE("a face turned over beside a label boundary is mended, the box kept", 
     const auto r = mend_folds(m, removable, p_mend);
     CHECK(r.n_folds_before == 2);
     CHECK(r.n_folds_after == 0);
-    CHECK(count_folded_edges(m, -0.5) == 0);
+    CHECK(find_folded_edges(m, -0.5).empty());
     CHECK(r.n_flips + r.n_collapses + r.n_moves >= 1);
     CHECK(m.revision() > revision);
     CHECK(check_closed(m).closed());
