@@ -40,42 +40,78 @@ void cos_sin(double x, double& c, double& s) {
   s = x * (1 + x2 * (-1.0 / 6 + x2 * (1.0 / 120 + x2 * (-1.0 / 5040 + x2 * (1.0 / 362880)))));
 }
 
-/// The exact flow of T_k over tau: q <- q r_k(l_k tau / I_k), with l = R(q)^T L the body-frame
-/// momentum, which the same turn carries along: it rotates by -theta about e_k (theta the
-/// body's turn), so that it is computed from L once per step.
-void turn_about_body_axis(Quaternion& q, Vec3& l, const Vec3& moments, int k, double tau) {
-  const double half = 0.5 * l[k] * tau / moments[k];
-  double c, s;
-  cos_sin(half, c, s);
-  // q r_k with r_k = cos(half) + sin(half) e_k: the product with two non-zero components.
-  const Quaternion a = q;
-  const int i = (k + 1) % 3, j = (k + 2) % 3; // e_i x e_j = e_k
-  double v[3] = {a.x, a.y, a.z};
-  const double w = a.w * c - v[k] * s;
-  const double vk = v[k] * c + a.w * s;
-  const double vi = v[i] * c + v[j] * s;
-  const double vj = v[j] * c - v[i] * s;
-  v[k] = vk, v[i] = vi, v[j] = vj;
-  q = {w, v[0], v[1], v[2]};
-  // l in the turned body frame: rotated by -theta about e_k, cos theta = c^2 - s^2,
-  // sin theta = 2 s c.
-  const double ct = c * c - s * s, st = 2 * s * c;
-  const double li = l[i], lj = l[j];
-  l[i] = ct * li + st * lj;
-  l[j] = -st * li + ct * lj;
+/// Component k of the vector part of q, k known at compile time.
+template <int K>
+double& component(Quaternion& q) {
+  if constexpr (K == 0)
+    return q.x;
+  else if constexpr (K == 1)
+    return q.y;
+  else
+    return q.z;
+}
+
+/// The exact flow of T_k over tau for N bodies: q <- q r_k(l_k tau / I_k), with l = R(q)^T L
+/// the body-frame momentum, which the same turn carries along: it rotates by -theta about
+/// e_k (theta the body's turn), so that it is computed from L once per step. The bodies'
+/// turns are independent chains of dependent operations (a division, a series, products);
+/// taken side by side, a core overlaps them.
+template <int K, int N>
+void turn_about_body_axis(Quaternion (&q)[N], Vec3 (&l)[N], const Vec3* moments, double tau) {
+  constexpr int I = (K + 1) % 3, J = (K + 2) % 3; // e_i x e_j = e_k
+  for (int n = 0; n < N; ++n) {
+    const double half = 0.5 * l[n][K] * tau / moments[n][K];
+    double c, s;
+    cos_sin(half, c, s);
+    // q r_k with r_k = cos(half) + sin(half) e_k: the product with two non-zero components.
+    Quaternion& a = q[n];
+    const double w = a.w * c - component<K>(a) * s;
+    const double vk = component<K>(a) * c + a.w * s;
+    const double vi = component<I>(a) * c + component<J>(a) * s;
+    const double vj = component<J>(a) * c - component<I>(a) * s;
+    a.w = w, component<K>(a) = vk, component<I>(a) = vi, component<J>(a) = vj;
+    // l in the turned body frame: rotated by -theta about e_k, cos theta = c^2 - s^2,
+    // sin theta = 2 s c.
+    const double ct = c * c - s * s, st = 2 * s * c;
+    const double li = l[n][I], lj = l[n][J];
+    l[n][I] = ct * li + st * lj;
+    l[n][J] = -st * li + ct * lj;
+  }
+}
+
+/// rotate_freely for the N bodies at q, L and moments.
+template <int N>
+void rotate_bodies(Quaternion* q, const Vec3* L, const Vec3* moments, double dt) {
+  const double h = 0.5 * dt;
+  Quaternion a[N];
+  Vec3 l[N];
+  for (int n = 0; n < N; ++n) {
+    a[n] = q[n];
+    l[n] = rotate_back(q[n], L[n]);
+  }
+  turn_about_body_axis<0>(a, l, moments, h);
+  turn_about_body_axis<1>(a, l, moments, h);
+  turn_about_body_axis<2>(a, l, moments, dt);
+  turn_about_body_axis<1>(a, l, moments, h);
+  turn_about_body_axis<0>(a, l, moments, h);
+  for (int n = 0; n < N; ++n)
+    q[n] = normalized(a[n]);
 }
 
 } // namespace
 
 void rotate_freely(Quaternion& q, const Vec3& L, const Vec3& moments, double dt) {
-  const double h = 0.5 * dt;
-  Vec3 l = rotate_back(q, L);
-  turn_about_body_axis(q, l, moments, 0, h);
-  turn_about_body_axis(q, l, moments, 1, h);
-  turn_about_body_axis(q, l, moments, 2, dt);
-  turn_about_body_axis(q, l, moments, 1, h);
-  turn_about_body_axis(q, l, moments, 0, h);
-  q = normalized(q);
+  rotate_bodies<1>(&q, &L, &moments, dt);
+}
+
+void rotate_freely(std::size_t n, Quaternion* q, const Vec3* L, const Vec3* moments, double dt) {
+  // Four side by side; each body's operations are those of the single call, so the result
+  // does not depend on where a body falls in the blocks.
+  std::size_t b = 0;
+  for (; b + 4 <= n; b += 4)
+    rotate_bodies<4>(q + b, L + b, moments + b, dt);
+  for (; b < n; ++b)
+    rotate_bodies<1>(q + b, L + b, moments + b, dt);
 }
 
 } // namespace wear::dem

@@ -4,6 +4,8 @@
 // Leimkuhler & McLachlan 1997; the NO_SQUISH scheme of Miller et al. 2002 is the same map).
 #include "meshes/vec3.h"
 
+#include <cstddef>
+
 namespace wear::dem {
 
 using meshes::Vec3;
@@ -59,5 +61,9 @@ inline double rotational_energy(const Quaternion& q, const Vec3& moments, const 
 /// axis 3 over dt, then 2 and 1 over dt/2: second order, time-reversible and symplectic, the
 /// angular momentum kept exactly and the energy error bounded (no drift). q is renormalized.
 void rotate_freely(Quaternion& q, const Vec3& L, const Vec3& moments, double dt);
+
+/// rotate_freely for n bodies, body b with q[b], L[b] and moments[b]: the same result per body
+/// as n single calls, faster (the bodies' operations overlap).
+void rotate_freely(std::size_t n, Quaternion* q, const Vec3* L, const Vec3* moments, double dt);
 
 } // namespace wear::dem

@@ -84,6 +84,8 @@ void System::drift_clumps(int thread, bool close_previous, double& max_moved2) {
   auto& p = particles;
   const double h = 0.5 * dt_, vmax2 = settings.max_speed * settings.max_speed;
   const auto [b0, b1] = body_range(thread);
+  // Three passes over the bodies, each body's operations in the order of one pass: the kicks
+  // and the drift, the rotations side by side (rigid_body.h), the members placed.
   for (std::size_t b = b0; b < b1; ++b) {
     const double im = 1.0 / c.mass[b];
     const Vec3 f = c.force[b], t = c.torque[b];
@@ -94,7 +96,11 @@ void System::drift_clumps(int thread, bool close_previous, double& max_moved2) {
     c.velocity[b] += f * (h * im);
     c.angular_momentum[b] += t * h;
     c.position[b] += c.velocity[b] * dt_;
-    rotate_freely(c.orientation[b], c.angular_momentum[b], c.moments[b], dt_);
+  }
+  rotate_freely(b1 - b0, c.orientation.data() + b0, c.angular_momentum.data() + b0,
+                c.moments.data() + b0, dt_);
+  double moved2 = max_moved2; // a local: the reference would be stored at every member
+  for (std::size_t b = b0; b < b1; ++b) {
     // The force is used; it restarts from gravity for this step's evaluation.
     c.force[b] = settings.gravity * c.mass[b];
     c.torque[b] = {};
@@ -110,9 +116,10 @@ void System::drift_clumps(int thread, bool close_previous, double& max_moved2) {
         error_particle_[thread] = long(i);
         error_kind_[thread] = std::isfinite(v2) ? too_fast : not_finite;
       }
-      max_moved2 = std::max(max_moved2, meshes::norm2(p.position[i] - reference_position_[i]));
+      moved2 = std::max(moved2, meshes::norm2(p.position[i] - reference_position_[i]));
     }
   }
+  max_moved2 = moved2;
 }
 
 void System::close_clumps(int thread) {
