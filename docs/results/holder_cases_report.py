@@ -354,8 +354,9 @@ def life_section(C, P):
             t = interpolate(h, xs, [plain.part[j][0] for j in plain.stages])
             thin = f"{t * 1e3:.2f}" if t is not None else "-"
         ev = life.element_volume(k)
+        extremes = f"{max(heights):.2f} / {min(heights):.2f}" if heights else "none left"
         w.append(f"| {k} | {h:.0f} | {life.n_standing(k)} | {ev * 1e9:.0f} | {100 * ev / v0:.1f} | "
-                 f"{max(heights):.2f} / {min(heights):.2f} | {life.part[k][0] * 1e3:.2f} | {thin} |")
+                 f"{extremes} | {life.part[k][0] * 1e3:.2f} | {thin} |")
     w.append("")
     half = hours_at_fraction(life.element_fraction(), 0.5)
     w.append("**Half the element volume gone** at "
