@@ -218,13 +218,17 @@ def has_revolution(path):
     return run_summary.count_revolutions(path) > 0
 
 
-def load_runs(root, calibration):
-    """The study's runs found in root ({name: Run}), those not found (with "started, no
-    revolution done yet" when the folder is there) and the calibration (None when absent);
-    stops on a missing study pair, mixed engines or mixed Archard coefficients."""
-    names = ["plain", "convex", "plain-seed2", "plain-seed3", "convex-seed2", "convex-seed3",
-             "plain-s7", "convex-s7", "plain-s4", "convex-s4", "plain-s2", "convex-s2", "plain-reference",
-             "convex-reference"]
+STUDY_RUNS = ["plain", "convex", "plain-seed2", "plain-seed3", "convex-seed2", "convex-seed3", "plain-s7",
+              "convex-s7", "plain-s4", "convex-s4", "plain-s2", "convex-s2", "plain-reference", "convex-reference"]
+
+
+def load_runs(root, calibration, names=STUDY_RUNS, calibrated_file="cases/reference-study/calibration.prm",
+              run_script="cases/reference-study/run.sh"):
+    """The study's runs found in root ({name: Run}, `names` in that order), those not found
+    (with "started, no revolution done yet" when the folder is there) and the calibration
+    (None when absent); stops on a missing plain or convex run, mixed engines or mixed Archard
+    coefficients, or a calibration whose coefficient the runs do not use (the file they include
+    is `calibrated_file`)."""
     runs, missing = {}, []
     for n in names:
         p = os.path.join(root, n)
@@ -234,7 +238,7 @@ def load_runs(root, calibration):
             missing.append(n + (" (started, no revolution done yet)" if os.path.isdir(p) else ""))
     for n in ("plain", "convex"):
         if n not in runs:
-            fail(f"the study run '{os.path.join(root, n)}' is missing (cases/reference-study/run.sh)")
+            fail(f"the study run '{os.path.join(root, n)}' is missing ({run_script})")
     calibration = calibration or CALIBRATION
     cal = Run(calibration) if os.path.isfile(os.path.join(calibration, "summary.csv")) else None
     engines = {r.engine for r in runs.values()} | ({cal.engine} if cal else set())
@@ -249,8 +253,18 @@ def load_runs(root, calibration):
     written = calibrated_alpha(cal.path) if cal else None
     if written is not None and float(written) != float(alphas["plain"] or "nan"):
         fail(f"the calibration '{cal.path}' calibrated alpha = {written} 1/Pa (its calibration.prm), but the "
-             f"study's runs use {alphas['plain']}; copy it to cases/reference-study/calibration.prm and re-run")
+             f"study's runs use {alphas['plain']}; copy it to {calibrated_file} and re-run")
     return runs, missing, cal
+
+
+def seed_values(runs, t=T56):
+    """The seeds' runs of each sample ({"plain": [seed 1, 2, 3: Run or None], "convex": ...}), their
+    wear at t revolutions after steady state (None where not run or not reached) and the
+    convex / plain ratio of each seed both samples reached."""
+    seed_runs = {k: [runs.get(k + s) for s in ("", "-seed2", "-seed3")] for k in ("plain", "convex")}
+    vals = {k: [at(*r.cumulative(), t) if r else None for r in rs] for k, rs in seed_runs.items()}
+    ratios = [c / p for p, c in zip(vals["plain"], vals["convex"]) if p and c]
+    return seed_runs, vals, ratios
 
 
 def calibrated_alpha(path):
@@ -613,8 +627,7 @@ def report(runs, missing, cal, out):
 
     # Seeds
     w.append("## Spread over insertion seeds (2 revolutions after steady state, 56 h)\n")
-    seed_runs = {k: [runs.get(k + t) for t in ("", "-seed2", "-seed3")] for k in ("plain", "convex")}
-    vals = {k: [at(*r.cumulative(), T56) if r else None for r in rs] for k, rs in seed_runs.items()}
+    seed_runs, vals, ratios = seed_values(runs)
     w.append("| sample | seed 1 | seed 2 | seed 3 | mean +- 95 % |")
     w.append("|---|---|---|---|---|")
     for k in ("plain", "convex"):
@@ -623,11 +636,10 @@ def report(runs, missing, cal, out):
         cells = ["not run" if r is None else ("not reached" if v is None else fmt(v))
                  for r, v in zip(seed_runs[k], vals[k])]
         w.append(f"| {k} | " + " | ".join(cells) + f" | {fmt(m)} +- {fmt(h)} (n = {len(got)}) |")
-    pairs = [(p, c) for p, c in zip(vals["plain"], vals["convex"]) if p and c]
-    if pairs:
-        m, h = interval([c / p for p, c in pairs])
-        w.append(f"\nconvex / plain per seed: {', '.join(f'{c / p:.3f}' for p, c in pairs)}; mean {m:.3f} +- {fmt(h, 3)} "
-                 f"(95 %, {len(pairs)} seed{'s' if len(pairs) > 1 else ''}).\n")
+    if ratios:
+        m, h = interval(ratios)
+        w.append(f"\nconvex / plain per seed: {', '.join(f'{x:.3f}' for x in ratios)}; mean {m:.3f} +- {fmt(h, 3)} "
+                 f"(95 %, {len(ratios)} seed{'s' if len(ratios) > 1 else ''}).\n")
 
     w += node_moving_section(runs)
 
