@@ -46,6 +46,17 @@ T56, T184 = 56.0 / HOURS_PER_REV, 184.0 / HOURS_PER_REV
 RUNS = "cases/reference-study/results"
 CALIBRATION = "cases/calibration/results/calibration-plain"
 T_95 = {1: 12.706, 2: 4.303, 3: 3.182, 4: 2.776, 5: 2.571}  # Student t, two-sided 95 %
+# What the bottom layer's figures are (docs/theory.md section 7, coupling's tester evaluation).
+BOTTOM_LAYER = (
+    "**The bottom layer**, at each of the revolution's evaluation samples (`Samples per revolution`): "
+    "the grains whose centre lies over the sample's footprint and whose lowest point lies less than "
+    "one mean diameter (the PSD's, at the run's scaling factor) above the wear surface under it; a "
+    "clump counts as one grain (its centre of mass over the footprint, its gap the least over its "
+    "members). Its **speed** is |v| of the grain's centre of mass (not of its members' points, which "
+    "carry omega x arm); its **spin** is |omega| of the grain, in the space frame, which is the "
+    "tester's and the sample's (the sample stands still, the floor turns under the bed). A "
+    "revolution's mean pools every bottom grain of every sample (a grain in n samples counts n "
+    "times); the table's figure is the mean of the revolutions' means from the first staged one.")
 
 
 def fail(message):
@@ -624,6 +635,7 @@ def report(runs, missing, cal, out):
                  f"{mean('bottom_spin_mean_rad_s'):.2f} | {cv['cv_speed']:.3f} | {cv['cv_bed_height']:.3f} | "
                  f"{cv['cv_wear_rate']:.3f} |")
     w.append("\nC_v: of the steady window the run judged itself by (revolution of its steady judgement).\n")
+    w.append(BOTTOM_LAYER + "\n")
 
     # Seeds
     w.append("## Spread over insertion seeds (2 revolutions after steady state, 56 h)\n")

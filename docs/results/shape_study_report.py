@@ -28,8 +28,8 @@ import matplotlib
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from reference_study_report import (T56, T184, Run, at, calibrated_alpha, fail, fmt, interval,  # noqa: E402
-                                    load_runs, parse_args, seed_values, write_atomic)
+from reference_study_report import (BOTTOM_LAYER, T56, T184, at, calibrated_alpha, fail, fmt,  # noqa: E402
+                                    interval, load_runs, parse_args, seed_values, write_atomic)
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -39,17 +39,6 @@ RUNS = "cases/shape-study/results"
 SPHERES = "cases/reference-study/results"
 CLUMP_RUNS = ["plain", "convex", "plain-seed2", "plain-seed3", "convex-seed2", "convex-seed3"]
 PAIR_COMMAND = "cases/reference-study/run.sh cases/shape-study/plain.prm cases/shape-study/convex.prm"
-# What the bottom layer's figures are (docs/theory.md section 7, coupling's tester evaluation).
-BOTTOM_LAYER = (
-    "**The bottom layer**, at each of the revolution's evaluation samples (`Samples per revolution`): "
-    "the grains whose centre lies over the sample's footprint and whose lowest point lies less than "
-    "one mean diameter (the PSD's, at the run's scaling factor) above the wear surface under it; a "
-    "clump counts as one grain (its centre of mass over the footprint, its gap the least over its "
-    "members). Its **speed** is |v| of the grain's centre of mass (not of its members' points, which "
-    "carry omega x arm); its **spin** is |omega| of the grain, in the space frame, which is the "
-    "tester's and the sample's (the sample stands still, the floor turns under the bed). A "
-    "revolution's mean pools every bottom grain of every sample (a grain in n samples counts n "
-    "times); the table's figure is the mean of the revolutions' means from the first staged one.")
 
 
 def shape(run):
