@@ -278,6 +278,20 @@ def seed_values(runs, t=T56):
     return seed_runs, vals, ratios
 
 
+def seed_table(runs, t=T56):
+    """The seeds' table at t revolutions after steady state: per sample (name, [seed 1, 2, 3 as
+    text, "mean +- 95 % (n = k)"]), and the convex / plain ratio of each seed both reached."""
+    seed_runs, vals, ratios = seed_values(runs, t)
+    rows = []
+    for k in ("plain", "convex"):
+        got = [v for v in vals[k] if v is not None]
+        m, h = interval(got) if got else (float("nan"), float("nan"))
+        cells = ["not run" if r is None else ("not reached" if v is None else fmt(v))
+                 for r, v in zip(seed_runs[k], vals[k])]
+        rows.append((k, cells + [f"{fmt(m)} +- {fmt(h)} (n = {len(got)})"]))
+    return rows, ratios
+
+
 def calibrated_alpha(path):
     """The Archard coefficient `wearsim calibrate` wrote into <path>/calibration.prm, or None."""
     f = os.path.join(path, "calibration.prm")
@@ -639,15 +653,10 @@ def report(runs, missing, cal, out):
 
     # Seeds
     w.append("## Spread over insertion seeds (2 revolutions after steady state, 56 h)\n")
-    seed_runs, vals, ratios = seed_values(runs)
+    rows, ratios = seed_table(runs)
     w.append("| sample | seed 1 | seed 2 | seed 3 | mean +- 95 % |")
     w.append("|---|---|---|---|---|")
-    for k in ("plain", "convex"):
-        got = [v for v in vals[k] if v is not None]
-        m, h = interval(got) if got else (float("nan"), float("nan"))
-        cells = ["not run" if r is None else ("not reached" if v is None else fmt(v))
-                 for r, v in zip(seed_runs[k], vals[k])]
-        w.append(f"| {k} | " + " | ".join(cells) + f" | {fmt(m)} +- {fmt(h)} (n = {len(got)}) |")
+    w += [f"| {k} | " + " | ".join(cells) + " |" for k, cells in rows]
     if ratios:
         m, h = interval(ratios)
         w.append(f"\nconvex / plain per seed: {', '.join(f'{x:.3f}' for x in ratios)}; mean {m:.3f} +- {fmt(h, 3)} "

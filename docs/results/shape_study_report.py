@@ -29,7 +29,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from reference_study_report import (BOTTOM_LAYER, T56, T184, at, calibrated_alpha, fail, fmt,  # noqa: E402
-                                    interval, load_runs, parse_args, seed_values, write_atomic)
+                                    interval, load_runs, parse_args, seed_table, write_atomic)
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -162,13 +162,8 @@ def seeds_section(clumps, spheres):
          "| grains | sample | seed 1 | seed 2 | seed 3 | mean +- 95 % |", "|---|---|---|---|---|---|"]
     lines = []
     for grains, runs in (("clumps, s = 4", clumps), ("spheres, s = 3", spheres)):
-        seed_runs, vals, ratios = seed_values(runs)
-        for k in ("plain", "convex"):
-            got = [v for v in vals[k] if v is not None]
-            m, h = interval(got) if got else (float("nan"), float("nan"))
-            cells = ["not run" if r is None else ("not reached" if v is None else fmt(v))
-                     for r, v in zip(seed_runs[k], vals[k])]
-            w.append(f"| {grains} | {k} | " + " | ".join(cells) + f" | {fmt(m)} +- {fmt(h)} (n = {len(got)}) |")
+        rows, ratios = seed_table(runs)
+        w += [f"| {grains} | {k} | " + " | ".join(cells) + " |" for k, cells in rows]
         if ratios:
             m, h = interval(ratios)
             lines.append(f"- {grains}: convex / plain per seed {', '.join(f'{x:.3f}' for x in ratios)}; "
