@@ -316,6 +316,15 @@ def element_rows(run, upto):
     return elements, total - float(per.sum()), total
 
 
+def mark_hours(ax):
+    """The laboratory's 56 h and 184 h marked on an axis of revolutions after steady state, whose
+    ordinate is the cumulative wear."""
+    for t, lab in ((T56, "56 h"), (T184, "184 h")):
+        ax.axvline(t, color="grey", lw=0.6, ls=":")
+        ax.text(t, ax.get_ylim()[1] * 0.97, lab, ha="right", va="top", fontsize=8, rotation=90)
+    ax.set_ylabel("cumulative wear of the wear face [mm$^3$]")
+
+
 def plot_wear(runs, out):
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
     for name, colour in (("plain", "tab:blue"), ("convex", "tab:orange")):
@@ -328,11 +337,8 @@ def plot_wear(runs, out):
         ax.plot(xx, f["a"] * xx, "-", color=colour, lw=0.8, label=f"{name}: linear fit")
         if not math.isnan(f["b"]):
             ax.plot(xx, f["b"] * xx * xx + f["c"] * xx, "--", color=colour, lw=0.8, label=f"{name}: quadratic fit")
-    for t, lab in ((T56, "56 h"), (T184, "184 h")):
-        ax.axvline(t, color="grey", lw=0.6, ls=":")
-        ax.text(t, ax.get_ylim()[1] * 0.97, lab, ha="right", va="top", fontsize=8, rotation=90)
+    mark_hours(ax)
     ax.set_xlabel("revolutions after steady state (28 h each)")
-    ax.set_ylabel("cumulative wear of the wear face [mm$^3$]")
     ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(out, "reference_study_wear.png"), dpi=120)
@@ -524,6 +530,18 @@ def size_trend_section(runs, missing):
     return w
 
 
+def runs_table(runs, cal, cal_name):
+    """The table of the runs and their calibration (named cal_name): case, schedule, how far."""
+    w = ["| run | case | schedule | revolutions done | staged stages done | wall time [h] |", "|---|---|---|---|---|---|"]
+    for n, r in runs.items():
+        w.append(f"| {n} | `{r.case}` | {r.planned} | {int(r.rows[-1]['revolution'])} | {r.n_staged} | "
+                 f"{r.wall_hours():.1f} |")
+    if cal:
+        w.append(f"| {cal_name} | `{cal.case}` | `wearsim dem` to steady + 2 | {int(cal.rows[-1]['revolution'])} | - | "
+                 f"{cal.wall_hours():.1f} |")
+    return w + [""]
+
+
 def report(runs, missing, cal, out):
     P, C = runs["plain"], runs["convex"]
     w = []
@@ -533,15 +551,7 @@ def report(runs, missing, cal, out):
     w.append(f"**Engine version** {P.engine} (every run below). **Case files** "
              "`cases/reference-study/*.prm`, the calibrated coefficient from "
              "`cases/reference-study/calibration.prm`.\n")
-    w.append("| run | case | schedule | revolutions done | staged stages done | wall time [h] |")
-    w.append("|---|---|---|---|---|---|")
-    for n, r in runs.items():
-        w.append(f"| {n} | `{r.case}` | {r.planned} | {int(r.rows[-1]['revolution'])} | {r.n_staged} | "
-                 f"{r.wall_hours():.1f} |")
-    if cal:
-        w.append(f"| calibration | `{cal.case}` | `wearsim dem` to steady + 2 | {int(cal.rows[-1]['revolution'])} | - | "
-                 f"{cal.wall_hours():.1f} |")
-    w.append("")
+    w += runs_table(runs, cal, "calibration")
     w.append("Wall time: the revolutions' and the stages' own clocks (`summary.csv`, `stages.csv`), "
              "with whatever else ran on the machine then (`cases/reference-study/README.md`, Status).\n")
     if missing or not cal:

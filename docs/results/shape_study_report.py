@@ -29,7 +29,8 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from reference_study_report import (BOTTOM_LAYER, T56, T184, at, calibrated_alpha, fail, fmt,  # noqa: E402
-                                    interval, load_runs, parse_args, seed_table, write_atomic)
+                                    interval, load_runs, mark_hours, parse_args, runs_table, seed_table,
+                                    write_atomic)
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -98,15 +99,7 @@ def flow_means(run):
 
 
 def runs_section(clumps, missing, cal):
-    w = ["| run | case | schedule | revolutions done | staged stages done | wall time [h] |",
-         "|---|---|---|---|---|---|"]
-    for n, r in clumps.items():
-        w.append(f"| {n} | `{r.case}` | {r.planned} | {int(r.rows[-1]['revolution'])} | {r.n_staged} | "
-                 f"{r.wall_hours():.1f} |")
-    if cal:
-        w.append(f"| calibration-plain | `{cal.case}` | `wearsim dem` to steady + 2 | "
-                 f"{int(cal.rows[-1]['revolution'])} | - | {cal.wall_hours():.1f} |")
-    w.append("")
+    w = runs_table(clumps, cal, "calibration-plain")
     if missing or not cal:
         w.append("**Not run** with this engine: " + ", ".join(missing + ([] if cal else ["calibration-plain"])) + ".\n")
     return w
@@ -225,11 +218,8 @@ def plot(clumps, spheres, out):
             n, cum = r.cumulative()
             a1.plot(np.concatenate([[0], n]), np.concatenate([[0], cum]), ls, marker="o", ms=3, color=colour,
                     label=f"{name}, {g}")
-    for t, lab in ((T56, "56 h"), (T184, "184 h")):
-        a1.axvline(t, color="grey", lw=0.6, ls=":")
-        a1.text(t, a1.get_ylim()[1] * 0.97, lab, ha="right", va="top", fontsize=8, rotation=90)
+    mark_hours(a1)
     a1.set_xlabel("revolutions from the first staged one (28 h each)")
-    a1.set_ylabel("cumulative wear of the wear face [mm$^3$]")
     a1.legend(fontsize=8)
     bars = [("plain", "clumps", clumps["plain"], clumps["convex"], "tab:blue", None),
             ("plain", "spheres", spheres["plain-s4"], spheres["convex-s4"], "tab:blue", "//"),
