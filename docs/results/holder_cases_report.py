@@ -49,12 +49,18 @@ REPO = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)),
 NAMES = {"stress-plain": "cases/stress/plain.prm", "stress-convex": "cases/stress/convex.prm",
          "wear-out-convex": "cases/wear-out/convex.prm", "wear-out-plain": "cases/wear-out/plain.prm",
          "wear-out-convex-fine": "cases/wear-out/convex-fine.prm",
-         "wear-out-convex-a10": "cases/wear-out/convex-a10.prm"}
+         "wear-out-convex-a10": "cases/wear-out/convex-a10.prm",
+         "wear-out-convex-curved": "cases/wear-out/convex-curved.prm",
+         "wear-out-convex-curved-fine": "cases/wear-out/convex-curved-fine.prm"}
 STUDY_ENGINE = {n: ("cases/wear-out/ENGINE" if n.startswith("wear-out") else "cases/reference-study/ENGINE")
                 for n in NAMES}
 # The convergence of the pattern's life: the wear-out's convex run (mesh size h, amplification
-# A) beside the same at h/2 and at A/2.
-CONVERGENCE = (("wear-out-convex", "h, A"), ("wear-out-convex-fine", "h/2, A"), ("wear-out-convex-a10", "h, A/2"))
+# A) beside the same at h/2 and at A/2; and h beside h/2 with the first mesh refined at the
+# curved element surfaces. Each: (run, what it is, the run it is compared with).
+CONVERGENCE = (("wear-out-convex", "h, A", None), ("wear-out-convex-fine", "h/2, A", "wear-out-convex"),
+               ("wear-out-convex-a10", "h, A/2", "wear-out-convex"),
+               ("wear-out-convex-curved", "h, A, curvature-refined first mesh", None),
+               ("wear-out-convex-curved-fine", "h/2, A, curvature-refined first mesh", "wear-out-convex-curved"))
 # Each run's summary beside its case file: cases/<case>/results/<run>.
 SUMMARIES = {n: os.path.join(REPO, os.path.dirname(prm), "results", n) for n, prm in NAMES.items()}
 
@@ -168,7 +174,8 @@ def plot_wear_out(runs, out):
     if life:
         f = life.element_fraction()
         a3.plot([h for h, _ in f], [100 * x for _, x in f], "o-", color="tab:green", ms=3, label="h, A")
-        for (name, what), style in zip(CONVERGENCE[1:], (("tab:olive", "^:"), ("tab:cyan", "v:"))):
+        styles = (("tab:olive", "^:"), ("tab:cyan", "v:"), ("tab:purple", "d-."), ("tab:pink", "x-."))
+        for (name, what, _), style in zip(CONVERGENCE[1:], styles):
             other = Life(runs[name]) if name in runs else None
             if other:
                 g = other.element_fraction()
@@ -300,30 +307,35 @@ def wear_out_section(runs):
 
 
 def convergence_section(runs):
-    """The hours at which half the element volume is gone, at h and A, h/2 and A/2."""
+    """The hours at which half the element volume is gone, at h and A, h/2 and A/2, and at h and
+    h/2 with the first mesh refined at the curved element surfaces; each against its pair's
+    first run, beside the elements' volume on the first mesh (what the mesh size changes most)."""
     w = ["**Convergence of the pattern's life**: the hours at which half the convex elements' volume is "
          "gone (`part_life.csv`, linear between stages), with the sample mesh halved "
-         "(`convex-fine.prm`) and the amplification halved (`convex-a10.prm`); each differs from "
-         "the wear-out run by the percentage given.\n",
+         "(`convex-fine.prm`) and the amplification halved (`convex-a10.prm`), and at h and h/2 with the "
+         "first mesh refined at the curved element surfaces (`convex-curved.prm`, `convex-curved-fine.prm`); "
+         "each differs from the run named by the percentage given. The elements' volume on the first "
+         "mesh is the meshed one (the 23 half-ellipsoids hold 23 x 2/3 pi a b h = 4,624 mm^3 on the "
+         "reference pattern).\n",
          "| run | mesh size, amplification | sample mesh [mm] | amplification | staged stages | "
-         "half the element volume gone at [h] | against h, A |", "|---|---|---|---|---|---|---|"]
-    base = None
-    for name, what in CONVERGENCE:
+         "elements' volume on the first mesh [mm^3] | half the element volume gone at [h] | against |",
+         "|---|---|---|---|---|---|---|---|"]
+    half = {}
+    for name, what, against in CONVERGENCE:
         run = runs.get(name)
         if run is None:
-            w.append(f"| {name} | {what} | | | | not run | |")
+            w.append(f"| {name} | {what} | | | | | not run | |")
             continue
         life = Life(run)
-        half = hours_at_fraction(life.element_fraction(), 0.5) if life else None
-        if name == "wear-out-convex":
-            base = half
+        half[name] = hours_at_fraction(life.element_fraction(), 0.5) if life else None
         left = (f"not yet ({100 * life.element_volume(life.stages[-1]) / life.element_volume(life.stages[0]):.1f} % "
                 f"left after {life.hours[life.stages[-1]]:.0f} h)" if life else "no part life")
-        diff = (f"{100 * (half / base - 1):+.1f} %" if half is not None and base and name != "wear-out-convex"
-                else "")
+        start = f"{life.element_volume(life.stages[0]) * 1e9:,.0f}" if life else ""
+        base = half.get(against)
+        diff = f"{100 * (half[name] / base - 1):+.1f} % against {against}" if half[name] is not None and base else ""
         w.append(f"| {name} | {what} | {float(run.params.get('Mesh size', 'nan')) * 1e3:g} | "
-                 f"{run.params.get('Amplification', '?')} | {len(staged(run))} | "
-                 f"{f'{half:.0f}' if half is not None else left} | {diff} |")
+                 f"{run.params.get('Amplification', '?')} | {len(staged(run))} | {start} | "
+                 f"{f'{half[name]:.0f}' if half[name] is not None else left} | {diff} |")
     w.append("")
     return w
 
