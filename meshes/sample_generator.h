@@ -25,7 +25,10 @@ struct GeneratedSample {
   double tetrahedral_volume = 0;    ///< [m^3] sum of tetrahedron volumes
   std::map<int, double> exact_area; ///< [m^2] per label from the OpenCASCADE model
   double exact_volume = 0;          ///< [m^3] of the OpenCASCADE solid
-  double seconds = 0;               ///< wall time of the generation
+  /// [m^3] the convex elements above the base top in the OpenCASCADE solid (its volume less
+  /// the base block's); 0 for a plain sample
+  double exact_element_volume = 0;
+  double seconds = 0; ///< [s] wall time of the generation
 };
 
 /// Sets the sample's mesh size on the current gmsh model: a field growing linearly from
@@ -44,6 +47,25 @@ int set_sample_size_field(const SampleGeometry& s, const Vec3& up = {0, 0, 1},
 /// tetrahedra in the tester's frame (exact areas and volume are the solid's, unmoved).
 GeneratedSample generate_sample(const SampleGeometry& s, const std::string& msh_path = "",
                                 const SamplePlacement* placement = nullptr);
+
+/// The meshed convex elements' volume above the base top against the CAD's, of a sample
+/// generated in its own frame (no placement). A mesh coarser than the elements' footprint
+/// without curvature refinement cuts the half-ellipsoids' flanks: on the reference pattern the
+/// meshed elements lack 4.4 % of their volume at 1.5 mm, 14 % at 3 mm and 29 % at 5 mm; with
+/// the refinement 3.0 % at 3 mm.
+struct ElementVolume {
+  double meshed = 0; ///< [m^3] sum over the element labels of the volume above the base top
+  double exact = 0;  ///< [m^3] GeneratedSample::exact_element_volume
+  /// 1 - meshed / exact, the fraction the mesh lacks (negative: it holds more); 0 without
+  /// elements
+  double deficit() const { return exact > 0 ? 1 - meshed / exact : 0; }
+};
+ElementVolume element_volume(const GeneratedSample& g, const SampleGeometry& s);
+
+/// A warning naming the parameters when the meshed elements lack more than `tolerance` of the
+/// CAD's volume (the elements' wear and life scale with their volume), or "" when they do not.
+std::string element_volume_warning(const GeneratedSample& g, const SampleGeometry& s,
+                                   double tolerance = 0.05);
 
 /// The roles of the sample's labels: the underside clamped, the base top and every convex
 /// element wearing, the sides held (in a holder) or free.

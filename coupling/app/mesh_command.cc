@@ -3,7 +3,8 @@
 // Per label it reports the face count, the surface area and, for convex elements, the
 // element volume from the surface (divergence theorem over the element's faces relative to
 // the base top plane). The whole-sample volume is reported from the surface and, when a
-// volume mesh exists, from the tetrahedra.
+// volume mesh exists, from the tetrahedra; the elements' together against the CAD's, with a
+// warning when the mesh cuts more than 5 % of them away (meshes::element_volume_warning).
 #include "coupling/app/mesh_command.h"
 
 #include "meshes/atomic_file.h"
@@ -65,6 +66,16 @@ void run_mesh_command(const CaseParameters& p, std::ostream& log) {
                 g.surface.n_faces(), meshes::total_area(g.surface),
                 meshes::enclosed_volume(g.surface), g.tetrahedral_volume, g.exact_volume);
   log << line;
+  if (s.convex) {
+    const auto v = meshes::element_volume(g, s);
+    std::snprintf(line, sizeof line,
+                  "elements: %.6e m^3 above the base top (surface), %.6e m^3 (CAD), %.1f %% "
+                  "less\n",
+                  v.meshed, v.exact, 100 * v.deficit());
+    log << line;
+    if (const auto warning = meshes::element_volume_warning(g, s); !warning.empty())
+      log << "warning: " << warning << "\n";
+  }
   std::snprintf(line, sizeof line,
                 "walls: floor %zu, inner %zu, outer %zu, consolidator %zu, holder %zu triangles\n",
                 walls.floor.n_faces(), walls.inner.n_faces(), walls.outer.n_faces(),

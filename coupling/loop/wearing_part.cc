@@ -114,6 +114,8 @@ WearingPart::WearingPart(const CaseParameters& p, std::size_t index, dem::SceneW
     meshes::SampleGeometry sg = p.geometry.sample;
     sg.volume_mesh = true;
     const auto g = meshes::generate_sample(sg, msh);
+    if (const auto warning = meshes::element_volume_warning(g, sg); !warning.empty())
+      log << "warning: part '" << name_ << "': " << warning << "\n";
     surface = g.surface;
     surface.roles = meshes::sample_roles(held_sides(p, wall.parameters));
     n_tetrahedra = g.n_tetrahedra;

@@ -38,7 +38,8 @@ import matplotlib
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from reference_study_report import (Run, fail, fmt, has_revolution, parse_args,  # noqa: E402
                                     prm_settings, write_atomic)
-from wear_out_life import Life, cumulative_ratio, hours_at_fraction, interpolate, rate_ratio, staged  # noqa: E402
+from wear_out_life import (Life, cumulative_ratio, element_label_wear, hours_at_fraction, interpolate,  # noqa: E402
+                           rate_ratio, staged)
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -61,6 +62,11 @@ CONVERGENCE = (("wear-out-convex", "h, A", None), ("wear-out-convex-fine", "h/2,
                ("wear-out-convex-a10", "h, A/2", "wear-out-convex"),
                ("wear-out-convex-curved", "h, A, curvature-refined first mesh", None),
                ("wear-out-convex-curved-fine", "h/2, A, curvature-refined first mesh", "wear-out-convex-curved"))
+# Each run's colour and line in the plots.
+STYLES = {"stress-plain": ("tab:blue", "o-"), "stress-convex": ("tab:orange", "o-"),
+          "wear-out-convex": ("tab:green", "s-"), "wear-out-plain": ("tab:purple", "s-"),
+          "wear-out-convex-fine": ("tab:olive", "^:"), "wear-out-convex-a10": ("tab:cyan", "v:"),
+          "wear-out-convex-curved": ("tab:red", "d-."), "wear-out-convex-curved-fine": ("tab:pink", "x-.")}
 # Each run's summary beside its case file: cases/<case>/results/<run>.
 SUMMARIES = {n: os.path.join(REPO, os.path.dirname(prm), "results", n) for n, prm in NAMES.items()}
 
@@ -122,14 +128,11 @@ def save_figure(fig, out, name):
 
 def plot(runs, out):
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4.0))
-    styles = {"stress-plain": ("tab:blue", "o-"), "stress-convex": ("tab:orange", "o-"),
-              "wear-out-convex": ("tab:green", "s-"), "wear-out-plain": ("tab:purple", "s-"),
-              "wear-out-convex-fine": ("tab:olive", "^:"), "wear-out-convex-a10": ("tab:cyan", "v:")}
     for name, run in runs.items():
         rows = staged(run)
         if not rows:
             continue
-        colour, style = styles[name]
+        colour, style = STYLES[name]
         h = [0.0] + [r["cumulative_hours"] for r in rows]
         v = [0.0] + [r["cumulative_applied_m3"] * 1e9 for r in rows]
         a1.plot(h, v, style, color=colour, ms=3, label=name)
@@ -174,12 +177,12 @@ def plot_wear_out(runs, out):
     if life:
         f = life.element_fraction()
         a3.plot([h for h, _ in f], [100 * x for _, x in f], "o-", color="tab:green", ms=3, label="h, A")
-        styles = (("tab:olive", "^:"), ("tab:cyan", "v:"), ("tab:purple", "d-."), ("tab:pink", "x-."))
-        for (name, what, _), style in zip(CONVERGENCE[1:], styles):
+        for name, what, _ in CONVERGENCE[1:]:
             other = Life(runs[name]) if name in runs else None
             if other:
                 g = other.element_fraction()
-                a3.plot([h for h, _ in g], [100 * x for _, x in g], style[1], color=style[0], ms=3, label=what)
+                colour, style = STYLES[name]
+                a3.plot([h for h, _ in g], [100 * x for _, x in g], style, color=colour, ms=3, label=what)
         a3.axhline(50, color="0.7", lw=0.8)
         a3.legend(fontsize=8, loc="lower left")
         a3.set_ylabel("element volume left [%]", color="tab:green")
@@ -314,17 +317,20 @@ def convergence_section(runs):
          "gone (`part_life.csv`, linear between stages), with the sample mesh halved "
          "(`convex-fine.prm`) and the amplification halved (`convex-a10.prm`), and at h and h/2 with the "
          "first mesh refined at the curved element surfaces (`convex-curved.prm`, `convex-curved-fine.prm`); "
-         "each differs from the run named by the percentage given. The elements' volume on the first "
-         "mesh is the meshed one (the 23 half-ellipsoids hold 23 x 2/3 pi a b h = 4,624 mm^3 on the "
+         "each differs from the run named by the percentage given. Beside it, the wear the stages removed "
+         "from the element labels until then (`part_wear.csv`): the element volume lost is measured above "
+         "each element's foot, which moves with the boundary between its label and the base's. The "
+         "elements' volume on the first mesh is the meshed one (the 23 half-ellipsoids hold 23 x 2/3 pi a b h = 4,624 mm^3 on the "
          "reference pattern).\n",
          "| run | mesh size, amplification | sample mesh [mm] | amplification | staged stages | "
-         "elements' volume on the first mesh [mm^3] | half the element volume gone at [h] | against |",
-         "|---|---|---|---|---|---|---|---|"]
+         "elements' volume on the first mesh [mm^3] | half the element volume gone at [h] | against | "
+         "wear removed from the element labels by then [mm^3] |",
+         "|---|---|---|---|---|---|---|---|---|"]
     half = {}
     for name, what, against in CONVERGENCE:
         run = runs.get(name)
         if run is None:
-            w.append(f"| {name} | {what} | | | | | not run | |")
+            w.append(f"| {name} | {what} | | | | | not run | | |")
             continue
         life = Life(run)
         half[name] = hours_at_fraction(life.element_fraction(), 0.5) if life else None
@@ -333,9 +339,13 @@ def convergence_section(runs):
         start = f"{life.element_volume(life.stages[0]) * 1e9:,.0f}" if life else ""
         base = half.get(against)
         diff = f"{100 * (half[name] / base - 1):+.1f} % against {against}" if half[name] is not None and base else ""
+        labels = element_label_wear(run)
+        points = [(life.hours[k], labels.get(k, 0.0)) for k in life.stages] if life else []
+        by_then = (f"{1e9 * interpolate(half[name], [h for h, _ in points], [v for _, v in points]):,.0f}"
+                   if half[name] is not None and labels else "")
         w.append(f"| {name} | {what} | {float(run.params.get('Mesh size', 'nan')) * 1e3:g} | "
                  f"{run.params.get('Amplification', '?')} | {len(staged(run))} | {start} | "
-                 f"{f'{half[name]:.0f}' if half[name] is not None else left} | {diff} |")
+                 f"{f'{half[name]:.0f}' if half[name] is not None else left} | {diff} | {by_then} |")
     w.append("")
     return w
 

@@ -9,9 +9,10 @@ folder is replaced by one that holds:
 
   run.txt          the engine version, the revolutions done, the stage of the last surface
                    and where the profiles cut
-  parameters.prm, summary.csv, stages.csv, calibration.prm, part_life.csv
+  parameters.prm, summary.csv, stages.csv, calibration.prm, part_life.csv, part_wear.csv
                    copied as they are (those the run has; part_life.csv: each element's
-                   height and volume and the part's thinnest point per stage)
+                   height and volume and the part's thinnest point per stage; part_wear.csv:
+                   the wear each stage applied per label)
   revolutions.csv  per revolution the wear of each column and each element (history.h5),
                    written exactly (Python repr reads back to the same float)
   surface_map.txt  the stage-0 wear face's face centroids by label, to 10 um (the map plot;
@@ -46,7 +47,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from run_tables import run_file  # noqa: E402  (a run's file: its part's tables or the run folder's)
 
 PROG = os.path.basename(sys.argv[0])
-COPIED = ("parameters.prm", "summary.csv", "stages.csv", "calibration.prm", "part_life.csv")
+COPIED = ("parameters.prm", "summary.csv", "stages.csv", "calibration.prm", "part_life.csv", "part_wear.csv")
 MAP_UNIT = 1e-5  # [m] the map's centroids are written to 10 um (far below a pixel of the plot)
 PROFILE_LABELS = (13, 11)  # the profiles cut through the middle and the inner leading element
 

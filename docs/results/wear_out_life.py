@@ -81,6 +81,24 @@ class Life:
         return [(self.hours[k], self.element_volume(k) / v0) for k in self.stages]
 
 
+def element_label_wear(run):
+    """{stage: wear removed from the element labels up to and with the stage [m^3]} from the
+    run's part_wear.csv (empty without one; its `cumulative_removed_volume_m3` per label, summed
+    over the labels a stage lists: a label gone is no longer listed). Beside the element volume
+    lost (Life), it tells the wear from what the life measure adds or takes: an element's
+    volume stands above its foot, which moves with the boundary between its label and the
+    base's."""
+    path = os.path.join(run.path, "part_wear.csv")
+    if not os.path.isfile(path):
+        return {}
+    out = {}
+    for r in run_summary.read_csv(path):
+        if str(r["label"]).startswith("C"):
+            k = int(r["stage"])
+            out[k] = out.get(k, 0.0) + r["cumulative_removed_volume_m3"]
+    return out
+
+
 def hours_at_fraction(points, fraction):
     """The hours at which the fraction left first falls to `fraction`, linear between the two
     stages around it; None when it has not yet."""

@@ -67,6 +67,37 @@ TEST_CASE("convex sample at 0.5 mm: element volumes and areas", "[meshes][sample
   }
   // OpenCASCADE integrates the dilated (B-spline) ellipsoids numerically: ~1e-4.
   CHECK(g.exact_volume == Approx(base + 23 * v_exact).epsilon(1e-3));
+  // The elements together: the CAD's are the 23 half-ellipsoids (within OpenCASCADE's
+  // integration, 0.3 %), the meshed ones lack less than 1 % of them, and nothing is warned.
+  const auto v = element_volume(g, s);
+  CHECK(v.exact == Approx(23 * v_exact).epsilon(5e-3));
+  CHECK(std::abs(v.deficit()) < 0.01);
+  CHECK(element_volume_warning(g, s).empty());
+}
+
+TEST_CASE("a mesh that cuts the elements' flanks is measured and warned of", "[meshes][sample]") {
+  // 3 mm without curvature refinement: the flanks of the 4 mm wide half-ellipsoids are cut
+  // by chords; measured 14.2 % of the elements' volume (wear-out study, README). The warning
+  // names both remedies; with the refinement the same size lacks 2.8 %, below the 5 %.
+  auto s = convex(3e-3, false);
+  s.curvature_refinement = false;
+  const auto g = generate_sample(s);
+  const auto v = element_volume(g, s);
+  CHECK(v.deficit() > 0.12);
+  CHECK(v.deficit() < 0.17);
+  const std::string w = element_volume_warning(g, s);
+  CHECK(w.find("Geometry/Sample/Mesh size = 0.003 m without Curvature refinement") !=
+        std::string::npos);
+  CHECK(w.find("set Curvature refinement = true or a smaller Mesh size") != std::string::npos);
+  s.curvature_refinement = true;
+  const auto refined = generate_sample(s);
+  CHECK(element_volume(refined, s).deficit() < 0.05);
+  CHECK(element_volume_warning(refined, s).empty());
+  // A plain sample has no elements: nothing lacks, nothing is warned.
+  s.convex = false;
+  const auto plain = generate_sample(s);
+  CHECK(element_volume(plain, s).deficit() == 0);
+  CHECK(element_volume_warning(plain, s).empty());
 }
 
 TEST_CASE("volume meshes are closed, outward and match their tetrahedra", "[meshes][sample]") {

@@ -136,15 +136,19 @@ grep -q "Half the element volume gone\*\* at 404 h" "$md" || fail "half the volu
 grep -q "^| 3 | 280 | 50.00 | 100.00 | 0.500 |" "$md" || fail "the ratio a revolution is not 0.500: $(grep -A6 'Convex / plain' "$md")"
 grep -q "convex / plain 0.500\*\*" "$md" || fail "the cumulative ratio is not 0.500: $(grep '^Over the first' "$md")"
 # The convergence runs: at A/2 half the element volume is gone at 560 h, 38.5 % after the
-# wear-out run's 404 h, its elements 100 mm^3 on the first mesh; the run at h/2 is not run.
+# wear-out run's 404 h, its elements 100 mm^3 on the first mesh, 70 mm^3 removed from their
+# labels by then (part_wear.csv); the run at h/2 is not run.
 run_folder "$tmp/f/wear-out-convex-a10" e1 5e-8 1.0
 printf 'stage,equivalent_revolutions,equivalent_hours,what,height_m,volume_m3\n%s\n' \
   "1,0,0,C11,0.006,1e-07
 1,0,0,part,0.01,1e-05
 3,20,560,C11,0.002,5e-08
 3,20,560,part,0.009,9.8e-06" > "$tmp/f/wear-out-convex-a10/part_life.csv"
+printf 'stage,scheme,time_s,label,stage_volume_m3,cumulative_removed_volume_m3\n%s\n' \
+  "3,staged,1,C11,7e-08,7e-08
+3,staged,1,base,1e-07,1e-07" > "$tmp/f/wear-out-convex-a10/part_wear.csv"
 check "$tmp/f" --out "$tmp/f/report" || fail "refused the convergence runs: $(cat "$tmp/out")"
-grep -q "^| wear-out-convex-a10 | h, A/2 | .* | 100 | 560 | +38.5 % against wear-out-convex |" "$md" ||
+grep -q "^| wear-out-convex-a10 | h, A/2 | .* | 100 | 560 | +38.5 % against wear-out-convex | 70 |" "$md" ||
   fail "the convergence at A/2 is not +38.5 %: $(grep -A6 'Convergence' "$md")"
 grep -q "^| wear-out-convex-fine | h/2, A | .* | not run | |" "$md" ||
   fail "the run at h/2 is not listed as not run: $(grep -A6 'Convergence' "$md")"

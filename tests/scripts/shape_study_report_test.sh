@@ -57,7 +57,8 @@ PY
 check() { # <runs> [--check]: the report on them beside the repository's spheres, output in $tmp/out
   local r=$1
   shift
-  /usr/bin/python3 "$report" --runs "$r" --out "$r.report" "$@" > "$tmp/out" 2>&1
+  /usr/bin/python3 "$report" --runs "$r" --spheres "$root/cases/reference-study/results" --out "$r.report" "$@" \
+    > "$tmp/out" 2>&1
 }
 
 summary "$tmp/a/plain" e1 100 plain
