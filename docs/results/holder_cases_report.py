@@ -320,8 +320,8 @@ def convergence_section(runs):
          "each differs from the run named by the percentage given. Beside it, the wear the stages removed "
          "from the element labels until then (`part_wear.csv`): the element volume lost is measured above "
          "each element's foot, which moves with the boundary between its label and the base's. The "
-         "elements' volume on the first mesh is the meshed one (the 23 half-ellipsoids hold 23 x 2/3 pi a b h = 4,624 mm^3 on the "
-         "reference pattern).\n",
+         "elements' volume on the first mesh is the meshed one (the 23 half-ellipsoids hold "
+         "23 x 2/3 pi a b h = 4,624 mm^3 on the reference pattern).\n",
          "| run | mesh size, amplification | sample mesh [mm] | amplification | staged stages | "
          "elements' volume on the first mesh [mm^3] | half the element volume gone at [h] | against | "
          "wear removed from the element labels by then [mm^3] |",
