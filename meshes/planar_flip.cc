@@ -6,6 +6,9 @@
 // A non-Delaunay edge of a planar pair always has a strictly convex quadrilateral around it,
 // so the flipped faces keep the orientation; they are checked anyway against round-off. Each
 // flip raises the smallest angle of the pair, so the passes end (bounded for safety).
+// A flip is not made when the new edge (c, d) is already an edge of the surface (c and d
+// joined elsewhere, as across a thin wedge of a worn part): it would be shared by four faces,
+// and the surface would be no manifold.
 #include "meshes/planar_flip.h"
 
 #include "meshes/constants.h"
@@ -13,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 
 namespace wear::meshes {
 
@@ -42,7 +46,11 @@ std::size_t flip_flat_edges(SurfaceMesh& m, double max_angle_deg) {
   for (int pass = 0; pass < 100; ++pass) {
     std::size_t n_pass = 0;
     std::vector<char> touched(m.n_faces(), 0);
-    for (const auto& [edge, faces] : edge_faces(m)) {
+    const auto faces_of_edge = edge_faces(m);
+    std::set<std::pair<std::uint32_t, std::uint32_t>> edges;
+    for (const auto& [edge, faces] : faces_of_edge)
+      edges.insert(edge);
+    for (const auto& [edge, faces] : faces_of_edge) {
       if (faces.size() != 2)
         continue;
       const auto f = faces[0], g = faces[1];
@@ -63,6 +71,10 @@ std::size_t flip_flat_edges(SurfaceMesh& m, double max_angle_deg) {
       const Vec3 n1 = cross(x[d] - x[a], x[c] - x[a]), n2 = cross(x[b] - x[d], x[c] - x[d]);
       if (dot(n1, nf) <= 0 || dot(n2, nf) <= 0)
         continue;
+      const auto new_edge = std::make_pair(std::min(c, d), std::max(c, d));
+      if (!edges.insert(new_edge).second)
+        continue;
+      edges.erase(edge);
       m.triangles[f] = t1;
       m.triangles[g] = t2;
       touched[f] = touched[g] = 1;

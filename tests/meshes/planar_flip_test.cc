@@ -108,3 +108,22 @@ TEST_CASE("Delaunay flips in flat regions keep the surface and fix its triangles
   // A second call has nothing left to flip.
   CHECK(flip_flat_edges(m) == 0);
 }
+
+TEST_CASE("A flat flip whose new edge exists elsewhere is not made", "[meshes][flip]") {
+  // A closed sliver of zero thickness: on top, a -> c -> b and a -> b -> d, flat, their
+  // common edge (a, b) far from Delaunay (the angles at c and d sum to 293 degrees); below,
+  // the same quadrilateral split along (c, d). Flipping (a, b) on top would make (c, d) an
+  // edge of four faces: the worn part's thin wedge in the limit, where the decimation's flips
+  // once left a surface the isotropic remeshing could not take.
+  const double h = 1e-3;
+  SurfaceMesh m;
+  m.vertices = {{-h, 0, 0}, {h, 0, 0}, {0, -0.3 * h, 0}, {0, 0.3 * h, 0}}; // a b c d
+  m.triangles = {{0, 2, 1}, {0, 1, 3}, {2, 0, 3}, {2, 3, 1}};
+  m.face_labels.assign(4, label::side);
+  REQUIRE(check_closed(m).closed());
+  REQUIRE(check_closed(m).consistently_oriented());
+  CHECK(flip_flat_edges(m) == 0);
+  const auto closed = check_closed(m);
+  CHECK(closed.n_nonmanifold_edges == 0);
+  CHECK(closed.closed());
+}
