@@ -17,6 +17,17 @@
 // an element is, the foot taken linear across each face). The thinnest point is the lowest
 // wearing vertex above the clamped faces' lowest vertex: for a sample clamped at its bottom,
 // the remaining thickness under the deepest wear.
+//
+// Each worn surface takes its labels from the old one (the nearest old face, or the face whose
+// wear reached there), so an element's boundary moves a little with every stage, whatever the
+// stage's size, and the volume above the foot it spans with it. The footprint measure does not
+// use the worn surface's labels: the outline is the element's boundary on the first surface,
+// the foot the mean value interpolant of the worn surface's heights along it (the top's height
+// at a point of the plan: the highest upward face over it, n_z > 0, linear across the face),
+// and the volume that of the upward faces whose plan centroid lies inside the outline,
+// sum_f (z_f - z_foot,f) A_plan,f. A face across the outline counts whole or not at all; there
+// the surface stands near its foot, so the error is of the order of a face's area times its
+// height above the foot.
 #include "meshes/part_life.h"
 
 #include <algorithm>
@@ -31,41 +42,38 @@ namespace {
 
 using Edge = std::pair<std::uint32_t, std::uint32_t>;
 
+// An edge of a foot's outline with its two heights [m].
+struct FootEdge {
+  double ax, ay, az, bx, by, bz;
+};
+
 // The foot's height at (x, y): the mean value interpolant of the heights on the closed loops
-// of directed `boundary` edges; on a loop's vertex or edge the loop's own height there.
-double foot_height(const SurfaceMesh& m, const std::vector<Edge>& boundary, double x, double y,
-                   double fallback) {
+// of directed `loop` edges; on a loop's vertex or edge the loop's own height there.
+double foot_height(const std::vector<FootEdge>& loop, double x, double y, double fallback) {
   double sum_w = 0, sum_wz = 0;
-  for (const auto& [a, b] : boundary) {
-    const Vec3 &pa = m.vertices[a], &pb = m.vertices[b];
-    const double ax = pa.x - x, ay = pa.y - y, bx = pb.x - x, by = pb.y - y;
+  for (const auto& e : loop) {
+    const double ax = e.ax - x, ay = e.ay - y, bx = e.bx - x, by = e.by - y;
     const double ra = std::hypot(ax, ay), rb = std::hypot(bx, by);
     const double scale = std::max(ra, rb);
     if (ra <= 1e-12 * scale)
-      return pa.z;
+      return e.az;
     if (rb <= 1e-12 * scale)
-      return pb.z;
+      return e.bz;
     const double area2 = ax * by - ay * bx, dot = ax * bx + ay * by;
     if (ra * rb + dot <= 1e-12 * ra * rb) // on the edge: the angle is pi
-      return (rb * pa.z + ra * pb.z) / (ra + rb);
+      return (rb * e.az + ra * e.bz) / (ra + rb);
     const double t = area2 / (ra * rb + dot); // tan(a / 2)
     sum_w += t / ra + t / rb;
-    sum_wz += t / ra * pa.z + t / rb * pb.z;
+    sum_wz += t / ra * e.az + t / rb * e.bz;
   }
   return std::abs(sum_w) > 0 ? sum_wz / sum_w : fallback;
 }
 
-} // namespace
-
-std::map<int, ElementStanding> convex_element_standing(const SurfaceMesh& m) {
-  std::map<int, ElementStanding> standing;
-  std::map<int, std::vector<Edge>> boundary; // directed as in the element's faces
-  std::map<int, std::pair<double, int>> rim; // sum of the boundary's heights, count
+// The edges where each convex element's faces meet another label, directed as in its faces.
+std::map<int, std::vector<Edge>> element_boundaries(const SurfaceMesh& m) {
+  std::map<int, std::vector<Edge>> boundary;
   for (const auto& [edge, faces] : edge_faces(m)) {
-    if (faces.size() != 2)
-      continue;
-    const int a = m.face_labels[faces[0]], b = m.face_labels[faces[1]];
-    if (a == b)
+    if (faces.size() != 2 || m.face_labels[faces[0]] == m.face_labels[faces[1]])
       continue;
     for (const auto f : faces) {
       const int l = m.face_labels[f];
@@ -77,11 +85,138 @@ std::map<int, ElementStanding> convex_element_standing(const SurfaceMesh& m) {
         if (std::min(e.first, e.second) == edge.first && std::max(e.first, e.second) == edge.second)
           boundary[l].push_back(e);
       }
-      auto& r = rim[l];
-      r.first += m.vertices[edge.first].z + m.vertices[edge.second].z;
-      r.second += 2;
-      const int other = l == a ? b : a;
-      if (m.roles.wears(l) && m.roles.wears(other))
+    }
+  }
+  return boundary;
+}
+
+// The upward faces of a surface (n_z > 0) in plan view, bucketed on a grid, for the height of
+// the surface's top at a point of the plan.
+class PlanTop {
+public:
+  explicit PlanTop(const SurfaceMesh& m) : m_(m) {
+    double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0, sum = 0;
+    for (std::size_t f = 0; f < m.n_faces(); ++f) {
+      const auto& t = m.triangles[f];
+      const Vec3 &p = m.vertices[t[0]], &q = m.vertices[t[1]], &r = m.vertices[t[2]];
+      if (plan_area(p, q, r) <= 0)
+        continue;
+      up_.push_back(std::uint32_t(f));
+      for (const Vec3* v : {&p, &q, &r})
+        x0 = std::min(x0, v->x), x1 = std::max(x1, v->x), y0 = std::min(y0, v->y),
+        y1 = std::max(y1, v->y);
+      sum += std::sqrt(plan_area(p, q, r));
+    }
+    if (up_.empty())
+      return;
+    cell_ = 2 * sum / double(up_.size());
+    x0_ = x0, y0_ = y0;
+    nx_ = std::size_t((x1 - x0) / cell_) + 1, ny_ = std::size_t((y1 - y0) / cell_) + 1;
+    start_.assign(nx_ * ny_ + 1, 0);
+    for (int pass = 0; pass < 2; ++pass) {
+      std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
+      for (const auto f : up_) {
+        const auto [i0, i1, j0, j1] = cells(f);
+        for (std::size_t j = j0; j <= j1; ++j)
+          for (std::size_t i = i0; i <= i1; ++i)
+            if (pass == 0)
+              ++start_[j * nx_ + i + 1];
+            else
+              faces_[fill[j * nx_ + i]++] = f;
+      }
+      if (pass == 0) {
+        for (std::size_t c = 1; c < start_.size(); ++c)
+          start_[c] += start_[c - 1];
+        faces_.resize(start_.back());
+      }
+    }
+  }
+  static double plan_area(const Vec3& p, const Vec3& q, const Vec3& r) {
+    return 0.5 * ((q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x));
+  }
+  // The highest upward face's height at (x, y); NaN where none lies over it.
+  double height(double x, double y) const {
+    double z = std::numeric_limits<double>::quiet_NaN();
+    if (up_.empty() || x < x0_ || y < y0_)
+      return z;
+    const auto i = std::size_t((x - x0_) / cell_), j = std::size_t((y - y0_) / cell_);
+    if (i >= nx_ || j >= ny_)
+      return z;
+    for (std::size_t k = start_[j * nx_ + i]; k < start_[j * nx_ + i + 1]; ++k) {
+      const auto& t = m_.triangles[faces_[k]];
+      const Vec3 &p = m_.vertices[t[0]], &q = m_.vertices[t[1]], &r = m_.vertices[t[2]];
+      const Vec3 at{x, y, 0};
+      const double a = plan_area(p, q, r), u = plan_area(at, q, r) / a, v = plan_area(p, at, r) / a;
+      const double tolerance = 1e-12;
+      if (u < -tolerance || v < -tolerance || u + v > 1 + tolerance)
+        continue;
+      const double h = u * p.z + v * q.z + (1 - u - v) * r.z;
+      if (!(h <= z))
+        z = h;
+    }
+    return z;
+  }
+  // The upward faces whose plan bounding boxes meet the box [x0, x1] x [y0, y1], each once.
+  std::vector<std::uint32_t> faces_in(double x0, double y0, double x1, double y1) const {
+    std::vector<std::uint32_t> out;
+    if (up_.empty())
+      return out;
+    const auto clamp = [](double u, std::size_t n) {
+      return std::size_t(std::clamp(u, 0.0, double(n - 1)));
+    };
+    const auto i0 = clamp((x0 - x0_) / cell_, nx_), i1 = clamp((x1 - x0_) / cell_, nx_);
+    const auto j0 = clamp((y0 - y0_) / cell_, ny_), j1 = clamp((y1 - y0_) / cell_, ny_);
+    for (std::size_t j = j0; j <= j1; ++j)
+      for (std::size_t i = i0; i <= i1; ++i)
+        out.insert(out.end(), faces_.begin() + std::ptrdiff_t(start_[j * nx_ + i]),
+                   faces_.begin() + std::ptrdiff_t(start_[j * nx_ + i + 1]));
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+  }
+
+private:
+  std::array<std::size_t, 4> cells(std::uint32_t f) const {
+    const auto& t = m_.triangles[f];
+    double x0 = m_.vertices[t[0]].x, x1 = x0, y0 = m_.vertices[t[0]].y, y1 = y0;
+    for (const auto v : t)
+      x0 = std::min(x0, m_.vertices[v].x), x1 = std::max(x1, m_.vertices[v].x),
+      y0 = std::min(y0, m_.vertices[v].y), y1 = std::max(y1, m_.vertices[v].y);
+    return {std::min(nx_ - 1, std::size_t((x0 - x0_) / cell_)),
+            std::min(nx_ - 1, std::size_t((x1 - x0_) / cell_)),
+            std::min(ny_ - 1, std::size_t((y0 - y0_) / cell_)),
+            std::min(ny_ - 1, std::size_t((y1 - y0_) / cell_))};
+  }
+  const SurfaceMesh& m_;
+  std::vector<std::uint32_t> up_, faces_;
+  std::vector<std::size_t> start_;
+  double x0_ = 0, y0_ = 0, cell_ = 1;
+  std::size_t nx_ = 0, ny_ = 0;
+};
+
+// Whether (x, y) lies inside the closed loops of `outline` (crossing number).
+bool inside(const std::vector<std::array<double, 4>>& outline, double x, double y) {
+  bool in = false;
+  for (const auto& e : outline)
+    if ((e[1] > y) != (e[3] > y) && x < e[0] + (y - e[1]) * (e[2] - e[0]) / (e[3] - e[1]))
+      in = !in;
+  return in;
+}
+
+} // namespace
+
+std::map<int, ElementStanding> convex_element_standing(const SurfaceMesh& m) {
+  std::map<int, ElementStanding> standing;
+  const auto boundary = element_boundaries(m);
+  for (const auto& [edge, faces] : edge_faces(m)) {
+    if (faces.size() != 2)
+      continue;
+    const int a = m.face_labels[faces[0]], b = m.face_labels[faces[1]];
+    if (a == b)
+      continue;
+    for (const auto f : faces) {
+      const int l = m.face_labels[f], other = l == a ? b : a;
+      if (label::is_convex_element(l) && m.roles.wears(l) && m.roles.wears(other))
         ++standing[l].neighbours[other];
     }
   }
@@ -90,12 +225,17 @@ std::map<int, ElementStanding> convex_element_standing(const SurfaceMesh& m) {
     it = it->second.neighbours.empty() ? standing.erase(it) : std::next(it);
   std::vector<double> foot(m.n_vertices(), 0.0);
   std::vector<char> done(m.n_vertices(), 0);
+  std::vector<FootEdge> loop;
   for (auto& [l, e] : standing) {
-    const auto& edges = boundary[l];
-    const double mean = rim[l].first / rim[l].second;
+    const auto& edges = boundary.at(l);
+    loop.clear();
+    double mean = 0;
     std::fill(done.begin(), done.end(), 0);
     for (const auto& [a, b] : edges) {
-      foot[a] = m.vertices[a].z, foot[b] = m.vertices[b].z;
+      const Vec3 &pa = m.vertices[a], &pb = m.vertices[b];
+      loop.push_back({pa.x, pa.y, pa.z, pb.x, pb.y, pb.z});
+      mean += 0.5 * (pa.z + pb.z) / double(edges.size());
+      foot[a] = pa.z, foot[b] = pb.z;
       done[a] = done[b] = 1;
     }
     for (std::size_t f = 0; f < m.n_faces(); ++f) {
@@ -104,14 +244,71 @@ std::map<int, ElementStanding> convex_element_standing(const SurfaceMesh& m) {
       const auto& t = m.triangles[f];
       for (const auto v : t) {
         if (!done[v]) {
-          foot[v] = foot_height(m, edges, m.vertices[v].x, m.vertices[v].y, mean);
+          foot[v] = foot_height(loop, m.vertices[v].x, m.vertices[v].y, mean);
           done[v] = 1;
         }
         e.height = std::max(e.height, m.vertices[v].z - foot[v]);
       }
       const Vec3 &p = m.vertices[t[0]], &q = m.vertices[t[1]], &r = m.vertices[t[2]];
-      const double plan_area = 0.5 * ((q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x));
-      e.volume += plan_area * ((p.z + q.z + r.z) - (foot[t[0]] + foot[t[1]] + foot[t[2]])) / 3;
+      e.volume += PlanTop::plan_area(p, q, r) *
+                  ((p.z + q.z + r.z) - (foot[t[0]] + foot[t[1]] + foot[t[2]])) / 3;
+    }
+  }
+  return standing;
+}
+
+ElementFootprints element_footprints(const SurfaceMesh& first) {
+  ElementFootprints footprints;
+  for (const auto& [l, edges] : element_boundaries(first))
+    for (const auto& [a, b] : edges) {
+      const Vec3 &pa = first.vertices[a], &pb = first.vertices[b];
+      footprints[l].push_back({pa.x, pa.y, pb.x, pb.y});
+    }
+  return footprints;
+}
+
+std::map<int, ElementStanding> footprint_standing(const SurfaceMesh& m,
+                                                  const ElementFootprints& footprints) {
+  std::map<int, ElementStanding> standing;
+  const PlanTop top(m);
+  std::vector<double> foot(m.n_vertices(), 0.0);
+  std::vector<int> done(m.n_vertices(), -1);
+  std::vector<FootEdge> loop;
+  for (const auto& [l, outline] : footprints) {
+    // The outline's heights on m: where no upward face lies over a point of it (not on a
+    // part's top), the mean of the others'.
+    loop.clear();
+    double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
+    double sum = 0;
+    int n = 0;
+    for (const auto& e : outline) {
+      loop.push_back({e[0], e[1], top.height(e[0], e[1]), e[2], e[3], top.height(e[2], e[3])});
+      for (const double z : {loop.back().az, loop.back().bz})
+        if (std::isfinite(z))
+          sum += z, ++n;
+      x0 = std::min({x0, e[0], e[2]}), x1 = std::max({x1, e[0], e[2]});
+      y0 = std::min({y0, e[1], e[3]}), y1 = std::max({y1, e[1], e[3]});
+    }
+    if (n == 0)
+      continue;
+    const double mean = sum / n;
+    for (auto& e : loop)
+      e.az = std::isfinite(e.az) ? e.az : mean, e.bz = std::isfinite(e.bz) ? e.bz : mean;
+    auto& s = standing[l];
+    for (const auto f : top.faces_in(x0, y0, x1, y1)) {
+      const auto& t = m.triangles[f];
+      const Vec3 &p = m.vertices[t[0]], &q = m.vertices[t[1]], &r = m.vertices[t[2]];
+      if (!inside(outline, (p.x + q.x + r.x) / 3, (p.y + q.y + r.y) / 3))
+        continue;
+      for (const auto v : t) {
+        if (done[v] != l) {
+          foot[v] = foot_height(loop, m.vertices[v].x, m.vertices[v].y, mean);
+          done[v] = l;
+        }
+        s.height = std::max(s.height, m.vertices[v].z - foot[v]);
+      }
+      s.volume += PlanTop::plan_area(p, q, r) *
+                  ((p.z + q.z + r.z) - (foot[t[0]] + foot[t[1]] + foot[t[2]])) / 3;
     }
   }
   return standing;

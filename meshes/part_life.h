@@ -5,7 +5,9 @@
 // (Coupling/Worn out when) reads.
 #include "meshes/surface_mesh.h"
 
+#include <array>
 #include <map>
+#include <vector>
 
 namespace wear::meshes {
 
@@ -21,6 +23,22 @@ struct ElementStanding {
 
 /// Every convex element label of `m` that still borders another wearing label.
 std::map<int, ElementStanding> convex_element_standing(const SurfaceMesh& m);
+
+/// The unworn footprints of a part's convex elements in plan view: each element's boundary,
+/// where its faces meet another label, on the surface the part was first meshed with, as
+/// directed edges {x0, y0, x1, y1} [m]. Unlike a worn surface's labels, which every stage hands
+/// on to its new faces, a footprint stays where the element stood.
+using ElementFootprints = std::map<int, std::vector<std::array<double, 4>>>;
+ElementFootprints element_footprints(const SurfaceMesh& first);
+
+/// Each footprint's element as it stands on `m`, whatever m's labels say: its foot is the
+/// mean value interpolant of m's heights along the unworn outline (the worn base around where
+/// the element stood); its volume that of m's upward faces whose plan centroid lies inside the
+/// outline, between them and the foot; its height the most a vertex of those faces stands
+/// above the foot. An element worn away leaves its footprint at about no height and volume.
+/// `neighbours` stays empty.
+std::map<int, ElementStanding> footprint_standing(const SurfaceMesh& m,
+                                                  const ElementFootprints& footprints);
 
 struct PartLife {
   std::map<int, ElementStanding> elements;

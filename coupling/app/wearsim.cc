@@ -3,6 +3,7 @@
 #include "coupling/app/bench_command.h"
 #include "coupling/app/calibrate_command.h"
 #include "coupling/app/compare_command.h"
+#include "coupling/app/life_command.h"
 #include "coupling/app/mesh_command.h"
 #include "coupling/app/run_command.h"
 #include "coupling/app/scene_command.h"
@@ -63,6 +64,11 @@ void usage(std::ostream& out) {
          "            [--from <revolution>]\n"
          "                           scale the run's wear coefficient so n steady revolutions\n"
          "                           wear the measured volume; writes <run>/calibration.prm\n"
+         "  life <run> [--part <name>]\n"
+         "                           the part's convex elements measured again on every kept\n"
+         "                           stage surface on their unworn footprints (stage 0), which\n"
+         "                           do not move with the worn surfaces' labels; writes\n"
+         "                           parts/<part>/element_life.csv\n"
          "  bench dem [--workload annulus|annulus-clumps|sector5k|sector20k|sector45k|\n"
          "                        sample45k|tester]\n"
          "            [--threads N[,M..]] [--settle N] [--warm N] [--steps N] [--repeats N]\n"
@@ -180,6 +186,8 @@ int main(int argc, char** argv) {
       return run_compare_command({argv + 2, argv + argc}, std::cout);
     if (cmd == "calibrate")
       return run_calibrate_command({argv + 2, argv + argc}, std::cout);
+    if (cmd == "life")
+      return run_life_command({argv + 2, argv + argc}, std::cout);
     if (cmd == "bench")
       return run_bench_command({argv + 2, argv + argc}, std::cout);
     std::cerr << "wearsim: unknown command '" << cmd << "'\n";

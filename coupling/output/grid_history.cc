@@ -10,9 +10,11 @@
 #include "meshes/atomic_file.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iomanip>
 #include <sstream>
+#include <stdexcept>
 
 namespace wear::coupling {
 
@@ -104,6 +106,39 @@ void GridHistory::add_stage(int stage, double time, const meshes::VtuGrid& grid)
   h5.attribute("/", "xdmf", xml);
   h5.commit();
   set_entry(stage, xml);
+}
+
+bool holds_grid(const std::string& stage_h5) {
+  return Hdf5Reader(stage_h5).has_object("/points");
+}
+
+meshes::SurfaceMesh read_surface_stage(const std::string& stage_h5) {
+  const Hdf5Reader h5(stage_h5);
+  if (!h5.has_object("/triangles") || !h5.has_object("/cell/label"))
+    throw std::runtime_error(stage_h5 + ": no labelled surface (/triangles, /cell/label)");
+  const auto points = h5.doubles("/points");
+  const auto triangles = h5.int64s("/triangles");
+  const auto labels = h5.doubles("/cell/label");
+  if (points.size() % 3 || triangles.size() != 3 * labels.size())
+    throw std::runtime_error(stage_h5 + ": " + std::to_string(points.size()) + " coordinates, " +
+                             std::to_string(triangles.size()) + " triangle corners and " +
+                             std::to_string(labels.size()) + " labels do not make a surface");
+  meshes::SurfaceMesh m;
+  for (std::size_t i = 0; i < points.size(); i += 3)
+    m.vertices.push_back({points[i], points[i + 1], points[i + 2]});
+  for (std::size_t f = 0; f < labels.size(); ++f) {
+    meshes::Triangle t;
+    for (std::size_t k = 0; k < 3; ++k) {
+      const auto v = triangles[3 * f + k];
+      if (v < 0 || std::size_t(v) >= m.vertices.size())
+        throw std::runtime_error(stage_h5 + ": triangle " + std::to_string(f) + " names vertex " +
+                                 std::to_string(v) + " of " + std::to_string(m.vertices.size()));
+      t[k] = std::uint32_t(v);
+    }
+    m.triangles.push_back(t);
+    m.face_labels.push_back(int(std::lround(labels[f])));
+  }
+  return m;
 }
 
 void GridHistory::reload_stage(int stage) {

@@ -3,6 +3,7 @@
 // "surface": triangles): <dir>/<kind>/stage_NNNN.h5 and .vtu, and <dir>/<kind>.xdmf, a
 // temporal collection over all stages for ParaView. Each stage's files are written once,
 // atomically; the XDMF index is rewritten atomically after each stage.
+#include "meshes/surface_mesh.h"
 #include "meshes/vtu_writer.h"
 
 #include <ostream>
@@ -33,5 +34,13 @@ private:
   std::string directory_, kind_;
   std::vector<std::pair<int, std::string>> entries_; // stage, its XDMF grid
 };
+
+/// Whether a stage file holds its grid (a run continued from a kept checkpoint has stubs for
+/// the stages before, holding only their XDMF entry).
+bool holds_grid(const std::string& stage_h5);
+
+/// The labelled surface a surface history's stage file holds (RunOutput::add_surface: the
+/// cell array "label"); throws naming the file when it holds none.
+meshes::SurfaceMesh read_surface_stage(const std::string& stage_h5);
 
 } // namespace wear::coupling

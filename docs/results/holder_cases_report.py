@@ -51,21 +51,26 @@ NAMES = {"stress-plain": "cases/stress/plain.prm", "stress-convex": "cases/stres
          "wear-out-convex": "cases/wear-out/convex.prm", "wear-out-plain": "cases/wear-out/plain.prm",
          "wear-out-convex-fine": "cases/wear-out/convex-fine.prm",
          "wear-out-convex-a10": "cases/wear-out/convex-a10.prm",
-         "wear-out-convex-curved": "cases/wear-out/convex-curved.prm",
-         "wear-out-convex-curved-fine": "cases/wear-out/convex-curved-fine.prm"}
-STUDY_ENGINE = {n: ("cases/wear-out/ENGINE" if n.startswith("wear-out") else "cases/reference-study/ENGINE")
-                for n in NAMES}
+         "wear-out-convex-stages": "cases/wear-out/convex-stages.prm",
+         "wear-out-convex-curved": "cases/wear-out/curved/convex-curved.prm",
+         "wear-out-convex-curved-fine": "cases/wear-out/curved/convex-curved-fine.prm"}
+# The ENGINE file beside each case file, else the reference study's (as run.sh chooses).
+STUDY_ENGINE = {n: (os.path.join(os.path.dirname(prm), "ENGINE")
+                    if os.path.isfile(os.path.join(REPO, os.path.dirname(prm), "ENGINE"))
+                    else "cases/reference-study/ENGINE") for n, prm in NAMES.items()}
 # The convergence of the pattern's life: the wear-out's convex run (mesh size h, amplification
 # A) beside the same at h/2 and at A/2; and h beside h/2 with the first mesh refined at the
 # curved element surfaces. Each: (run, what it is, the run it is compared with).
-CONVERGENCE = (("wear-out-convex", "h, A", None), ("wear-out-convex-fine", "h/2, A", "wear-out-convex"),
-               ("wear-out-convex-a10", "h, A/2", "wear-out-convex"),
+CONVERGENCE = (("wear-out-convex-stages", "h, A", None),
+               ("wear-out-convex-fine", "h/2, A", "wear-out-convex-stages"),
+               ("wear-out-convex-a10", "h, A/2", "wear-out-convex-stages"),
                ("wear-out-convex-curved", "h, A, curvature-refined first mesh", None),
                ("wear-out-convex-curved-fine", "h/2, A, curvature-refined first mesh", "wear-out-convex-curved"))
 # Each run's colour and line in the plots.
 STYLES = {"stress-plain": ("tab:blue", "o-"), "stress-convex": ("tab:orange", "o-"),
           "wear-out-convex": ("tab:green", "s-"), "wear-out-plain": ("tab:purple", "s-"),
           "wear-out-convex-fine": ("tab:olive", "^:"), "wear-out-convex-a10": ("tab:cyan", "v:"),
+          "wear-out-convex-stages": ("tab:gray", "s:"),
           "wear-out-convex-curved": ("tab:red", "d-."), "wear-out-convex-curved-fine": ("tab:pink", "x-.")}
 # Each run's summary beside its case file: cases/<case>/results/<run>.
 SUMMARIES = {n: os.path.join(REPO, os.path.dirname(prm), "results", n) for n, prm in NAMES.items()}
@@ -312,41 +317,60 @@ def wear_out_section(runs):
 def convergence_section(runs):
     """The hours at which half the element volume is gone, at h and A, h/2 and A/2, and at h and
     h/2 with the first mesh refined at the curved element surfaces; each against its pair's
-    first run, beside the elements' volume on the first mesh (what the mesh size changes most)."""
+    first run, beside the elements' volume on the first mesh (what the mesh size changes most),
+    by the run's own measure (the foot its labels span) and on the unworn footprints."""
     w = ["**Convergence of the pattern's life**: the hours at which half the convex elements' volume is "
-         "gone (`part_life.csv`, linear between stages), with the sample mesh halved "
-         "(`convex-fine.prm`) and the amplification halved (`convex-a10.prm`), and at h and h/2 with the "
-         "first mesh refined at the curved element surfaces (`convex-curved.prm`, `convex-curved-fine.prm`); "
-         "each differs from the run named by the percentage given. Beside it, the wear the stages removed "
-         "from the element labels until then (`part_wear.csv`): the element volume lost is measured above "
-         "each element's foot, which moves with the boundary between its label and the base's. The "
-         "elements' volume on the first mesh is the meshed one (the 23 half-ellipsoids hold "
-         "23 x 2/3 pi a b h = 4,624 mm^3 on the reference pattern).\n",
+         "gone (linear between stages), with the sample mesh halved (`convex-fine.prm`) and the "
+         "amplification halved (`convex-a10.prm`) against `convex-stages.prm` (`convex.prm`'s first "
+         "stages again, every surface kept), and at h and h/2 with the first mesh refined at the curved "
+         "element surfaces (`curved/convex-curved.prm`, `curved/convex-curved-fine.prm`); each differs "
+         "from the run named by the percentage given. Two measures of the element volume: the run's own "
+         "(`part_life.csv`), above the foot each element's labels span, which moves with the boundary "
+         "between its label and the base's as each stage's surface takes its labels from the last; and "
+         "on the unworn footprints (`element_life.csv`, `wearsim life <run>` on the surfaces the run "
+         "kept), above the worn surface's heights along each element's outline on the first mesh, "
+         "which do not move. Beside them, the wear the stages removed from the element labels by the "
+         "first measure's hour (`part_wear.csv`). The elements' volume on the first mesh is the meshed "
+         "one (the 23 half-ellipsoids hold 23 x 2/3 pi a b h = 4,624 mm^3 on the reference pattern).\n",
          "| run | mesh size, amplification | sample mesh [mm] | amplification | staged stages | "
-         "elements' volume on the first mesh [mm^3] | half the element volume gone at [h] | against | "
-         "wear removed from the element labels by then [mm^3] |",
-         "|---|---|---|---|---|---|---|---|---|"]
-    half = {}
+         "elements' volume on the first mesh [mm^3] | half gone, labels' foot [h] | against | "
+         "wear removed from the element labels by then [mm^3] | half gone, unworn footprints [h] | against |",
+         "|---|---|---|---|---|---|---|---|---|---|---|"]
+    half, kept, measured_by = {}, {}, set()
     for name, what, against in CONVERGENCE:
         run = runs.get(name)
         if run is None:
-            w.append(f"| {name} | {what} | | | | | not run | | |")
+            w.append(f"| {name} | {what} | | | | | not run | | | | |")
             continue
-        life = Life(run)
+        life, foot = Life(run), Life(run, "element_life.csv")
+        measured_by |= foot.measured_by
         half[name] = hours_at_fraction(life.element_fraction(), 0.5) if life else None
-        left = (f"not yet ({100 * life.element_volume(life.stages[-1]) / life.element_volume(life.stages[0]):.1f} % "
-                f"left after {life.hours[life.stages[-1]]:.0f} h)" if life else "no part life")
+        kept[name] = hours_at_fraction(foot.element_fraction(), 0.5) if foot else None
+
+        def left(lf):
+            if not lf:
+                return "not measured"
+            v = lf.element_volume(lf.stages[-1]) / lf.element_volume(lf.stages[0])
+            return f"not yet ({100 * v:.1f} % left after {lf.hours[lf.stages[-1]]:.0f} h)"
+
+        def diff(figures):
+            base = figures.get(against)
+            return (f"{100 * (figures[name] / base - 1):+.1f} % against {against}"
+                    if figures[name] is not None and base else "")
+
         start = f"{life.element_volume(life.stages[0]) * 1e9:,.0f}" if life else ""
-        base = half.get(against)
-        diff = f"{100 * (half[name] / base - 1):+.1f} % against {against}" if half[name] is not None and base else ""
         labels = element_label_wear(run)
         points = [(life.hours[k], labels.get(k, 0.0)) for k in life.stages] if life else []
         by_then = (f"{1e9 * interpolate(half[name], [h for h, _ in points], [v for _, v in points]):,.0f}"
                    if half[name] is not None and labels else "")
         w.append(f"| {name} | {what} | {float(run.params.get('Mesh size', 'nan')) * 1e3:g} | "
                  f"{run.params.get('Amplification', '?')} | {len(staged(run))} | {start} | "
-                 f"{f'{half[name]:.0f}' if half[name] is not None else left} | {diff} | {by_then} |")
+                 f"{f'{half[name]:.0f}' if half[name] is not None else left(life)} | {diff(half)} | {by_then} | "
+                 f"{f'{kept[name]:.0f}' if kept[name] is not None else left(foot)} | {diff(kept)} |")
     w.append("")
+    if measured_by:
+        w.append("The unworn footprints measured by `wearsim life` of engine "
+                 + ", ".join(sorted(measured_by)) + ".\n")
     return w
 
 
@@ -454,8 +478,9 @@ def engines_line(runs):
     return ("**Engine versions** " + "; ".join(f"{e}: {', '.join(ns)}" for e, ns in by.items())
             + " (each run its study's, the ENGINE file beside its case: the stress pair the reference "
             "study's, `cases/reference-study/ENGINE`, so that it sits beside the study's results; the "
-            "wear-out pair its own, `cases/wear-out/ENGINE`, which has the implicit recession and the "
-            "part's life).")
+            "wear-out study its own, `cases/wear-out/ENGINE`, which has the implicit recession and the "
+            "part's life; the curvature-refined convergence pair `cases/wear-out/curved/ENGINE`, whose "
+            "flat-region flips never make an edge that exists already).")
 
 
 def report(runs, missing):

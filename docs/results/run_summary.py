@@ -47,7 +47,8 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from run_tables import run_file  # noqa: E402  (a run's file: its part's tables or the run folder's)
 
 PROG = os.path.basename(sys.argv[0])
-COPIED = ("parameters.prm", "summary.csv", "stages.csv", "calibration.prm", "part_life.csv", "part_wear.csv")
+COPIED = ("parameters.prm", "summary.csv", "stages.csv", "calibration.prm", "part_life.csv", "part_wear.csv",
+          "element_life.csv")
 MAP_UNIT = 1e-5  # [m] the map's centroids are written to 10 um (far below a pixel of the plot)
 PROFILE_LABELS = (13, 11)  # the profiles cut through the middle and the inner leading element
 

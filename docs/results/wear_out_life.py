@@ -41,11 +41,14 @@ def staged(run):
 
 class Life:
     """One run's part_life.csv: per stage (ascending) the hours, the elements' (height [m],
-    volume [m^3]) and the part's (thinnest point [m], volume [m^3])."""
+    volume [m^3]) and the part's (thinnest point [m], volume [m^3]); or, file element_life.csv
+    (`wearsim life`), the elements measured again on their unworn footprints, with the engine
+    versions that measured them (measured_by)."""
 
-    def __init__(self, run):
-        path = os.path.join(run.path, "part_life.csv")
+    def __init__(self, run, file="part_life.csv"):
+        path = os.path.join(run.path, file)
         self.stages, self.hours, self.elements, self.part = [], {}, {}, {}
+        self.measured_by = set()
         if not os.path.isfile(path):
             return
         for r in run_summary.read_csv(path):
@@ -53,6 +56,8 @@ class Life:
             if k not in self.hours:
                 self.stages.append(k)
                 self.hours[k], self.elements[k] = r["equivalent_hours"], {}
+            if "measured_by" in r:
+                self.measured_by.add(str(r["measured_by"]))
             if r["what"] == "part":
                 self.part[k] = (r["height_m"], r["volume_m3"])
             else:

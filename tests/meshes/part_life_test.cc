@@ -4,7 +4,8 @@
 // height, its volume the half-ellipsoid's to the discretisation's error, and the part's
 // thinnest point is the base's height over the clamped bottom. On a base tilted by 0.15 the
 // element keeps its height and volume; a remnant flush with that base stands at no height, a
-// hollow in it at none either with a negative volume.
+// hollow in it at none either with a negative volume. Measured on the unworn footprint, the
+// element keeps its volume when the worn surface's labels move up its flank.
 #include "meshes/constants.h"
 #include "meshes/part_life.h"
 #include "meshes/sample_generator.h"
@@ -24,7 +25,7 @@ const int element = label::convex_element(1, 1);
 // The block 16 mm x 16 mm on a 0.25 mm grid, its top base + slope x plus `bump` times the
 // half-ellipsoid about (8, 8) mm; the faces whose centroid lies within r + 0.3 mm of the
 // centre labelled as the element.
-SurfaceMesh block(double slope, double bump) {
+SurfaceMesh block(double slope, double bump, double label_radius = r + 0.3e-3) {
   const auto inside = [](double x, double y) {
     return (std::pow(x - 8e-3, 2) + std::pow(y - 8e-3, 2)) / (r * r);
   };
@@ -34,7 +35,7 @@ SurfaceMesh block(double slope, double bump) {
         return base + slope * x + bump * c * std::sqrt(std::max(0.0, 1 - inside(x, y)));
       },
       [=](double x, double y) {
-        return std::sqrt(inside(x, y)) * r < r + 0.3e-3 ? element : label::base;
+        return std::sqrt(inside(x, y)) * r < label_radius ? element : label::base;
       });
   s.roles = sample_roles(true);
   return s;
@@ -81,4 +82,33 @@ TEST_CASE("an element's foot follows a tilted base: the element keeps its height
   CHECK(hollow.volume == Approx(-flat.volume).epsilon(1e-9));
   auto s = block(slope, 0);
   CHECK(part_life(s, 0.25e-3).n_standing == 0);
+}
+
+TEST_CASE("an element measured on its unworn footprint does not move with the labels",
+          "[part_life]") {
+  // The element labelled out to 0.3 mm beyond its rim on the first surface; on a later one
+  // the base's label has crept 1.5 mm up the flank (labelled to 2.5 mm from the centre). The
+  // foot the labels span rises with them and the labelled volume falls by about 45 %; the
+  // footprint's stays the element's. On the base tilted by 0.15 the footprint gives the flat
+  // base's figures (the interpolant reproduces a plane); a flush remnant stands at none.
+  const auto footprints = element_footprints(block(0, 1));
+  REQUIRE(footprints.size() == 1);
+  const auto flat = convex_element_standing(block(0, 1)).at(element);
+  const auto first = footprint_standing(block(0, 1), footprints).at(element);
+  CHECK(first.height == Approx(flat.height).epsilon(1e-12));
+  CHECK(first.volume == Approx(flat.volume).epsilon(1e-12));
+  const auto relabelled = block(0, 1, 2.5e-3);
+  const auto by_labels = convex_element_standing(relabelled).at(element);
+  INFO("labelled volume " << by_labels.volume * 1e9 << " mm^3, element " << flat.volume * 1e9
+                          << " mm^3");
+  CHECK(by_labels.volume < 0.7 * flat.volume); // the measure that moves with the labels
+  const auto kept = footprint_standing(relabelled, footprints).at(element);
+  CHECK(kept.volume == Approx(flat.volume).epsilon(1e-12));
+  CHECK(kept.height == Approx(flat.height).epsilon(1e-12));
+  const auto tilted = footprint_standing(block(0.15, 1, 2.5e-3), footprints).at(element);
+  CHECK(tilted.volume == Approx(flat.volume).epsilon(1e-9));
+  CHECK(tilted.height == Approx(flat.height).epsilon(1e-9));
+  const auto flush = footprint_standing(block(0.15, 0), footprints).at(element);
+  CHECK(flush.volume == Approx(0).margin(1e-18));
+  CHECK(flush.height == Approx(0).margin(1e-12));
 }

@@ -136,9 +136,19 @@ grep -q "Half the element volume gone\*\* at 404 h" "$md" || fail "half the volu
 grep -q "^| 3 | 280 | 50.00 | 100.00 | 0.500 |" "$md" || fail "the ratio a revolution is not 0.500: $(grep -A6 'Convex / plain' "$md")"
 grep -q "convex / plain 0.500\*\*" "$md" || fail "the cumulative ratio is not 0.500: $(grep '^Over the first' "$md")"
 # The convergence runs: at A/2 half the element volume is gone at 560 h, 38.5 % after the
-# wear-out run's 404 h, its elements 100 mm^3 on the first mesh, 70 mm^3 removed from their
-# labels by then (part_wear.csv); the run at h/2 is not run.
+# 404 h of the wear-out run's first stages again (convex-stages.prm), its elements 100 mm^3 on
+# the first mesh, 70 mm^3 removed from their labels by then (part_wear.csv); the run at h/2 is
+# not run. On the unworn footprints (element_life.csv) the first stages keep 60 % after 280 h
+# and 20 % after 560 h: half gone at 280 + 280 x 0.1 / 0.4 = 350 h; A/2 at 560 h, +60.0 %.
+cp -r "$tmp/f/wear-out-convex" "$tmp/f/wear-out-convex-stages"
+printf 'stage,equivalent_revolutions,equivalent_hours,what,height_m,volume_m3,measured_by\n%s\n' \
+  "1,0,0,C11,0.006,1e-07,v9
+2,10,280,C11,0.004,6e-08,v9
+3,20,560,C11,0.001,2e-08,v9" > "$tmp/f/wear-out-convex-stages/element_life.csv"
 run_folder "$tmp/f/wear-out-convex-a10" e1 5e-8 1.0
+printf 'stage,equivalent_revolutions,equivalent_hours,what,height_m,volume_m3,measured_by\n%s\n' \
+  "1,0,0,C11,0.006,1e-07,v9
+3,20,560,C11,0.002,5e-08,v9" > "$tmp/f/wear-out-convex-a10/element_life.csv"
 printf 'stage,equivalent_revolutions,equivalent_hours,what,height_m,volume_m3\n%s\n' \
   "1,0,0,C11,0.006,1e-07
 1,0,0,part,0.01,1e-05
@@ -148,8 +158,11 @@ printf 'stage,scheme,time_s,label,stage_volume_m3,cumulative_removed_volume_m3\n
   "3,staged,1,C11,7e-08,7e-08
 3,staged,1,base,1e-07,1e-07" > "$tmp/f/wear-out-convex-a10/part_wear.csv"
 check "$tmp/f" --out "$tmp/f/report" || fail "refused the convergence runs: $(cat "$tmp/out")"
-grep -q "^| wear-out-convex-a10 | h, A/2 | .* | 100 | 560 | +38.5 % against wear-out-convex | 70 |" "$md" ||
-  fail "the convergence at A/2 is not +38.5 %: $(grep -A6 'Convergence' "$md")"
+grep -q "^| wear-out-convex-a10 | h, A/2 | .* | 100 | 560 | +38.5 % against wear-out-convex-stages | 70 | 560 | +60.0 % against wear-out-convex-stages |" "$md" ||
+  fail "the convergence at A/2 is not +38.5 % and +60.0 %: $(grep -A8 'Convergence' "$md")"
+grep -q "^| wear-out-convex-stages | h, A | .* | 404 |  |  | 350 |  |" "$md" ||
+  fail "half is not gone at 404 h and 350 h in the first stages: $(grep -A8 'Convergence' "$md")"
+grep -q "measured by \`wearsim life\` of engine v9" "$md" || fail "the measuring engine is not named"
 grep -q "^| wear-out-convex-fine | h/2, A | .* | not run | |" "$md" ||
   fail "the run at h/2 is not listed as not run: $(grep -A6 'Convergence' "$md")"
 
