@@ -18,8 +18,9 @@
 #                      re-lists every stage in history.xdmf); run.sh writes them back as stubs
 #   parameters.prm     the run's resolved parameters (its engine version and schedule)
 #   tables/<part>+<file>
-#                      each part's part_wear.csv and part_life.csv: rows a resume keeps
-#                      from the file it finds and does not rebuild from the checkpoint
+#                      each part's part_wear.csv, part_life.csv and element_life.csv: rows
+#                      a resume keeps from the file it finds and does not rebuild from the
+#                      checkpoint
 #   kept.txt           one line: the stages done of those planned, the engine, when kept
 # Nothing else: no volume or surface fields, no VTU, no history.h5, summary.csv or stages.csv
 # (the resumed run rewrites those from the checkpoint's records after its next stage; its
@@ -119,10 +120,11 @@ for base in [run] + sorted(glob.glob(os.path.join(run, "parts", "*"))):
 EOF
 }
 
-part_tables() { # <run folder> <tables folder>: each part's part_wear.csv and part_life.csv
+part_tables() { # <run folder> <tables folder>: each part's part_wear.csv, part_life.csv and
+  # element_life.csv
   local t
   mkdir -p "$2" || return 1
-  for t in "$1"/parts/*/part_wear.csv "$1"/parts/*/part_life.csv; do
+  for t in "$1"/parts/*/part_wear.csv "$1"/parts/*/part_life.csv "$1"/parts/*/element_life.csv; do
     [ -f "$t" ] || continue
     cp "$t" "$2/$(basename "$(dirname "$t")")+$(basename "$t")" || return 1
   done

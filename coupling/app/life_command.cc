@@ -15,6 +15,7 @@
 // the run meshed it first (meshes::generate_sample, deterministic for one gmsh).
 #include "coupling/app/life_command.h"
 
+#include "coupling/loop/wearing_part.h"
 #include "coupling/output/grid_history.h"
 #include "coupling/parameters/case_parameters.h"
 #include "coupling/parameters/engine_version.h"
@@ -184,10 +185,7 @@ int run_life_command(const std::vector<std::string>& args, std::ostream& out) {
     out << "\n";
   }
   const std::string file = (part / "element_life.csv").string();
-  meshes::write_atomically(file, [&](std::ostream& o) {
-    o << "stage,equivalent_revolutions,equivalent_hours,what,height_m,volume_m3,measured_by\n"
-      << rows.str();
-  });
+  meshes::write_atomically(file, [&](std::ostream& o) { o << element_life_header << rows.str(); });
   out << "written: " << file << "\n";
   return 0;
 }

@@ -22,6 +22,7 @@
 #include "coupling/loop/stage_steps.h"
 #include "coupling/loop/wear_increment.h"
 #include "coupling/output/text_format.h"
+#include "coupling/parameters/engine_version.h"
 #include "dem/scene/wall_catalogue.h"
 #include "fem/remesher.h"
 #include "meshes/atomic_file.h"
@@ -96,6 +97,9 @@ meshes::FaceField<double> von_mises_on(const meshes::SurfaceMesh& surface) {
 
 } // namespace
 
+const char* const element_life_header =
+    "stage,equivalent_revolutions,equivalent_hours,what,height_m,volume_m3,measured_by\n";
+
 std::string part_directory(const CaseParameters& p, const std::string& name) {
   return p.output.directory + "/parts/" + name;
 }
@@ -128,6 +132,7 @@ WearingPart::WearingPart(const CaseParameters& p, std::size_t index, dem::SceneW
       meshes::convex_element_standing(surface).empty())
     throw std::invalid_argument("Coupling/Worn out when = elements gone: part '" + name_ +
                                 "' has no convex elements to wear away");
+  footprints_ = meshes::element_footprints(surface);
   sample_ = std::make_unique<fem::WornSample>(msh, surface, worn);
   wall.surface.mesh = wall_surface();
   std::string labels;
@@ -186,7 +191,7 @@ WearingPart::WearingPart(const CaseParameters& p, std::size_t index, const PartC
                          bool writes)
     : wall_(index), name_(p.scene.walls.at(index).name), directory_(part_directory(p, name_)),
       frame_(part_frame(p, p.scene.walls[index])), writes_(writes), stages_(c.stages),
-      moved_volume_(c.moved_volume) {
+      moved_volume_(c.moved_volume), footprints_(c.footprints) {
   if (frame_ && !c.sample_frame)
     throw std::runtime_error("--resume: the checkpoint holds the tester's sample '" + name_ +
                              "' in the scene's frame (an older engine's); run the case again "
@@ -215,12 +220,15 @@ WearingPart::WearingPart(const CaseParameters& p, std::size_t index, const PartC
   while (std::getline(in, line))
     if (std::stoi(line.substr(0, line.find(','))) <= int(stages_.size()))
       wear_rows_ += line + "\n";
-  // part_life.csv likewise.
-  std::ifstream life(directory_ + "/part_life.csv");
-  std::getline(life, line);
-  while (std::getline(life, line))
-    if (std::stoi(line.substr(0, line.find(','))) <= int(stages_.size()))
-      life_rows_ += line + "\n";
+  // part_life.csv and element_life.csv likewise.
+  for (auto [file, rows] :
+       {std::pair{"/part_life.csv", &life_rows_}, std::pair{"/element_life.csv", &element_rows_}}) {
+    std::ifstream in(directory_ + file);
+    std::getline(in, line);
+    while (std::getline(in, line))
+      if (std::stoi(line.substr(0, line.find(','))) <= int(stages_.size()))
+        *rows += line + "\n";
+  }
 }
 
 void WearingPart::run_stage(
@@ -471,6 +479,19 @@ void WearingPart::record_life(int stage, const meshes::SurfaceMesh& surface,
   if (writes_)
     meshes::write_atomically(directory_ + "/part_life.csv",
                              [&](std::ostream& out) { out << part_life_header << life_rows_; });
+  if (footprints_.empty())
+    return;
+  std::ostringstream on_footprints;
+  on_footprints.precision(10);
+  for (const auto& [label, e] : meshes::footprint_standing(surface, footprints_))
+    on_footprints << stage << "," << revolutions << "," << revolutions * c.hours_per_revolution
+                  << "," << meshes::label::name(label) << "," << e.height << "," << e.volume << ","
+                  << engine_version() << "\n";
+  element_rows_ += on_footprints.str();
+  if (writes_)
+    meshes::write_atomically(directory_ + "/element_life.csv", [&](std::ostream& out) {
+      out << element_life_header << element_rows_;
+    });
 }
 
 std::string WearingPart::worn_out(const CouplingParameters& c) const {
@@ -554,6 +575,7 @@ PartCheckpoint WearingPart::state(const dem::WallLoads& open) const {
     c.evaluation = evaluation_->state();
   c.sample_frame = frame_.has_value();
   c.moved_volume = moved_volume_;
+  c.footprints = footprints_;
   return c;
 }
 

@@ -29,6 +29,11 @@
 
 namespace wear::coupling {
 
+/// element_life.csv's header: per stage each convex element measured on its unworn footprint
+/// (meshes::footprint_standing) and the engine that measured it (the run's own, or that of
+/// `wearsim life`, which measures a run's kept surfaces again).
+extern const char* const element_life_header;
+
 class WearingPart {
 public:
   /// Meshes scene wall `wall` (index `index` among the scene's walls) into tetrahedra and
@@ -109,6 +114,10 @@ private:
   std::vector<double> moved_volume_;
   std::string wear_rows_; ///< part_wear.csv's rows so far
   std::string life_rows_; ///< part_life.csv's rows so far
+  /// [m] the convex elements' outlines on the first mesh, on which element_life.csv measures
+  /// them (empty: no elements, or resumed from an engine older than them)
+  meshes::ElementFootprints footprints_;
+  std::string element_rows_; ///< element_life.csv's rows so far
 
   /// The evaluation Scene/Evaluation asks of this part (the tester's sample), on its surface
   /// in its own frame.

@@ -4,6 +4,7 @@
 //   n_flux_planes, flux_plane_<k>/{ids, last, counts}
 //   rank_bounds         the slabs' cuts of a run over ranks (empty from one process)
 //   n_parts, part_<k>/{sample/..., face_von_mises, stages/..., labels, removed_per_label,
+//                      footprint_labels, footprint_edges (its convex elements' outlines),
 //                      open_loads/... with attribute duration, attribute sample_frame for the
 //                      tester's sample (kept in its own frame), and with Scene/Evaluation
 //                      evaluation/{records/..., samples/..., sums (removed, normal_impulse,
@@ -38,6 +39,17 @@ void write_part(Hdf5File& h5, const std::string& g, const PartCheckpoint& p) {
   if (!p.moved_volume.empty()) {
     write_doubles(h5, g + "/moved_volume", p.moved_volume);
     h5.attribute(g, "moved", 1.0);
+  }
+  if (!p.footprints.empty()) { // per outline edge its element's label and {x0, y0, x1, y1}
+    std::vector<int> labels;
+    std::vector<double> edges;
+    for (const auto& [label, outline] : p.footprints)
+      for (const auto& e : outline) {
+        labels.push_back(label);
+        edges.insert(edges.end(), e.begin(), e.end());
+      }
+    h5.write(g + "/footprint_labels", labels, {labels.size()});
+    h5.write(g + "/footprint_edges", edges, {labels.size(), 4});
   }
   if (!p.evaluation)
     return;
@@ -117,6 +129,17 @@ PartCheckpoint read_part(const Hdf5Reader& h5, const std::string& g) {
     p.moved_volume = h5.doubles(g + "/moved_volume");
   if (!p.moved_volume.empty() && p.moved_volume.size() != nf)
     throw std::runtime_error("the moved volume of '" + g + "' is not on its surface's faces");
+  if (h5.has_object(g + "/footprint_labels")) {
+    const auto labels = h5.ints(g + "/footprint_labels");
+    const auto edges = h5.doubles(g + "/footprint_edges");
+    if (edges.size() != 4 * labels.size())
+      throw std::runtime_error("the element footprints of '" + g + "' hold " +
+                               std::to_string(edges.size()) + " coordinates for " +
+                               std::to_string(labels.size()) + " edges");
+    for (std::size_t k = 0; k < labels.size(); ++k)
+      p.footprints[labels[k]].push_back(
+          {edges[4 * k], edges[4 * k + 1], edges[4 * k + 2], edges[4 * k + 3]});
+  }
   if (h5.has_attribute(g, "evaluated"))
     p.evaluation = read_evaluation(h5, g + "/evaluation");
   return p;

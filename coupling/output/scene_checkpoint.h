@@ -8,6 +8,7 @@
 #include "dem/scene/scene_evaluation.h"
 #include "dem/scene/scene_run.h"
 #include "dem/wear/reference_deformation.h"
+#include "meshes/part_life.h"
 
 #include <cstdint>
 #include <optional>
@@ -31,6 +32,9 @@ struct PartCheckpoint {
   /// [m^3] per face, the volume the reference stages moved the DEM's nodes by (declared);
   /// empty before a reference stage
   std::vector<double> moved_volume;
+  /// [m] its convex elements' outlines on the first mesh (element_life.csv); empty for a part
+  /// without elements or from an engine older than them
+  meshes::ElementFootprints footprints;
 };
 
 struct SceneCheckpoint {

@@ -167,6 +167,9 @@ void check_same_run(const std::string& a, const std::string& b,
     REQUIRE(ra.size() == 4); // header + 3 stages (or revolutions)
     CHECK(ra == rb);
   }
+  // The elements on their footprints, from the footprints the checkpoint carried.
+  CHECK(file_text(b + "/parts/sample/element_life.csv") ==
+        file_text(a + "/parts/sample/element_life.csv"));
   const auto ca = wear::coupling::read_checkpoint(a + "/checkpoint.h5", part);
   const auto cb = wear::coupling::read_checkpoint(b + "/checkpoint.h5", part);
   REQUIRE(cb.stages_done == 3);

@@ -3,6 +3,7 @@
 // thickness a tenth of a micrometre under the unworn base top stops after its first staged
 // stage, says "worn out at 560 h" (one revolution at 20x, 28 h a revolution), and its part's
 // life table holds the stages it ran.
+#include "coupling/app/life_command.h"
 #include "wearsim_process.h"
 
 #include <catch2/catch.hpp>
@@ -74,6 +75,34 @@ TEST_CASE("wearsim run: a run ends after the stage its part is worn out in",
   for (const auto& l : life)
     n_elements += l.rfind("1,0,0,C", 0) == 0;
   CHECK(n_elements == 23);
+  // element_life.csv: the same 23 on their unworn footprints; on the unworn mesh (stage 1) within
+  // 0.5 % of part_life.csv's total (the outlines are the labels' loops; steep flank faces that
+  // face down count there only), less after the staged stage; `wearsim life` on the run's kept
+  // surfaces writes the same table.
+  const std::string on_footprints = dir + "/parts/sample/element_life.csv";
+  const auto kept = lines_of(on_footprints);
+  REQUIRE(kept.size() == 1 + 2 * 23);
+  CHECK(kept.front() == "stage,equivalent_revolutions,equivalent_hours,what,height_m,volume_m3,"
+                        "measured_by");
+  const auto total = [](const std::vector<std::string>& rows, const std::string& stage) {
+    double v = 0;
+    for (const auto& l : rows)
+      if (l.rfind(stage + "C", 0) == 0) {
+        std::stringstream s(l);
+        std::string field;
+        for (int k = 0; k < 6; ++k)
+          std::getline(s, field, ',');
+        v += std::stod(field);
+      }
+    return v;
+  };
+  CHECK(total(kept, "1,0,0,") == Approx(total(life, "1,0,0,")).epsilon(0.005));
+  CHECK(total(kept, "2,20,560,") < total(kept, "1,0,0,"));
+  const std::string written = file_text(on_footprints);
+  fs::remove(on_footprints);
+  std::ostringstream out;
+  REQUIRE(wear::coupling::run_life_command({dir}, out) == 0);
+  CHECK(file_text(on_footprints) == written);
 }
 
 TEST_CASE("wearsim run: 'Worn out when = elements gone' on a part without elements is refused",

@@ -6,8 +6,8 @@
 # without its bed and its parts' volume meshes (every other object and attribute the same; the one before it when the run
 # stopped inside a stage; refused when neither lies at a stage's end) and each stage file a
 # stub with the same index entry (a fixed-length string, as wearsim reads it), and the part's
-# part_wear.csv and part_life.csv come back as they were (a resume reads their rows); a folder that
-# holds a run is left alone; a checkpoint above CAP_MB is refused and the kept set left as it
+# part_wear.csv, part_life.csv and element_life.csv come back as they were (a resume reads
+# their rows); a folder that holds a run is left alone; a checkpoint above CAP_MB is refused and the kept set left as it
 # is; a finished run's kept set is deleted.
 set -uo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -65,20 +65,22 @@ keep() { bash "$root/cases/reference-study/keep_running.sh" "$prm" > "$tmp/out" 
 checkpoint 1
 printf 'stage,what\n1,part\n' > "$part/part_life.csv"
 printf 'stage,label\n1,base\n' > "$part/part_wear.csv"
+printf 'stage,what,measured_by\n1,C11,e1\n' > "$part/element_life.csv"
 keep || fail "refused an unfinished run: $(cat "$tmp/out")"
 [ -f "$keep/checkpoint.h5.xz" ] && [ -f "$keep/parameters.prm" ] && grep -q "1 of 3 stages done, engine e1" "$keep/kept.txt" ||
   fail "the kept set is not complete: $(ls -R "$keep") $(cat "$tmp/out")"
 [ "$(ls "$keep/index")" = "$(printf 'parts+sample+surface_stage_0000.xml\nparts+sample+surface_stage_0001.xml\nparts+sample+volume_stage_0001.xml')" ] ||
   fail "the index entries kept are not the three stage files': $(ls "$keep/index")"
 cp "$out/checkpoint.h5" "$tmp/checkpoint.orig"
-cp "$part/part_life.csv" "$part/part_wear.csv" "$tmp/"
+cp "$part/part_life.csv" "$part/part_wear.csv" "$part/element_life.csv" "$tmp/"
 
 rm -rf "$out"
 restored=$(cd "$root" && source cases/reference-study/case_paths.sh && restore_running "$prm") ||
   fail "the kept set was not restored"
 [ -n "$restored" ] && same_but_bed "$out/checkpoint.h5" "$tmp/checkpoint.orig" ||
   fail "the restored checkpoint is not the run's without its bed"
-cmp -s "$tmp/part_life.csv" "$part/part_life.csv" && cmp -s "$tmp/part_wear.csv" "$part/part_wear.csv" ||
+cmp -s "$tmp/part_life.csv" "$part/part_life.csv" && cmp -s "$tmp/part_wear.csv" "$part/part_wear.csv" &&
+  cmp -s "$tmp/element_life.csv" "$part/element_life.csv" ||
   fail "the part's tables did not come back: $(ls -R "$out")"
 /usr/bin/python3 - "$out" <<'PY' || fail "the restored stubs do not hold the index entries"
 import sys, h5py
