@@ -69,10 +69,13 @@ double foot_height(const std::vector<FootEdge>& loop, double x, double y, double
   return std::abs(sum_w) > 0 ? sum_wz / sum_w : fallback;
 }
 
-// The edges where each convex element's faces meet another label, directed as in its faces.
-std::map<int, std::vector<Edge>> element_boundaries(const SurfaceMesh& m) {
+using EdgeFaces = std::map<Edge, std::vector<std::uint32_t>>;
+
+// The edges where each convex element's faces meet another label, directed as in its faces
+// (`edges`: m's edge_faces).
+std::map<int, std::vector<Edge>> element_boundaries(const SurfaceMesh& m, const EdgeFaces& edges) {
   std::map<int, std::vector<Edge>> boundary;
-  for (const auto& [edge, faces] : edge_faces(m)) {
+  for (const auto& [edge, faces] : edges) {
     if (faces.size() != 2 || m.face_labels[faces[0]] == m.face_labels[faces[1]])
       continue;
     for (const auto f : faces) {
@@ -194,6 +197,40 @@ private:
   std::size_t nx_ = 0, ny_ = 0;
 };
 
+// The foot of one element at a time, its outline `loop` with the outline's heights, and the
+// faces standing on it: each vertex's foot height is computed once per element (`element_`
+// holds whose it is), a vertex of the outline pinned at its own height.
+class ElementFoot {
+public:
+  explicit ElementFoot(const SurfaceMesh& m)
+      : m_(m), height_(m.n_vertices(), 0.0), element_(m.n_vertices(), -1) {}
+  std::vector<FootEdge> loop;
+  /// Starts element `l`; `fallback` [m] where the interpolant has no weight.
+  void start(int l, double fallback) { l_ = l, fallback_ = fallback; }
+  void pin(std::uint32_t v) { height_[v] = m_.vertices[v].z, element_[v] = l_; }
+  /// Face t stands on the foot: its vertices' heights above it, and its volume between it and
+  /// the foot, (z_f - z_foot,f) A_plan,f, to e.
+  void add_face(const Triangle& t, ElementStanding& e) {
+    for (const auto v : t) {
+      if (element_[v] != l_) {
+        height_[v] = foot_height(loop, m_.vertices[v].x, m_.vertices[v].y, fallback_);
+        element_[v] = l_;
+      }
+      e.height = std::max(e.height, m_.vertices[v].z - height_[v]);
+    }
+    const Vec3 &p = m_.vertices[t[0]], &q = m_.vertices[t[1]], &r = m_.vertices[t[2]];
+    e.volume += PlanTop::plan_area(p, q, r) *
+                ((p.z + q.z + r.z) - (height_[t[0]] + height_[t[1]] + height_[t[2]])) / 3;
+  }
+
+private:
+  const SurfaceMesh& m_;
+  std::vector<double> height_;
+  std::vector<int> element_;
+  int l_ = -1;
+  double fallback_ = 0;
+};
+
 // Whether (x, y) lies inside the closed loops of `outline` (crossing number).
 bool inside(const std::vector<std::array<double, 4>>& outline, double x, double y) {
   bool in = false;
@@ -207,8 +244,9 @@ bool inside(const std::vector<std::array<double, 4>>& outline, double x, double 
 
 std::map<int, ElementStanding> convex_element_standing(const SurfaceMesh& m) {
   std::map<int, ElementStanding> standing;
-  const auto boundary = element_boundaries(m);
-  for (const auto& [edge, faces] : edge_faces(m)) {
+  const auto edges = edge_faces(m);
+  const auto boundary = element_boundaries(m, edges);
+  for (const auto& [edge, faces] : edges) {
     if (faces.size() != 2)
       continue;
     const int a = m.face_labels[faces[0]], b = m.face_labels[faces[1]];
@@ -223,43 +261,29 @@ std::map<int, ElementStanding> convex_element_standing(const SurfaceMesh& m) {
   // No wearing neighbour: not an element on a base.
   for (auto it = standing.begin(); it != standing.end();)
     it = it->second.neighbours.empty() ? standing.erase(it) : std::next(it);
-  std::vector<double> foot(m.n_vertices(), 0.0);
-  std::vector<char> done(m.n_vertices(), 0);
-  std::vector<FootEdge> loop;
+  ElementFoot foot(m);
   for (auto& [l, e] : standing) {
-    const auto& edges = boundary.at(l);
-    loop.clear();
+    const auto& outline = boundary.at(l);
+    foot.loop.clear();
     double mean = 0;
-    std::fill(done.begin(), done.end(), 0);
-    for (const auto& [a, b] : edges) {
+    for (const auto& [a, b] : outline) {
       const Vec3 &pa = m.vertices[a], &pb = m.vertices[b];
-      loop.push_back({pa.x, pa.y, pa.z, pb.x, pb.y, pb.z});
-      mean += 0.5 * (pa.z + pb.z) / double(edges.size());
-      foot[a] = pa.z, foot[b] = pb.z;
-      done[a] = done[b] = 1;
+      foot.loop.push_back({pa.x, pa.y, pa.z, pb.x, pb.y, pb.z});
+      mean += 0.5 * (pa.z + pb.z) / double(outline.size());
     }
-    for (std::size_t f = 0; f < m.n_faces(); ++f) {
-      if (m.face_labels[f] != l)
-        continue;
-      const auto& t = m.triangles[f];
-      for (const auto v : t) {
-        if (!done[v]) {
-          foot[v] = foot_height(loop, m.vertices[v].x, m.vertices[v].y, mean);
-          done[v] = 1;
-        }
-        e.height = std::max(e.height, m.vertices[v].z - foot[v]);
-      }
-      const Vec3 &p = m.vertices[t[0]], &q = m.vertices[t[1]], &r = m.vertices[t[2]];
-      e.volume += PlanTop::plan_area(p, q, r) *
-                  ((p.z + q.z + r.z) - (foot[t[0]] + foot[t[1]] + foot[t[2]])) / 3;
-    }
+    foot.start(l, mean);
+    for (const auto& [a, b] : outline)
+      foot.pin(a), foot.pin(b);
+    for (std::size_t f = 0; f < m.n_faces(); ++f)
+      if (m.face_labels[f] == l)
+        foot.add_face(m.triangles[f], e);
   }
   return standing;
 }
 
 ElementFootprints element_footprints(const SurfaceMesh& first) {
   ElementFootprints footprints;
-  for (const auto& [l, edges] : element_boundaries(first))
+  for (const auto& [l, edges] : element_boundaries(first, edge_faces(first)))
     for (const auto& [a, b] : edges) {
       const Vec3 &pa = first.vertices[a], &pb = first.vertices[b];
       footprints[l].push_back({pa.x, pa.y, pb.x, pb.y});
@@ -271,19 +295,17 @@ std::map<int, ElementStanding> footprint_standing(const SurfaceMesh& m,
                                                   const ElementFootprints& footprints) {
   std::map<int, ElementStanding> standing;
   const PlanTop top(m);
-  std::vector<double> foot(m.n_vertices(), 0.0);
-  std::vector<int> done(m.n_vertices(), -1);
-  std::vector<FootEdge> loop;
+  ElementFoot foot(m);
   for (const auto& [l, outline] : footprints) {
     // The outline's heights on m: where no upward face lies over a point of it (not on a
     // part's top), the mean of the others'.
-    loop.clear();
+    foot.loop.clear();
     double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
     double sum = 0;
     int n = 0;
     for (const auto& e : outline) {
-      loop.push_back({e[0], e[1], top.height(e[0], e[1]), e[2], e[3], top.height(e[2], e[3])});
-      for (const double z : {loop.back().az, loop.back().bz})
+      foot.loop.push_back({e[0], e[1], top.height(e[0], e[1]), e[2], e[3], top.height(e[2], e[3])});
+      for (const double z : {foot.loop.back().az, foot.loop.back().bz})
         if (std::isfinite(z))
           sum += z, ++n;
       x0 = std::min({x0, e[0], e[2]}), x1 = std::max({x1, e[0], e[2]});
@@ -292,23 +314,15 @@ std::map<int, ElementStanding> footprint_standing(const SurfaceMesh& m,
     if (n == 0)
       continue;
     const double mean = sum / n;
-    for (auto& e : loop)
+    for (auto& e : foot.loop)
       e.az = std::isfinite(e.az) ? e.az : mean, e.bz = std::isfinite(e.bz) ? e.bz : mean;
+    foot.start(l, mean);
     auto& s = standing[l];
     for (const auto f : top.faces_in(x0, y0, x1, y1)) {
       const auto& t = m.triangles[f];
       const Vec3 &p = m.vertices[t[0]], &q = m.vertices[t[1]], &r = m.vertices[t[2]];
-      if (!inside(outline, (p.x + q.x + r.x) / 3, (p.y + q.y + r.y) / 3))
-        continue;
-      for (const auto v : t) {
-        if (done[v] != l) {
-          foot[v] = foot_height(loop, m.vertices[v].x, m.vertices[v].y, mean);
-          done[v] = l;
-        }
-        s.height = std::max(s.height, m.vertices[v].z - foot[v]);
-      }
-      s.volume += PlanTop::plan_area(p, q, r) *
-                  ((p.z + q.z + r.z) - (foot[t[0]] + foot[t[1]] + foot[t[2]])) / 3;
+      if (inside(outline, (p.x + q.x + r.x) / 3, (p.y + q.y + r.y) / 3))
+        foot.add_face(t, s);
     }
   }
   return standing;

@@ -176,9 +176,8 @@ ElementVolume element_volume(const GeneratedSample& g, const SampleGeometry& s) 
   return v;
 }
 
-std::string element_volume_warning(const GeneratedSample& g, const SampleGeometry& s,
+std::string element_volume_warning(const ElementVolume& v, const SampleGeometry& s,
                                    double tolerance) {
-  const ElementVolume v = element_volume(g, s);
   if (!(v.deficit() > tolerance))
     return "";
   char text[512];

@@ -62,9 +62,10 @@ struct ElementVolume {
 };
 ElementVolume element_volume(const GeneratedSample& g, const SampleGeometry& s);
 
-/// A warning naming the parameters when the meshed elements lack more than `tolerance` of the
-/// CAD's volume (the elements' wear and life scale with their volume), or "" when they do not.
-std::string element_volume_warning(const GeneratedSample& g, const SampleGeometry& s,
+/// A warning naming the parameters of `s` when the meshed elements (`v`, element_volume) lack
+/// more than `tolerance` of the CAD's volume (the elements' wear and life scale with their
+/// volume), or "" when they do not.
+std::string element_volume_warning(const ElementVolume& v, const SampleGeometry& s,
                                    double tolerance = 0.05);
 
 /// The roles of the sample's labels: the underside clamped, the base top and every convex

@@ -12,16 +12,14 @@
 // stages, their equivalent revolutions and hours are the run's part_life.csv's; a stage whose
 // surface file is a stub (a run continued from a kept checkpoint) is left out and named. Where
 // stage 0 is such a stub, a tester's sample is meshed again from the run's parameters.prm as
-// the run meshed it first (meshes::generate_sample, deterministic for one gmsh).
+// the run meshed it first (first_sample_mesh, deterministic for one gmsh).
 #include "coupling/app/life_command.h"
 
 #include "coupling/loop/wearing_part.h"
 #include "coupling/output/grid_history.h"
 #include "coupling/parameters/case_parameters.h"
-#include "coupling/parameters/engine_version.h"
 #include "meshes/atomic_file.h"
 #include "meshes/part_life.h"
-#include "meshes/sample_generator.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -112,9 +110,7 @@ std::map<int, LifeStage> recorded_stages(const std::string& file) {
 }
 
 std::string stage_file(const fs::path& part, int stage) {
-  char b[32];
-  std::snprintf(b, sizeof b, "stage_%04d.h5", stage);
-  return (part / "surface" / b).string();
+  return grid_stage_path(part.string(), "surface", stage, ".h5");
 }
 
 // The surface the part was first meshed with: its stage 0, or for a tester's sample whose
@@ -127,13 +123,11 @@ meshes::SurfaceMesh first_surface(const LifeArguments& a, const fs::path& part, 
     throw std::runtime_error("wearsim life: " + first + " does not hold the first surface, on " +
                              "which the elements' footprints lie");
   const CaseParameters p = read_case(a.run + "/parameters.prm");
-  meshes::SampleGeometry sg = p.geometry.sample;
-  sg.volume_mesh = true; // as the run meshed it (coupling/loop/wearing_part.cc)
   const fs::path dir = fs::temp_directory_path() / ("wearsim-life-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   meshes::GeneratedSample g;
   try {
-    g = meshes::generate_sample(sg, (dir / "part.msh").string());
+    g = first_sample_mesh(p, (dir / "part.msh").string());
   } catch (...) {
     fs::remove_all(dir);
     throw;
@@ -158,7 +152,6 @@ int run_life_command(const std::vector<std::string>& args, std::ostream& out) {
       << " elements on their footprints of stage 0\n"
       << "stage      hours  on footprints [mm^3]  above the labels' foot [mm^3]\n";
   std::ostringstream rows;
-  rows.precision(10);
   std::vector<int> missing;
   for (const auto& [stage, s] : stages) {
     const std::string file = stage_file(part, stage);
@@ -167,12 +160,11 @@ int run_life_command(const std::vector<std::string>& args, std::ostream& out) {
       continue;
     }
     const auto standing = meshes::footprint_standing(read_surface_stage(file), footprints);
+    rows << element_life_rows(std::to_string(stage) + "," + s.revolutions + "," + s.hours,
+                              standing);
     double total = 0;
-    for (const auto& [label, e] : standing) {
-      rows << stage << "," << s.revolutions << "," << s.hours << "," << meshes::label::name(label)
-           << "," << e.height << "," << e.volume << "," << engine_version() << "\n";
+    for (const auto& [label, e] : standing)
       total += e.volume;
-    }
     char line[160];
     std::snprintf(line, sizeof line, "%5d %10s %21.1f %30.1f\n", stage, s.hours.c_str(),
                   total * 1e9, s.labelled_volume * 1e9);

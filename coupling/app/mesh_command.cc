@@ -73,7 +73,7 @@ void run_mesh_command(const CaseParameters& p, std::ostream& log) {
                   "less\n",
                   v.meshed, v.exact, 100 * v.deficit());
     log << line;
-    if (const auto warning = meshes::element_volume_warning(g, s); !warning.empty())
+    if (const auto warning = meshes::element_volume_warning(v, s); !warning.empty())
       log << "warning: " << warning << "\n";
   }
   std::snprintf(line, sizeof line,

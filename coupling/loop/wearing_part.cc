@@ -100,6 +100,22 @@ meshes::FaceField<double> von_mises_on(const meshes::SurfaceMesh& surface) {
 const char* const element_life_header =
     "stage,equivalent_revolutions,equivalent_hours,what,height_m,volume_m3,measured_by\n";
 
+std::string element_life_rows(const std::string& stage_columns,
+                              const std::map<int, meshes::ElementStanding>& standing) {
+  std::ostringstream rows;
+  rows.precision(10);
+  for (const auto& [label, e] : standing)
+    rows << stage_columns << "," << meshes::label::name(label) << "," << e.height << "," << e.volume
+         << "," << engine_version() << "\n";
+  return rows.str();
+}
+
+meshes::GeneratedSample first_sample_mesh(const CaseParameters& p, const std::string& msh) {
+  meshes::SampleGeometry sg = p.geometry.sample;
+  sg.volume_mesh = true;
+  return meshes::generate_sample(sg, msh);
+}
+
 std::string part_directory(const CaseParameters& p, const std::string& name) {
   return p.output.directory + "/parts/" + name;
 }
@@ -115,10 +131,10 @@ WearingPart::WearingPart(const CaseParameters& p, std::size_t index, dem::SceneW
   std::size_t n_tetrahedra = 0;
   meshes::SurfaceMesh surface;
   if (frame_) { // the tester's sample, in its own frame
-    meshes::SampleGeometry sg = p.geometry.sample;
-    sg.volume_mesh = true;
-    const auto g = meshes::generate_sample(sg, msh);
-    if (const auto warning = meshes::element_volume_warning(g, sg); !warning.empty())
+    const auto g = first_sample_mesh(p, msh);
+    const auto& sg = p.geometry.sample;
+    if (const auto warning = meshes::element_volume_warning(meshes::element_volume(g, sg), sg);
+        !warning.empty())
       log << "warning: part '" << name_ << "': " << warning << "\n";
     surface = g.surface;
     surface.roles = meshes::sample_roles(held_sides(p, wall.parameters));
@@ -481,13 +497,11 @@ void WearingPart::record_life(int stage, const meshes::SurfaceMesh& surface,
                              [&](std::ostream& out) { out << part_life_header << life_rows_; });
   if (footprints_.empty())
     return;
-  std::ostringstream on_footprints;
-  on_footprints.precision(10);
-  for (const auto& [label, e] : meshes::footprint_standing(surface, footprints_))
-    on_footprints << stage << "," << revolutions << "," << revolutions * c.hours_per_revolution
-                  << "," << meshes::label::name(label) << "," << e.height << "," << e.volume << ","
-                  << engine_version() << "\n";
-  element_rows_ += on_footprints.str();
+  std::ostringstream stage_columns;
+  stage_columns.precision(10);
+  stage_columns << stage << "," << revolutions << "," << revolutions * c.hours_per_revolution;
+  element_rows_ +=
+      element_life_rows(stage_columns.str(), meshes::footprint_standing(surface, footprints_));
   if (writes_)
     meshes::write_atomically(directory_ + "/element_life.csv", [&](std::ostream& out) {
       out << element_life_header << element_rows_;

@@ -17,7 +17,9 @@
 #include "dem/wear/reference_deformation.h"
 #include "dem/wear/wall_loads.h"
 #include "fem/worn_sample.h"
+#include "meshes/part_life.h"
 #include "meshes/sample_frame.h"
+#include "meshes/sample_generator.h"
 
 #include <functional>
 #include <map>
@@ -33,6 +35,14 @@ namespace wear::coupling {
 /// (meshes::footprint_standing) and the engine that measured it (the run's own, or that of
 /// `wearsim life`, which measures a run's kept surfaces again).
 extern const char* const element_life_header;
+/// element_life.csv's rows of one stage: `stage_columns` (its stage, equivalent revolutions
+/// and hours) and each element's height and volume, measured by this engine.
+std::string element_life_rows(const std::string& stage_columns,
+                              const std::map<int, meshes::ElementStanding>& standing);
+
+/// The tester's sample (Geometry/Sample) meshed as a run's part first is, with its volume
+/// mesh into `msh`.
+meshes::GeneratedSample first_sample_mesh(const CaseParameters& p, const std::string& msh);
 
 class WearingPart {
 public:

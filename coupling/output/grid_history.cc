@@ -30,10 +30,15 @@ GridHistory::GridHistory(std::string directory, std::string kind)
   meshes::ensure_directory(directory_ + "/" + kind_);
 }
 
-std::string GridHistory::stage_path(int stage, const std::string& extension) const {
+std::string grid_stage_path(const std::string& directory, const std::string& kind, int stage,
+                            const std::string& extension) {
   char b[32];
   std::snprintf(b, sizeof b, "stage_%04d", stage);
-  return directory_ + "/" + kind_ + "/" + b + extension;
+  return directory + "/" + kind + "/" + b + extension;
+}
+
+std::string GridHistory::stage_path(int stage, const std::string& extension) const {
+  return grid_stage_path(directory_, kind_, stage, extension);
 }
 
 std::string GridHistory::grid_xml(int stage, double time, const meshes::VtuGrid& grid) const {

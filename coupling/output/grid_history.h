@@ -35,6 +35,10 @@ private:
   std::vector<std::pair<int, std::string>> entries_; // stage, its XDMF grid
 };
 
+/// <directory>/<kind>/stage_NNNN<extension>: where a grid history keeps a stage's file.
+std::string grid_stage_path(const std::string& directory, const std::string& kind, int stage,
+                            const std::string& extension);
+
 /// Whether a stage file holds its grid (a run continued from a kept checkpoint has stubs for
 /// the stages before, holding only their XDMF entry).
 bool holds_grid(const std::string& stage_h5);

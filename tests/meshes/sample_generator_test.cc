@@ -72,7 +72,7 @@ TEST_CASE("convex sample at 0.5 mm: element volumes and areas", "[meshes][sample
   const auto v = element_volume(g, s);
   CHECK(v.exact == Approx(23 * v_exact).epsilon(5e-3));
   CHECK(std::abs(v.deficit()) < 0.01);
-  CHECK(element_volume_warning(g, s).empty());
+  CHECK(element_volume_warning(v, s).empty());
 }
 
 TEST_CASE("a mesh that cuts the elements' flanks is measured and warned of", "[meshes][sample]") {
@@ -85,19 +85,19 @@ TEST_CASE("a mesh that cuts the elements' flanks is measured and warned of", "[m
   const auto v = element_volume(g, s);
   CHECK(v.deficit() > 0.12);
   CHECK(v.deficit() < 0.17);
-  const std::string w = element_volume_warning(g, s);
+  const std::string w = element_volume_warning(v, s);
   CHECK(w.find("Geometry/Sample/Mesh size = 0.003 m without Curvature refinement") !=
         std::string::npos);
   CHECK(w.find("set Curvature refinement = true or a smaller Mesh size") != std::string::npos);
   s.curvature_refinement = true;
   const auto refined = generate_sample(s);
   CHECK(element_volume(refined, s).deficit() < 0.05);
-  CHECK(element_volume_warning(refined, s).empty());
+  CHECK(element_volume_warning(element_volume(refined, s), s).empty());
   // A plain sample has no elements: nothing lacks, nothing is warned.
   s.convex = false;
   const auto plain = generate_sample(s);
   CHECK(element_volume(plain, s).deficit() == 0);
-  CHECK(element_volume_warning(plain, s).empty());
+  CHECK(element_volume_warning(element_volume(plain, s), s).empty());
 }
 
 TEST_CASE("volume meshes are closed, outward and match their tetrahedra", "[meshes][sample]") {
