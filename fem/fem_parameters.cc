@@ -65,6 +65,8 @@ void validate(const FemParameters& p) {
           "FEM/Implicit recession/Target edge", "must be at least twice the grid spacing [m]");
   require(i.flat_edge == 0 || (i.flat_edge > i.target_edge && std::isfinite(i.flat_edge)),
           "FEM/Implicit recession/Flat edge", "must be 0 or longer than the target edge [m]");
+  require(w.implicit_step_depth >= 0 && std::isfinite(w.implicit_step_depth),
+          "FEM/Implicit recession/Step depth", "must be >= 0 [m]");
   require(i.volume_tolerance > 0 && i.volume_tolerance < 0.1,
           "FEM/Implicit recession/Volume tolerance", "must lie in (0, 0.1)");
 }

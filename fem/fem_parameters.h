@@ -95,6 +95,13 @@ void visit_parameters(FemParameters& f, Visitor& v) {
          "length where it is flat, while where it curves the target-edge triangles stay, so "
          "a worn element's remnant narrower than this is kept: fewer faces for the DEM's wall "
          "and the kept checkpoints.");
+  v.real("Step depth", w.implicit_step_depth,
+         "[m] 0: the implicit recession takes a stage in one step. Positive: in as many steps "
+         "as make the deepest face recede at most this far in each (at most 16). One step "
+         "removes a union of balls, and at a concave edge between faces of different depths "
+         "(an element's foot) the deeper faces' balls reach past the shallower ones' depth, by "
+         "an amount that grows with the square of the step's depth; smaller steps shrink that "
+         "error in proportion, at the cost of one recession each.");
   v.real("Volume tolerance", i.volume_tolerance,
          "[-] Relative tolerance of each wearing label's removed volume.");
   v.leave();

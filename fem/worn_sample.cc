@@ -28,7 +28,10 @@
 // change = asked - worn through. Increments that would take a vertex more than halfway through
 // that layer are split like folding ones, and so are increments whose recession cannot reach
 // the asked volume; at the last split that stops the stage with a message instead of handing
-// on a surface short of the wear.
+// on a surface short of the wear. The implicit path (meshes::implicit_recession) takes what
+// it is given in one recession, or with a step depth in as many as keep the deepest face
+// within it, each an equal share of what is left, the rest following each new surface by
+// FaceTransfer; the volume mesh is remeshed once, from the last surface.
 #include "fem/worn_sample.h"
 
 #include "fem/sample_triangulation.h"
@@ -427,26 +430,59 @@ void WornSample::accumulate(const std::vector<double>& part, std::vector<double>
   }
 }
 
+int WornSample::implicit_steps(const meshes::SurfaceMesh& worn,
+                               const std::vector<double>& remaining) const {
+  if (p_.implicit_step_depth <= 0)
+    return 1;
+  const auto area = meshes::face_areas(worn);
+  double deepest = 0;
+  for (std::size_t f = 0; f < remaining.size(); ++f)
+    deepest = std::max(deepest, remaining[f] / area[f]);
+  // A face asked for a whole number of step depths takes that many steps, not one more for
+  // the round-off of its volume over its area.
+  const double n = std::ceil(deepest / p_.implicit_step_depth * (1 - 1e-9));
+  return int(std::clamp(n, 1.0, double(max_implicit_steps)));
+}
+
 void WornSample::take_implicit(meshes::FaceField<double>& remaining, WearStageReport& r) {
-  const meshes::SurfaceMesh worn = surface();
-  const auto receded = meshes::implicit_recession(worn, remaining.values(), p_.implicit);
-  accumulate(remaining.values(), remaining.values());
-  ++r.increments;
-  ++r.n_implicit;
-  r.implicit_seconds += receded.seconds;
-  r.implicit_grid_loss += receded.grid_loss;
-  r.n_fragments += receded.n_fragments;
-  r.fragment_volume += receded.fragment_volume;
-  r.n_teeth_joined += receded.n_teeth_joined;
-  r.n_folds_mended += receded.n_folds_mended;
-  r.n_folds_left += receded.n_folds_left;
-  r.n_held_restorations += receded.restore_held_rings > 0;
-  r.volume_not_restored += receded.volume_not_restored;
-  r.worn_through_area += receded.worn_through_area;
-  r.vanished_labels.insert(r.vanished_labels.end(), receded.vanished_labels.begin(),
-                           receded.vanished_labels.end());
-  carry_fields(worn, receded.surface);
-  record_remesh(remesh_from(receded.surface, SurfaceKind::isotropic), r);
+  meshes::SurfaceMesh worn = surface();
+  const int n_steps = implicit_steps(worn, remaining.values());
+  for (int left = n_steps; left > 0; --left) {
+    // Each step takes an equal share of what is left, so the last takes the rest.
+    std::vector<double> part = remaining.values();
+    for (double& v : part) // the carried rest may hold round-off below zero
+      v = std::max(v, 0.0) / left;
+    const auto receded = meshes::implicit_recession(worn, part, p_.implicit);
+    const auto area = meshes::face_areas(worn);
+    removed_.follow(worn);
+    depth_.follow(worn);
+    remaining.follow(worn);
+    for (std::size_t f = 0; f < part.size(); ++f) {
+      removed_[f] += part[f];
+      depth_[f] += part[f] / area[f];
+      remaining[f] -= part[f];
+    }
+    ++r.increments;
+    ++r.n_implicit;
+    r.implicit_seconds += receded.seconds;
+    r.implicit_grid_loss += receded.grid_loss;
+    r.n_fragments += receded.n_fragments;
+    r.fragment_volume += receded.fragment_volume;
+    r.n_teeth_joined += receded.n_teeth_joined;
+    r.n_folds_mended += receded.n_folds_mended;
+    r.n_folds_left += receded.n_folds_left;
+    r.n_held_restorations += receded.restore_held_rings > 0;
+    r.volume_not_restored += receded.volume_not_restored;
+    r.worn_through_area += receded.worn_through_area;
+    r.vanished_labels.insert(r.vanished_labels.end(), receded.vanished_labels.begin(),
+                             receded.vanished_labels.end());
+    const meshes::FaceTransfer transfer(worn, receded.surface);
+    removed_ = transfer.apply(removed_);
+    depth_ = transfer.apply(depth_);
+    remaining = transfer.apply(remaining);
+    worn = receded.surface;
+  }
+  record_remesh(remesh_from(worn, SurfaceKind::isotropic), r);
 }
 
 std::string WornSample::write_failed_increment(const meshes::SurfaceMesh& before,

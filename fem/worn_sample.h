@@ -35,6 +35,14 @@ enum class SurfaceEvolution {
 struct WornSampleParameters {
   SurfaceEvolution evolution = SurfaceEvolution::explicit_then_implicit;
   meshes::ImplicitRecessionParameters implicit; ///< grid and tolerances of the implicit path
+  /// 0: the implicit path takes what a stage leaves it in one recession. Positive: in as many
+  /// recessions as make the deepest face recede at most this far in each, the wear still to
+  /// take carried from each new surface onto the next (meshes::FaceTransfer). One recession
+  /// removes a union of balls; where faces of different depths meet at a concave edge (an
+  /// element's foot) the deeper faces' balls reach past the shallower faces' depth, by an
+  /// amount that grows with the square of the depth: smaller steps make that error smaller
+  /// in proportion. [m]
+  double implicit_step_depth = 0;
   /// Remesh when the smallest scaled Jacobian after mesh motion falls below this (and
   /// whenever a cell inverts). [-]
   double remesh_min_scaled_jacobian = 0.01;
@@ -196,6 +204,10 @@ private:
   /// Takes the whole of `remaining` by the implicit recession and remeshes the result; the
   /// accumulated fields follow onto the new surface.
   void take_implicit(meshes::FaceField<double>& remaining, WearStageReport& r);
+  /// How many implicit recessions take `remaining` [m^3 per face of `worn`]: 1, or as many
+  /// as keep each within implicit_step_depth on its deepest face, at most max_implicit_steps.
+  int implicit_steps(const meshes::SurfaceMesh& worn, const std::vector<double>& remaining) const;
+  static constexpr int max_implicit_steps = 16;
   /// take_implicit, or, when it throws, the sample, its fields, `remaining` and `r` as they
   /// were with the failure added to r.implicit_failures; returns whether it took the stage.
   bool try_implicit(meshes::FaceField<double>& remaining, WearStageReport& r);

@@ -18,6 +18,11 @@
 //   worst triangle the smallest triangle quality of the surface handed on (meshes/mesh_quality.h)
 //   min scaled Jacobian of the volume mesh handed on
 //   surface faces  of the surface handed on (the implicit step's target edge sets it)
+//   elements       the convex elements' volume after the stage on the workload's outlines
+//                  (meshes::footprint_standing), and labels' by the foot their labels span
+//                  (meshes::convex_element_standing); both before the stage in the header
+// An evolution that takes implicit steps runs once per step depth of --step-depth (0: the
+// stage in one step; the same stage in more steps says whether the steps compose).
 // An evolution that takes implicit steps runs once per target edge of --target-edge and flat
 // edge of --flat-edge (lists): the distances between their surfaces say what a coarser new
 // surface costs in shape.
@@ -34,6 +39,7 @@
 #include "fem/worn_sample.h"
 #include "meshes/atomic_file.h"
 #include "meshes/mesh_quality.h"
+#include "meshes/part_life.h"
 #include "meshes/sample_generator.h"
 #include "meshes/stopwatch.h"
 #include "meshes/surface_locator.h"
@@ -61,6 +67,7 @@ struct BenchEvolutionArguments {
   std::string directory = "output/bench-evolution";
   meshes::ImplicitRecessionParameters implicit; ///< --grid-spacing
   std::vector<double> target_edges, flat_edges; ///< [m] --target-edge, --flat-edge
+  std::vector<double> step_depths;              ///< [m] --step-depth (0: one implicit step)
 };
 
 double positive(const std::string& option, const std::string& value, double upper) {
@@ -133,6 +140,9 @@ BenchEvolutionArguments bench_evolution_arguments(const std::vector<std::string>
       auto& list = f == "--flat-edge" ? a.flat_edges : a.target_edges;
       for (const std::string& x : comma_separated(v))
         list.push_back(f == "--flat-edge" && x == "0" ? 0.0 : positive(f, x, 0.01));
+    } else if (f == "--step-depth") {
+      for (const std::string& x : comma_separated(v))
+        a.step_depths.push_back(x == "0" ? 0.0 : positive(f, x, 0.01));
     } else if (f == "--output")
       a.directory = v;
     else
@@ -142,6 +152,8 @@ BenchEvolutionArguments bench_evolution_arguments(const std::vector<std::string>
     a.target_edges.push_back(a.implicit.target_edge);
   if (a.flat_edges.empty())
     a.flat_edges.push_back(a.implicit.flat_edge);
+  if (a.step_depths.empty())
+    a.step_depths.push_back(defaults.worn_sample.implicit_step_depth);
   for (const double edge : a.target_edges)
     for (const double flat : a.flat_edges) {
       fem::FemParameters checked; // the implicit step's parameters, checked as a case's are
@@ -165,11 +177,14 @@ struct Workload {
   std::vector<double> removed;  ///< [m^3] per face of state.surface
   meshes::SampleGeometry sizes; ///< of the remeshes
   std::string description;
+  /// the elements' outlines on the workload's surface (meshes::element_footprints): every
+  /// evolution's elements are measured on them
+  meshes::ElementFootprints footprints;
 };
 
 Workload state_workload(const BenchEvolutionArguments& a) {
   WornStage s = read_worn_stage(a.state);
-  Workload w{std::move(s.state), std::move(s.removed_volume), a.state_sizes, {}};
+  Workload w{std::move(s.state), std::move(s.removed_volume), a.state_sizes, {}, {}};
   for (double& v : w.removed)
     v *= a.scale;
   w.description = "worn stage '" + a.state + "' x " + format("%g", a.scale);
@@ -183,7 +198,7 @@ Workload sample_workload(const BenchEvolutionArguments& a) {
   const fem::FemParameters defaults;
   fem::WornSample unworn(msh, generated.surface,
                          fem::worn_sample_parameters(defaults, a.sample, a.directory));
-  Workload w{unworn.state(), {}, a.sample, {}};
+  Workload w{unworn.state(), {}, a.sample, {}, {}};
   const auto& s = w.state.surface;
   const auto area = meshes::face_areas(s);
   const auto normal = meshes::face_normals(s);
@@ -204,17 +219,21 @@ struct Outcome {
   fem::WearStageReport report;
   std::optional<meshes::SurfaceMesh> surface; ///< handed on, when the stage completed
   double volume_error = 0, unworn_offset = 0, worst_triangle = 0;
+  /// [m^3] the elements' volume on the workload's footprints, and on the labels handed on
+  double element_volume = 0, labelled_element_volume = 0;
   meshes::Vec3 unworn_offset_at{0, 0, 0}; ///< [m] centroid of the unworn face farthest off
   int unworn_offset_label = 0;
 };
 
 // `label` names the outcome (the evolution, and its target edge where several are run).
 Outcome run_evolution(const Workload& w, const std::string& name, const std::string& label,
-                      const meshes::ImplicitRecessionParameters& implicit, const std::string& dir) {
+                      const meshes::ImplicitRecessionParameters& implicit, double step_depth,
+                      const std::string& dir) {
   Outcome o;
   o.evolution = label;
   fem::FemParameters fp;
   fp.worn_sample.implicit = implicit;
+  fp.worn_sample.implicit_step_depth = step_depth;
   fp.surface_evolution = name; // worn_sample_parameters() sets the evolution from its name
   std::string sub = label;
   std::replace(sub.begin(), sub.end(), ' ', '-');
@@ -241,6 +260,10 @@ Outcome run_evolution(const Workload& w, const std::string& name, const std::str
   o.unworn_offset_at = unworn.centroid;
   o.unworn_offset_label = unworn.label;
   o.worst_triangle = meshes::min_triangle_quality(s);
+  for (const auto& [label, e] : meshes::footprint_standing(s, w.footprints))
+    o.element_volume += e.volume;
+  for (const auto& [label, e] : meshes::convex_element_standing(s))
+    o.labelled_element_volume += e.volume;
   o.surface = s;
   return o;
 }
@@ -252,22 +275,32 @@ void report(const Workload& w, const std::vector<Outcome>& outcomes, std::ostrea
   out << "workload: " << w.description << ": " << w.state.surface.n_faces() << " faces, "
       << w.state.tetrahedra.size() / 4 << " tetrahedra, " << format("%.2f", asked * 1e9)
       << " mm^3 asked\n";
-  out << format("%-24s %9s %5s %7s %8s %9s %11s %10s %9s %8s %8s\n", "evolution", "time [s]",
-                "incr", "remesh", "implicit", "implicit", "volume", "unworn", "worst", "min",
-                "surface");
-  out << format("%-24s %9s %5s %7s %8s %9s %11s %10s %9s %8s %8s\n", "", "", "", "(1st)", "steps",
-                "[s]", "error", "off [mm]", "triangle", "Jacobian", "faces");
+  double elements_before = 0, labelled_before = 0;
+  for (const auto& [label, e] : meshes::footprint_standing(w.state.surface, w.footprints))
+    elements_before += e.volume;
+  for (const auto& [label, e] : meshes::convex_element_standing(w.state.surface))
+    labelled_before += e.volume;
+  out << format("elements before the stage: %.2f mm^3 on their footprints, %.2f mm^3 by their "
+                "labels' foot\n",
+                elements_before * 1e9, labelled_before * 1e9);
+  out << format("%-24s %9s %5s %7s %8s %9s %11s %10s %9s %8s %8s %9s %9s\n", "evolution",
+                "time [s]", "incr", "remesh", "implicit", "implicit", "volume", "unworn", "worst",
+                "min", "surface", "elements", "labels'");
+  out << format("%-24s %9s %5s %7s %8s %9s %11s %10s %9s %8s %8s %9s %9s\n", "", "", "", "(1st)",
+                "steps", "[s]", "error", "off [mm]", "triangle", "Jacobian", "faces", "[mm^3]",
+                "[mm^3]");
   for (const auto& o : outcomes) {
     if (!o.surface) {
       out << format("%-24s %9.1f  gave up: %s\n", o.evolution.c_str(), o.seconds, o.error.c_str());
       continue;
     }
     const auto& r = o.report;
-    out << format("%-24s %9.1f %5d %3d (%d) %8d %9.1f %11.2e %10.4f %9.4f %8.4f %8zu\n",
+    out << format("%-24s %9.1f %5d %3d (%d) %8d %9.1f %11.2e %10.4f %9.4f %8.4f %8zu %9.2f "
+                  "%9.2f\n",
                   o.evolution.c_str(), o.seconds, r.increments, r.n_remeshes,
                   r.n_first_attempt_remeshes, r.n_implicit, r.implicit_seconds, o.volume_error,
                   o.unworn_offset * 1e3, o.worst_triangle, r.quality.min_scaled_jacobian,
-                  o.surface->n_faces());
+                  o.surface->n_faces(), o.element_volume * 1e9, o.labelled_element_volume * 1e9);
   }
   for (const auto& o : outcomes) { // where a path handed over, and why
     for (const auto& why : o.report.explicit_remesh_failures)
@@ -305,21 +338,25 @@ int run_bench_evolution(const std::vector<std::string>& args, std::ostream& out)
   meshes::ensure_directory(a.directory);
   out << "machine: " << std::thread::hardware_concurrency() << " hardware threads\n";
   out << "implicit step: grid spacing " << format("%g", a.implicit.spacing * 1e3) << " mm\n";
-  const Workload w = a.state.empty() ? sample_workload(a) : state_workload(a);
+  Workload w = a.state.empty() ? sample_workload(a) : state_workload(a);
+  w.footprints = meshes::element_footprints(w.state.surface);
   std::vector<Outcome> outcomes;
   for (const auto& name : a.evolutions) {
     const bool implicit_steps =
         fem::surface_evolution(name) != fem::SurfaceEvolution::explicit_only;
-    const std::size_t n_flat = a.flat_edges.size();
-    for (std::size_t k = 0; k < (implicit_steps ? a.target_edges.size() * n_flat : 1); ++k) {
+    const std::size_t n_flat = a.flat_edges.size(), n_depth = a.step_depths.size();
+    const std::size_t n_runs = implicit_steps ? a.target_edges.size() * n_flat * n_depth : 1;
+    for (std::size_t k = 0; k < n_runs; ++k) {
       auto implicit = a.implicit;
-      implicit.target_edge = a.target_edges[k / n_flat];
-      implicit.flat_edge = a.flat_edges[k % n_flat];
+      implicit.target_edge = a.target_edges[k / (n_flat * n_depth)];
+      implicit.flat_edge = a.flat_edges[k / n_depth % n_flat];
+      const double step_depth = a.step_depths[k % n_depth];
       std::string label = name;
       if (implicit_steps)
         label += format(" %g mm", implicit.target_edge * 1e3) +
-                 (implicit.flat_edge > 0 ? format(" flat %g", implicit.flat_edge * 1e3) : "");
-      outcomes.push_back(run_evolution(w, name, label, implicit, a.directory));
+                 (implicit.flat_edge > 0 ? format(" flat %g", implicit.flat_edge * 1e3) : "") +
+                 (step_depth > 0 ? format(" step %g", step_depth * 1e3) : "");
+      outcomes.push_back(run_evolution(w, name, label, implicit, step_depth, a.directory));
       out << "  " << label << ": " << format("%.1f s", outcomes.back().seconds)
           << (outcomes.back().surface ? "" : ", gave up") << std::endl;
     }
