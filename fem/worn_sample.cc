@@ -368,7 +368,7 @@ bool WornSample::take_increment(const StageIncrement& inc, meshes::FaceField<dou
   const bool remeshes = motion.quality.n_inverted > 0 ||
                         motion.quality.min_scaled_jacobian < p_.remesh_min_scaled_jacobian;
   if (!remeshes) {
-    accumulate(inc.part, remaining.values());
+    accumulate(inc.part, remaining.values(), surface());
     ++r.increments;
     map_->follow(*tria_, std::move(moved));
     removed_.follow(surface());
@@ -381,7 +381,7 @@ bool WornSample::take_increment(const StageIncrement& inc, meshes::FaceField<dou
   // before the sample changes), so that the implicit step can take the whole of what was
   // left before this increment, from the surface before it.
   const FieldSnapshot before = snapshot(remaining);
-  accumulate(inc.part, remaining.values());
+  accumulate(inc.part, remaining.values(), surface());
   remaining.follow(moved);
   try {
     record_remesh(remesh_from(moved), r);
@@ -420,8 +420,9 @@ bool WornSample::try_implicit(meshes::FaceField<double>& remaining, WearStageRep
   }
 }
 
-void WornSample::accumulate(const std::vector<double>& part, std::vector<double>& remaining) {
-  const auto area = meshes::face_areas(surface());
+void WornSample::accumulate(const std::vector<double>& part, std::vector<double>& remaining,
+                            const meshes::SurfaceMesh& on) {
+  const auto area = meshes::face_areas(on);
   for (std::size_t f = 0; f < part.size(); ++f) {
     const double v = part[f]; // part may be remaining itself
     removed_[f] += v;
@@ -453,15 +454,7 @@ void WornSample::take_implicit(meshes::FaceField<double>& remaining, WearStageRe
     for (double& v : part) // the carried rest may hold round-off below zero
       v = std::max(v, 0.0) / left;
     const auto receded = meshes::implicit_recession(worn, part, p_.implicit);
-    const auto area = meshes::face_areas(worn);
-    removed_.follow(worn);
-    depth_.follow(worn);
-    remaining.follow(worn);
-    for (std::size_t f = 0; f < part.size(); ++f) {
-      removed_[f] += part[f];
-      depth_[f] += part[f] / area[f];
-      remaining[f] -= part[f];
-    }
+    accumulate(part, remaining.values(), worn);
     ++r.increments;
     ++r.n_implicit;
     r.implicit_seconds += receded.seconds;
@@ -477,8 +470,8 @@ void WornSample::take_implicit(meshes::FaceField<double>& remaining, WearStageRe
     r.vanished_labels.insert(r.vanished_labels.end(), receded.vanished_labels.begin(),
                              receded.vanished_labels.end());
     const meshes::FaceTransfer transfer(worn, receded.surface);
-    removed_ = transfer.apply(removed_);
-    depth_ = transfer.apply(depth_);
+    carry_fields(worn, transfer);
+    remaining.follow(worn);
     remaining = transfer.apply(remaining);
     worn = receded.surface;
   }
@@ -524,12 +517,16 @@ RemeshReport WornSample::remesh_from(const meshes::SurfaceMesh& worn, SurfaceKin
 }
 
 void WornSample::carry_fields(const meshes::SurfaceMesh& worn, const meshes::SurfaceMesh& fresh) {
+  carry_fields(worn, meshes::FaceTransfer(worn, fresh));
+}
+
+void WornSample::carry_fields(const meshes::SurfaceMesh& worn,
+                              const meshes::FaceTransfer& to_fresh) {
   meshes::FaceField<double> removed = removed_, depth = depth_;
   removed.follow(worn);
   depth.follow(worn);
-  const meshes::FaceTransfer transfer(worn, fresh);
-  removed_ = transfer.apply(removed);
-  depth_ = transfer.apply(depth);
+  removed_ = to_fresh.apply(removed);
+  depth_ = to_fresh.apply(depth);
 }
 
 } // namespace wear::fem

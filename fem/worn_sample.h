@@ -15,6 +15,10 @@
 #include <string>
 #include <vector>
 
+namespace wear::meshes {
+class FaceTransfer; // meshes/face_transfer.h
+} // namespace wear::meshes
+
 namespace wear::fem {
 
 /// How a stage's wear moves the worn surface.
@@ -198,9 +202,11 @@ private:
   /// throws when the stage gives up.
   void retry_increment(const Verdict& verdict, const StageIncrement& inc, StageSplit& split,
                        std::vector<double>& remaining, WearStageReport& r) const;
-  /// Adds `part` [m^3 per face of the current surface] to the accumulated fields and takes it
-  /// off `remaining` (which may be `part` itself).
-  void accumulate(const std::vector<double>& part, std::vector<double>& remaining);
+  /// Adds `part` [m^3 per face of `on`, the surface the fields stand on: the current one, or
+  /// an implicit step's] to the accumulated fields and takes it off `remaining` (which may be
+  /// `part` itself).
+  void accumulate(const std::vector<double>& part, std::vector<double>& remaining,
+                  const meshes::SurfaceMesh& on);
   /// Takes the whole of `remaining` by the implicit recession and remeshes the result; the
   /// accumulated fields follow onto the new surface.
   void take_implicit(meshes::FaceField<double>& remaining, WearStageReport& r);
@@ -218,6 +224,9 @@ private:
   /// Transfers the accumulated fields from `worn` (the current surface or its moved copy) to
   /// the remeshed surface `fresh`.
   void carry_fields(const meshes::SurfaceMesh& worn, const meshes::SurfaceMesh& fresh);
+  /// The same by a transfer already made from `worn` (one step of the implicit path, whose
+  /// stage's remaining wear goes by it too).
+  void carry_fields(const meshes::SurfaceMesh& worn, const meshes::FaceTransfer& to_fresh);
   /// Writes the surface before a failing increment and the folded candidate, bad faces
   /// marked, for diagnosis; returns the paths.
   std::string write_failed_increment(const meshes::SurfaceMesh& before,
