@@ -4,8 +4,11 @@
 // asked to lose V_f has the depth s_L V_f / A_f; a vertex recedes by the area-weighted mean
 // depth of the wearing faces around it, linearly in between; the material removed is the
 // union of the balls of those radii about the surface's points, g < 0 (level_set_grid.h), and
-// the new part is psi = max(phi, -g) <= 0. For a uniform depth this is the exact inward offset
-// of the surface (Huygens: every point at distance d from the surface, nothing else), with
+// the new part is psi = max(phi, -g) <= 0 (outside the old part psi = phi + max(0, phi - g),
+// its distance plus the depth there, so that psi runs linearly across the old surface and the
+// interpolant's zero set lies at the front however thin the layer; the zero set's vertices
+// then go onto the exact front, project_onto_front). For a uniform depth this is the exact inward
+// offset of the surface (Huygens: every point at distance d from the surface, nothing else), with
 // crests receding along their bisector and concave corners rounding; it never folds, and where
 // the balls reach through a thin part or across a ridge the topology changes with them.
 //
@@ -308,6 +311,39 @@ double drop_small_pieces(SurfaceMesh& m, double smallest, std::size_t& n_dropped
   return dropped;
 }
 
+// The grid's zero set of psi lies off the exact one by the interpolation's error, a fraction
+// of the spacing, in every step whatever its depth: it cuts the convex crests and fills the
+// concave feet. Each vertex whose nearest old point recedes goes onto the exact front of the
+// face whose ball decides psi there (inward_front_point), when that lies within a spacing and
+// in no other face's ball: the volume the grid misplaces is put back where it misplaced it.
+// Returns the vertices moved.
+std::size_t project_onto_front(const SurfaceMesh& old, const SurfaceLocator& locate_old,
+                               const std::vector<double>& depth, const LevelSetGrid& psi,
+                               const std::vector<std::int32_t>& source, SurfaceMesh& fresh) {
+  const auto normal = vertex_normals(old);
+  const double h = psi.spacing();
+  std::vector<char> moved(fresh.n_vertices(), 0);
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::int64_t i = 0; i < std::int64_t(fresh.n_vertices()); ++i) {
+    Vec3& x = fresh.vertices[std::size_t(i)];
+    const auto near = locate_old.nearest(x);
+    if (near.face < 0 || !(front_value(old, depth, std::size_t(near.face), near.point) < 0))
+      continue;
+    // Onto the front of the face whose ball decides psi at x, unless that point lies inside
+    // another face's ball (beside a crest, where the fronts of two faces meet and the point
+    // would overshoot the crest).
+    const auto g = front_at(old, depth, psi, source, x);
+    if (g.face < 0)
+      continue;
+    const Vec3 y = inward_front_point(old, depth, normal, std::size_t(g.face), x);
+    if (norm(y - x) < h && front_at(old, depth, psi, source, y).value > -1e-3 * h) {
+      x = y;
+      moved[std::size_t(i)] = 1;
+    }
+  }
+  return std::size_t(std::count(moved.begin(), moved.end(), 1));
+}
+
 } // namespace
 
 ImplicitRecession implicit_recession(const SurfaceMesh& s,
@@ -352,8 +388,15 @@ ImplicitRecession implicit_recession(const SurfaceMesh& s,
       x *= common;
     vertex_depths(s, unit_depth, scaled, label_of_face, area, depth, receding);
     receding_front(s, depth, receding, psi, band, source, owner);
-    for (std::size_t n = 0; n < psi.value.size(); ++n)
-      psi.value[n] = std::max(phi.value[n], -psi.value[n]);
+    // Outside the old part psi is its distance plus the depth there (phi - g, the depth of
+    // the ball that reaches nearest), not phi: psi then runs linearly across the old
+    // surface, and the interpolant's zero set lies at the front however thin the layer.
+    // max(phi, -g) there, a layer of depth d << h moves the zero set by about d / 2 only,
+    // and the volume scaling doubled the depths to book the asked volume.
+    for (std::size_t n = 0; n < psi.value.size(); ++n) {
+      const double f = phi.value[n], g = psi.value[n];
+      psi.value[n] = f > 0 ? f + std::max(0.0, f - g) : std::max(f, -g);
+    }
     if (r.asked_volume > 0)
       booked = booked_removal(phi, psi, owner, label_of_face, asked.size());
     ++r.n_iterations;
@@ -422,9 +465,10 @@ ImplicitRecession implicit_recession(const SurfaceMesh& s,
   r.surface = zero_surface(psi);
   r.surface.roles = s.roles;
   r.fragment_volume = drop_small_pieces(r.surface, 8 * h * h * h, r.n_fragments);
+  const SurfaceLocator locate_old(s);
+  r.n_projected = project_onto_front(s, locate_old, depth, psi, source, r.surface);
   // The new faces carry their old patch as label while islands are merged and the surface is
   // coarsened, so that both keep the patches apart; then each patch's label is put back.
-  const SurfaceLocator locate_old(s);
   const auto from_face = label_new_faces(s, locate_old, depth, psi, source, r.surface);
   // Whether the front reached a point y of the old surface (by more than a hundredth of the
   // spacing): where it did not, the new surface stands for the old one.

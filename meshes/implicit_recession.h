@@ -54,6 +54,7 @@ struct ImplicitRecession {
   std::map<int, double> asked;      ///< [m^3] per wearing label
   std::map<int, double> removed;    ///< [m^3] per label, as the grid books the removed material
   std::size_t n_restored = 0;       ///< vertices put back onto the old surface (front not there)
+  std::size_t n_projected = 0;      ///< vertices of the grid's zero set put onto the exact front
   std::size_t n_teeth_joined = 0;   ///< faces of no width joined to the label beside them
   std::size_t n_folds_mended = 0;   ///< folded edges the remeshing left, mended (fold_mending.h)
   std::size_t n_folds_left = 0;     ///< folded edges the mending could not mend

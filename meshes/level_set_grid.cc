@@ -234,6 +234,28 @@ double front_value(const SurfaceMesh& s, const std::vector<double>& vertex_depth
   return front_point(s, vertex_depth, f, x).value;
 }
 
+Vec3 inward_front_point(const SurfaceMesh& s, const std::vector<double>& vertex_depth,
+                        const std::vector<Vec3>& vertex_normal, std::size_t f, const Vec3& x) {
+  const auto& t = s.triangles[f];
+  const Closest c = closest_with_weights(s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]], x);
+  Vec3 n{0, 0, 0};
+  double depth = 0;
+  for (int k = 0; k < 3; ++k) {
+    n += vertex_normal[t[std::size_t(k)]] * c.w[k];
+    depth += vertex_depth[t[std::size_t(k)]] * c.w[k];
+  }
+  const Vec3 r = x - c.point;
+  const double distance = norm(r);
+  // Nearer to y than a millionth of its depth: x lies on the old surface, and the front
+  // stands under it along the old normal.
+  if (!(distance > 1e-6 * depth)) {
+    const double length = norm(n);
+    return length > 0 ? c.point - n * (depth / length) : c.point;
+  }
+  const double side = dot(r, n) > 0 ? -1.0 : 1.0; // outside: turned into the part
+  return c.point + r * (side * depth / distance);
+}
+
 FrontSample front_at(const SurfaceMesh& s, const std::vector<double>& vertex_depth,
                      const LevelSetGrid& grid, const std::vector<std::int32_t>& source,
                      const Vec3& x) {

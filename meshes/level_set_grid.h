@@ -50,6 +50,13 @@ void signed_distance(const SurfaceMesh& s, LevelSetGrid& grid, double band);
 double front_value(const SurfaceMesh& s, const std::vector<double>& vertex_depth, std::size_t f,
                    const Vec3& x);
 
+/// The point of face f's receded front nearest x on the part's side of the old surface:
+/// y + depth(y) u, y the point of f closest to x and u the unit vector from y to x, turned
+/// into the part where x lies outside it (the side told by `vertex_normal`, the old surface's
+/// vertex normals, interpolated at y), or -n(y) where x lies on y. [m]
+Vec3 inward_front_point(const SurfaceMesh& s, const std::vector<double>& vertex_depth,
+                        const std::vector<Vec3>& vertex_normal, std::size_t f, const Vec3& x);
+
 /// The receding front of a union of balls: node value g(x) = min_f front_value(f, x) over the
 /// faces marked in `receding` (balls of radius depth(y) about the points y of those faces),
 /// clamped to `band` where no face comes closer; the material with g < 0 is removed. `source`

@@ -233,13 +233,13 @@ STUDY_RUNS = ["plain", "convex", "plain-seed2", "plain-seed3", "convex-seed2", "
               "convex-s7", "plain-s4", "convex-s4", "plain-s2", "convex-s2", "plain-reference", "convex-reference"]
 
 
-def load_runs(root, calibration, names=STUDY_RUNS, calibrated_file="cases/reference-study/calibration.prm",
-              run_script="cases/reference-study/run.sh"):
+def load_runs(root, calibration, names=STUDY_RUNS,
+              remedy="copy it to cases/reference-study/calibration.prm", run_script="cases/reference-study/run.sh"):
     """The study's runs found in root ({name: Run}, `names` in that order), those not found
     (with "started, no revolution done yet" when the folder is there) and the calibration
     (None when absent); stops on a missing plain or convex run, mixed engines or mixed Archard
-    coefficients, or a calibration whose coefficient the runs do not use (the file they include
-    is `calibrated_file`)."""
+    coefficients, or a calibration whose coefficient the runs do not use (`remedy` says how the
+    case files take it)."""
     runs, missing = {}, []
     for n in names:
         p = os.path.join(root, n)
@@ -264,7 +264,7 @@ def load_runs(root, calibration, names=STUDY_RUNS, calibrated_file="cases/refere
     written = calibrated_alpha(cal.path) if cal else None
     if written is not None and float(written) != float(alphas["plain"] or "nan"):
         fail(f"the calibration '{cal.path}' calibrated alpha = {written} 1/Pa (its calibration.prm), but the "
-             f"study's runs use {alphas['plain']}; copy it to {calibrated_file} and re-run")
+             f"study's runs use {alphas['plain']}; {remedy} and re-run")
     return runs, missing, cal
 
 

@@ -15,7 +15,8 @@ Usage: /usr/bin/python3 docs/results/shape_study_report.py [--runs DIR] [--spher
 --check    only read and check the summaries; print what would be reported, write nothing
 
 The clumps' runs must name one engine version (cases/shape-study/ENGINE) and one Archard
-coefficient, the one their calibration calibrated (cases/shape-study/calibrated.prm), and
+coefficient, the one their calibration calibrated (its summary's calibration.prm, which
+plain.prm and convex.prm include), and
 must have run clumps; the spheres' runs are the reference study's, of its engine. The pair is
 required; every other run missing is listed as not run. Wear is read from the first staged
 revolution on (the schedule's 3 dem-only revolutions bring the bed to steady flow), 28 h a
@@ -39,6 +40,7 @@ PROG = os.path.basename(sys.argv[0])
 RUNS = "cases/shape-study/results"
 SPHERES = "cases/reference-study/results"
 CLUMP_RUNS = ["plain", "convex", "plain-seed2", "plain-seed3", "convex-seed2", "convex-seed3"]
+CALIBRATED = "cases/shape-study/results/calibration-plain/calibration.prm"
 PAIR_COMMAND = "cases/reference-study/run.sh cases/shape-study/plain.prm cases/shape-study/convex.prm"
 
 
@@ -50,7 +52,8 @@ def load(root, spheres_root):
     """The clumps' runs ({name: Run}), those not run, their calibration (or None) and the spheres'
     runs; stops on what the report must not read (see the module's text)."""
     clumps, missing, cal = load_runs(root, os.path.join(root, "calibration-plain"), CLUMP_RUNS,
-                                     "cases/shape-study/calibrated.prm", PAIR_COMMAND)
+                                     f"include {CALIBRATED} in cases/shape-study/plain.prm and convex.prm",
+                                     PAIR_COMMAND)
     for n, r in list(clumps.items()) + ([("calibration-plain", cal)] if cal else []):
         if shape(r) == "sphere":
             fail(f"'{r.path}' ran spheres (DEM/Particle shape), not the study's clumps")
@@ -246,7 +249,7 @@ def report(clumps, missing, cal, spheres, sphere_cal):
          f"**Grains** `{shape(P)}` (`docs/dem.md`, the shape library). **Engines** {P.engine} for the clumps "
          f"(`cases/shape-study/ENGINE`, every clumps' run below), {spheres['plain'].engine} for the spheres (the "
          "reference study's, `docs/results/reference-study.md`). **Case files** `cases/shape-study/*.prm`, the "
-         "clumps' coefficient from `cases/shape-study/calibrated.prm`.\n"]
+         f"clumps' coefficient from `{CALIBRATED}`.\n"]
     w += runs_section(clumps, missing, cal)
     w += calibration_section(cal, spheres, sphere_cal)
     w += advantage_section(clumps, spheres)

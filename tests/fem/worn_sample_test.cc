@@ -196,9 +196,12 @@ SteppedPlate wear_plate_in_steps(double d, double step_depth) {
 TEST_CASE("the implicit path takes a stage in as many steps as its step depth asks",
           "[fem][remesh]") {
   // A plain plate's top worn by a uniform d in steps of at most d/2 and 0.4 d: 2 and 3
-  // implicit recessions, every one of the stage's volume accounted (accumulated on the faces,
-  // removed from the mesh but for what a step reports it could not restore); in one step the
-  // top ends d lower within a twentieth of the grid's spacing.
+  // implicit recessions, every one of the stage's volume accounted (accumulated on the faces)
+  // and removed from the mesh (every step's restoring offset taken), and the top d lower
+  // within a twentieth of the grid's spacing however many steps took it: two inward offsets
+  // of d/2 are one of d. Before psi ran linearly across the old surface and the zero set went
+  // onto the exact front, 2 steps left the top up to 24 um high and 3 up to 46 um, with
+  // 6.2 mm^3 not restored.
   const double d = 0.3e-3;
   for (const auto& [step_depth, n_steps] :
        std::array<std::pair<double, int>, 3>{{{0.0, 1}, {0.5 * d, 2}, {0.4 * d, 3}}}) {
@@ -208,29 +211,7 @@ TEST_CASE("the implicit path takes a stage in as many steps as its step depth as
                        << r.low * 1e3 << " and " << r.high * 1e3 << " mm");
     CHECK(r.report.n_implicit == n_steps);
     CHECK(r.accumulated == Approx(r.asked).epsilon(1e-10));
-    CHECK(r.report.volume_change + r.report.volume_not_restored == Approx(r.asked).epsilon(1e-6));
-    if (n_steps == 1) {
-      CHECK(std::abs(r.low - (r.thickness - d)) < 0.05 * r.spacing);
-      CHECK(std::abs(r.high - (r.thickness - d)) < 0.05 * r.spacing);
-    }
-  }
-}
-
-TEST_CASE("a uniform recession taken in implicit steps composes into one",
-          "[.][fem][composition]") {
-  // Two inward offsets of d/2 are one of d: in 2 or 3 implicit steps the plate's top should
-  // end d lower within a twentieth of the grid's spacing and the volume removed be the asked
-  // one. It does not yet: in 2 steps the top stays up to 24 um high (the tolerance is
-  // 12.5 um); in 3, the volume-restoring offset of a step folds the surface at every ring
-  // count and is left out (-6.2 mm^3 not restored, 1.7 % of the stage), the top up to 46 um
-  // high. Hidden from the default run; run with test_fem "[composition]".
-  const double d = 0.3e-3;
-  for (const double step_depth : {0.5 * d, 0.4 * d}) {
-    const auto r = wear_plate_in_steps(d, step_depth);
-    INFO("step depth " << step_depth * 1e6 << " um: " << r.report.volume_not_restored * 1e9
-                       << " mm^3 not restored; top between " << r.low * 1e3 << " and "
-                       << r.high * 1e3 << " mm");
-    CHECK(r.report.volume_not_restored == 0);
+    CHECK(std::abs(r.report.volume_not_restored) < 1e-6 * r.asked);
     CHECK(r.report.volume_change == Approx(r.asked).epsilon(1e-6));
     CHECK(std::abs(r.low - (r.thickness - d)) < 0.05 * r.spacing);
     CHECK(std::abs(r.high - (r.thickness - d)) < 0.05 * r.spacing);

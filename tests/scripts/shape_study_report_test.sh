@@ -101,5 +101,5 @@ summary "$tmp/d/convex" e1 40 convex
 summary "$tmp/d/calibration-plain" e1 50 calibration
 sed -i 's/= 1e-08/= 2e-08/' "$tmp/d/calibration-plain/calibration.prm"
 check "$tmp/d" && fail "accepted a calibration the runs do not use"
-grep -q "copy it to cases/shape-study/calibrated.prm" "$tmp/out" || fail "unclear refusal: $(cat "$tmp/out")"
+grep -q "include cases/shape-study/results/calibration-plain/calibration.prm in" "$tmp/out" || fail "unclear refusal: $(cat "$tmp/out")"
 echo "shape_study_report_test: passed"
