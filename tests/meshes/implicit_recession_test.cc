@@ -55,6 +55,29 @@ TEST_CASE("the zero set of a sphere's signed distance encloses the grid's volume
   CHECK(negative_volume(g) == Approx(enclosed_volume(s)).epsilon(2e-3));
 }
 
+TEST_CASE("the inward front point lies at its depth under the face, on either side of it",
+          "[implicit_recession]") {
+  // One face in z = 0 looking up, 1 mm deep at its corners: a point above it, below it or on
+  // it goes to 1 mm under its closest point; a point beside an edge, inside the part, onto
+  // the ball about the edge's closest point, on the part's side.
+  SurfaceMesh s;
+  s.vertices = {{0, 0, 0}, {10e-3, 0, 0}, {0, 10e-3, 0}};
+  s.triangles = {{0, 1, 2}};
+  s.face_labels = {label::base};
+  const std::vector<double> depth(3, 1e-3);
+  const std::vector<Vec3> normal(3, Vec3{0, 0, 1});
+  for (const double z : {0.3e-3, -0.3e-3, 0.0, -2e-3}) {
+    const Vec3 y = inward_front_point(s, depth, normal, 0, {2e-3, 3e-3, z});
+    INFO("z = " << z);
+    CHECK(norm(y - Vec3{2e-3, 3e-3, -1e-3}) < 1e-15);
+  }
+  const Vec3 beside{-0.3e-3, 4e-3, -0.4e-3}; // closest point (0, 4 mm, 0) on the edge x = 0
+  const Vec3 y = inward_front_point(s, depth, normal, 0, beside);
+  CHECK(norm(y - Vec3{0, 4e-3, 0}) == Approx(1e-3).epsilon(1e-12));
+  CHECK(y.z < 0);
+  CHECK(y.x < 0);
+}
+
 TEST_CASE("a cube receding uniformly stays a cube and loses the asked volume",
           "[implicit_recession]") {
   const double a = 10e-3, d = 1e-3, h = 0.25e-3;
