@@ -322,8 +322,8 @@ std::size_t project_onto_front(const SurfaceMesh& old, const SurfaceLocator& loc
                                const std::vector<std::int32_t>& source, SurfaceMesh& fresh) {
   const auto normal = vertex_normals(old);
   const double h = psi.spacing();
-  std::vector<char> moved(fresh.n_vertices(), 0);
-#pragma omp parallel for schedule(dynamic, 256)
+  std::size_t n_moved = 0;
+#pragma omp parallel for schedule(dynamic, 256) reduction(+ : n_moved)
   for (std::int64_t i = 0; i < std::int64_t(fresh.n_vertices()); ++i) {
     Vec3& x = fresh.vertices[std::size_t(i)];
     const auto near = locate_old.nearest(x);
@@ -338,10 +338,10 @@ std::size_t project_onto_front(const SurfaceMesh& old, const SurfaceLocator& loc
     const Vec3 y = inward_front_point(old, depth, normal, std::size_t(g.face), x);
     if (norm(y - x) < h && front_at(old, depth, psi, source, y).value > -1e-3 * h) {
       x = y;
-      moved[std::size_t(i)] = 1;
+      ++n_moved;
     }
   }
-  return std::size_t(std::count(moved.begin(), moved.end(), 1));
+  return n_moved;
 }
 
 } // namespace

@@ -51,6 +51,8 @@
 #include <ostream>
 #include <stdexcept>
 #include <thread>
+#include <tuple>
+#include <utility>
 
 namespace wear::coupling {
 
@@ -225,6 +227,18 @@ struct Outcome {
   int unworn_offset_label = 0;
 };
 
+/// The convex elements' volume on `s` [m^3]: on the workload's footprints, and above the
+/// foot their labels span.
+std::pair<double, double> element_volumes(const meshes::SurfaceMesh& s,
+                                          const meshes::ElementFootprints& footprints) {
+  std::pair<double, double> v{0, 0};
+  for (const auto& [label, e] : meshes::footprint_standing(s, footprints))
+    v.first += e.volume;
+  for (const auto& [label, e] : meshes::convex_element_standing(s))
+    v.second += e.volume;
+  return v;
+}
+
 // `label` names the outcome (the evolution, and its target edge where several are run).
 Outcome run_evolution(const Workload& w, const std::string& name, const std::string& label,
                       const meshes::ImplicitRecessionParameters& implicit, double step_depth,
@@ -260,10 +274,7 @@ Outcome run_evolution(const Workload& w, const std::string& name, const std::str
   o.unworn_offset_at = unworn.centroid;
   o.unworn_offset_label = unworn.label;
   o.worst_triangle = meshes::min_triangle_quality(s);
-  for (const auto& [label, e] : meshes::footprint_standing(s, w.footprints))
-    o.element_volume += e.volume;
-  for (const auto& [label, e] : meshes::convex_element_standing(s))
-    o.labelled_element_volume += e.volume;
+  std::tie(o.element_volume, o.labelled_element_volume) = element_volumes(s, w.footprints);
   o.surface = s;
   return o;
 }
@@ -275,11 +286,7 @@ void report(const Workload& w, const std::vector<Outcome>& outcomes, std::ostrea
   out << "workload: " << w.description << ": " << w.state.surface.n_faces() << " faces, "
       << w.state.tetrahedra.size() / 4 << " tetrahedra, " << format("%.2f", asked * 1e9)
       << " mm^3 asked\n";
-  double elements_before = 0, labelled_before = 0;
-  for (const auto& [label, e] : meshes::footprint_standing(w.state.surface, w.footprints))
-    elements_before += e.volume;
-  for (const auto& [label, e] : meshes::convex_element_standing(w.state.surface))
-    labelled_before += e.volume;
+  const auto [elements_before, labelled_before] = element_volumes(w.state.surface, w.footprints);
   out << format("elements before the stage: %.2f mm^3 on their footprints, %.2f mm^3 by their "
                 "labels' foot\n",
                 elements_before * 1e9, labelled_before * 1e9);
