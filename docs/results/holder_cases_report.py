@@ -55,29 +55,36 @@ NAMES = {"stress-plain": "cases/stress/plain.prm", "stress-convex": "cases/stres
          "wear-out-convex-curved": "cases/wear-out/curved/convex-curved.prm",
          "wear-out-convex-curved-fine": "cases/wear-out/curved/convex-curved-fine.prm",
          "wear-out-convex-front": "cases/wear-out/front/convex-front.prm",
-         "wear-out-convex-front-a10": "cases/wear-out/front/convex-front-a10.prm"}
+         "wear-out-convex-front-a10": "cases/wear-out/front/convex-front-a10.prm",
+         "wear-out-convex-front-curved": "cases/wear-out/front/convex-front-curved.prm",
+         "wear-out-convex-front-curved-fine": "cases/wear-out/front/convex-front-curved-fine.prm"}
 # The ENGINE file beside each case file, else the reference study's (as run.sh chooses).
 STUDY_ENGINE = {n: (os.path.join(os.path.dirname(prm), "ENGINE")
                     if os.path.isfile(os.path.join(REPO, os.path.dirname(prm), "ENGINE"))
                     else "cases/reference-study/ENGINE") for n, prm in NAMES.items()}
 # The convergence of the pattern's life: the wear-out's convex run (mesh size h, amplification
 # A) beside the same at h/2 and at A/2; and h beside h/2 with the first mesh refined at the
-# curved element surfaces; and A beside A/2 with the implicit step that puts its zero set onto the
-# exact front. Each: (run, what it is, the run it is compared with).
+# curved element surfaces; and A beside A/2, h beside h/2 (curvature-refined) with the implicit step
+# that puts its zero set onto the exact front. Each: (run, what it is, the run it is compared with).
 CONVERGENCE = (("wear-out-convex-stages", "h, A", None),
                ("wear-out-convex-fine", "h/2, A", "wear-out-convex-stages"),
                ("wear-out-convex-a10", "h, A/2", "wear-out-convex-stages"),
                ("wear-out-convex-curved", "h, A, curvature-refined first mesh", None),
                ("wear-out-convex-curved-fine", "h/2, A, curvature-refined first mesh", "wear-out-convex-curved"),
                ("wear-out-convex-front", "h, A, implicit step onto the exact front", None),
-               ("wear-out-convex-front-a10", "h, A/2, implicit step onto the exact front", "wear-out-convex-front"))
+               ("wear-out-convex-front-a10", "h, A/2, implicit step onto the exact front", "wear-out-convex-front"),
+               ("wear-out-convex-front-curved", "h, A, curvature-refined, onto the exact front", None),
+               ("wear-out-convex-front-curved-fine", "h/2, A, curvature-refined, onto the exact front",
+                "wear-out-convex-front-curved"))
 # Each run's colour and line in the plots.
 STYLES = {"stress-plain": ("tab:blue", "o-"), "stress-convex": ("tab:orange", "o-"),
           "wear-out-convex": ("tab:green", "s-"), "wear-out-plain": ("tab:purple", "s-"),
           "wear-out-convex-fine": ("tab:olive", "^:"), "wear-out-convex-a10": ("tab:cyan", "v:"),
           "wear-out-convex-stages": ("tab:gray", "s:"),
           "wear-out-convex-curved": ("tab:red", "d-."), "wear-out-convex-curved-fine": ("tab:pink", "x-."),
-          "wear-out-convex-front": ("tab:brown", "P--"), "wear-out-convex-front-a10": ("tab:blue", "*--")}
+          "wear-out-convex-front": ("tab:brown", "P--"), "wear-out-convex-front-a10": ("tab:blue", "*--"),
+          "wear-out-convex-front-curved": ("tab:purple", "d--"),
+          "wear-out-convex-front-curved-fine": ("k", "x--")}
 # Each run's summary beside its case file: cases/<case>/results/<run>.
 SUMMARIES = {n: os.path.join(REPO, os.path.dirname(prm), "results", n) for n, prm in NAMES.items()}
 
@@ -331,7 +338,9 @@ def convergence_section(runs):
          "stages again, every surface kept), and at h and h/2 with the first mesh refined at the curved "
          "element surfaces (`curved/convex-curved.prm`, `curved/convex-curved-fine.prm`), and at A and A/2 "
          "with the implicit step that puts the new surface onto the exact front (`front/convex-front.prm`, "
-         "`front/convex-front-a10.prm`, the schedules of `convex-stages.prm` and `convex-a10.prm`); each differs "
+         "`front/convex-front-a10.prm`, the schedules of `convex-stages.prm` and `convex-a10.prm`) and at h and "
+         "h/2 curvature-refined by the same engine (`front/convex-front-curved.prm`, "
+         "`front/convex-front-curved-fine.prm`); each differs "
          "from the run named by the percentage given. Two measures of the element volume: the run's own "
          "(`part_life.csv`), above the foot each element's labels span, which moves with the boundary "
          "between its label and the base's as each stage's surface takes its labels from the last; and "
