@@ -219,6 +219,7 @@ std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::resume() {
                                            dem::impact_measure(p_.wear_law));
   scene_->set_rank_link(options_.ranks);
   n_records_ = s.n_records;
+  first_table_record_ = s.first_table_record;
   if (!c.has_bed)
     return refill(checkpoint_path(), inside);
   const dem::SceneRunState state = scene_run_state(s, c.dem);
@@ -226,7 +227,8 @@ std::optional<SceneCoupledRun::OpenSceneStage> SceneCoupledRun::resume() {
     move_part_nodes();
   scene_->resume(state);
   if (ranks_.writer())
-    series_ = std::make_unique<SceneSeries>(p_.output.directory, *scene_, s.n_records);
+    series_ = std::make_unique<SceneSeries>(p_.output.directory, *scene_, s.n_records,
+                                            first_table_record_);
   if (c.dem_ranks != part.n_ranks)
     log_ << "the checkpoint was written on " << c.dem_ranks << " rank(s), this run has "
          << part.n_ranks << ": the scene is decomposed again (it continues, not bit for bit as "
@@ -266,9 +268,11 @@ SceneCoupledRun::OpenSceneStage SceneCoupledRun::refill(const std::string& path,
     if (!kept)
       log_ << "scene: '" << p_.output.directory << "' holds no scene_series.csv: the scene's "
            << "tables start again at record " << n_records_ + 1 << std::endl;
-    series_ = std::make_unique<SceneSeries>(p_.output.directory, *scene_, n_records_,
-                                            kept ? SceneSeries::EarlierRows::read
-                                                 : SceneSeries::EarlierRows::absent);
+    series_ = std::make_unique<SceneSeries>(
+        p_.output.directory, *scene_, n_records_, first_table_record_,
+        kept ? SceneSeries::EarlierRows::read : SceneSeries::EarlierRows::absent);
+    // Its checkpoints say where the tables start, so that a later --resume reads them.
+    first_table_record_ = series_->first_record();
   }
   return open;
 }
@@ -446,7 +450,7 @@ void SceneCoupledRun::checkpoint(const OpenSceneStage& open) {
   c.stages_done = n_stages_done_;
   c.parameters = parameters_text_;
   c.dem = state.system;
-  c.scene = scene_checkpoint(state, open.end, n_records_);
+  c.scene = scene_checkpoint(state, open.end, n_records_, first_table_record_);
   for (std::size_t i = 0; i < parts_.size(); ++i)
     c.scene.parts.push_back(parts_[i].state(open.loads[i]));
   ranks_.write(checkpoint_path(), c);

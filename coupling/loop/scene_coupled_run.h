@@ -106,7 +106,10 @@ private:
   std::unique_ptr<dem::SceneRun> scene_;
   std::unique_ptr<SceneSeries> series_;
   int n_stages_done_ = 0;
-  int n_records_ = 0;    ///< windows recorded (rank 0 writes them)
+  int n_records_ = 0; ///< windows recorded (rank 0 writes them)
+  /// the record the scene tables' first row holds (after a continuation without them, the
+  /// one after its checkpoint's)
+  int first_table_record_ = 1;
   std::string replaced_; ///< a run --overwrite moved aside, deleted at the first checkpoint
 };
 

@@ -147,11 +147,13 @@ PartCheckpoint read_part(const Hdf5Reader& h5, const std::string& g) {
 
 } // namespace
 
-SceneCheckpoint scene_checkpoint(const dem::SceneRunState& state, double stage_end, int n_records) {
+SceneCheckpoint scene_checkpoint(const dem::SceneRunState& state, double stage_end, int n_records,
+                                 int first_table_record) {
   SceneCheckpoint s;
   s.time = state.time;
   s.stage_end = stage_end;
   s.n_records = n_records;
+  s.first_table_record = first_table_record;
   s.rank_bounds = state.rank_bounds;
   s.n_removed = state.n_removed;
   s.inlets = state.inlets;
@@ -169,7 +171,8 @@ dem::SceneRunState scene_run_state(const SceneCheckpoint& s, const dem::SystemSt
 
 void write_scene(Hdf5File& h5, const SceneCheckpoint& s) {
   write_doubles(h5, "/scene/progress",
-                {s.time, s.stage_end, double(s.n_records), double(s.n_removed)});
+                {s.time, s.stage_end, double(s.n_records), double(s.n_removed),
+                 double(s.first_table_record)});
   write_doubles(h5, "/scene/outlet_mass", s.outlet_mass);
   h5.write("/scene/outlet_counts", wide(s.outlet_counts), {s.outlet_counts.size()});
   write_doubles(h5, "/scene/rank_bounds", s.rank_bounds);
@@ -204,9 +207,15 @@ void write_scene(Hdf5File& h5, const SceneCheckpoint& s) {
 SceneCheckpoint read_scene(const Hdf5Reader& h5) {
   SceneCheckpoint s;
   const auto x = h5.doubles("/scene/progress");
-  if (x.size() != 4)
+  // An older checkpoint holds no first table record: its tables start at record 1.
+  if (x.size() != 4 && x.size() != 5)
     throw std::runtime_error("'/scene/progress' does not hold the scene's progress");
   s.time = x[0], s.stage_end = x[1], s.n_records = int(x[2]), s.n_removed = std::uint64_t(x[3]);
+  s.first_table_record = x.size() == 5 ? int(x[4]) : 1;
+  if (s.first_table_record < 1 || s.first_table_record > s.n_records + 1)
+    throw std::runtime_error("'/scene/progress': the tables' first record " +
+                             std::to_string(s.first_table_record) + " lies outside records 1 to " +
+                             std::to_string(s.n_records + 1));
   s.outlet_mass = h5.doubles("/scene/outlet_mass");
   s.outlet_counts = narrow<std::uint64_t>(h5.int64s("/scene/outlet_counts"));
   if (s.outlet_mass.size() != s.outlet_counts.size())

@@ -38,9 +38,12 @@ struct PartCheckpoint {
 };
 
 struct SceneCheckpoint {
-  double time = 0;             ///< [s] scene time
-  double stage_end = 0;        ///< [s] where the open stage (or the run) ends
-  int n_records = 0;           ///< windows recorded so far
+  double time = 0;      ///< [s] scene time
+  double stage_end = 0; ///< [s] where the open stage (or the run) ends
+  int n_records = 0;    ///< windows recorded so far
+  /// the record the scene tables' first row holds: 1, or the record after the checkpoint a
+  /// run continued from without its tables (it started them again there)
+  int first_table_record = 1;
   std::uint64_t n_removed = 0; ///< particles the outlets took
   std::vector<dem::InletState> inlets;
   std::vector<double> outlet_mass;          ///< [kg] per outlet
@@ -55,8 +58,10 @@ struct SceneCheckpoint {
 };
 
 /// The scene's own part of a checkpoint from the scene run's state `s` at the open stage's
-/// end `stage_end` [s] after `n_records` records (no wearing part: the caller adds them).
-SceneCheckpoint scene_checkpoint(const dem::SceneRunState& s, double stage_end, int n_records);
+/// end `stage_end` [s] after `n_records` records, its tables' first row record
+/// `first_table_record` (no wearing part: the caller adds them).
+SceneCheckpoint scene_checkpoint(const dem::SceneRunState& s, double stage_end, int n_records,
+                                 int first_table_record = 1);
 /// The scene run's state that checkpoint part `s` with the engine state `system` holds.
 dem::SceneRunState scene_run_state(const SceneCheckpoint& s, const dem::SystemState& system);
 

@@ -111,18 +111,24 @@ std::vector<std::string> lines_of(const std::string& path) {
 } // namespace
 
 SceneSeries::SceneSeries(std::string directory, const dem::SceneRun& run, int n_records,
-                         EarlierRows earlier)
+                         int first_record, EarlierRows earlier)
     : SceneSeries(std::move(directory), run) {
   n_records_ = n_records;
+  first_record_ = earlier == EarlierRows::absent ? n_records + 1 : first_record;
   if (earlier == EarlierRows::absent)
     return;
+  // The tables hold records first_record_ to n_records, one row each after the header.
+  const int n_rows = n_records - first_record_ + 1;
   const auto series = lines_of(directory_ + "/scene_series.csv");
-  if (int(series.size()) < n_records + 1)
+  if (int(series.size()) < n_rows + 1)
     throw std::runtime_error("--resume: '" + directory_ + "/scene_series.csv' holds " +
                              std::to_string(series.size() - 1) + " records, the checkpoint " +
-                             std::to_string(n_records));
+                             std::to_string(n_rows) +
+                             (first_record_ > 1 ? " (records " + std::to_string(first_record_) +
+                                                      " to " + std::to_string(n_records) + ")"
+                                                : std::string()));
   series_.clear();
-  for (int k = 0; k <= n_records; ++k)
+  for (int k = 0; k <= n_rows; ++k)
     series_ += series[std::size_t(k)] + "\n";
   // scene_wear.csv: a record's rows share its time (the first column).
   const auto wear = lines_of(directory_ + "/scene_wear.csv");
@@ -131,12 +137,12 @@ SceneSeries::SceneSeries(std::string directory, const dem::SceneRun& run, int n_
   int records = 0;
   for (std::size_t k = 1; k < wear.size(); ++k) {
     const std::string t = wear[k].substr(0, wear[k].find(','));
-    if (t != time && ++records > n_records)
+    if (t != time && ++records > n_rows)
       break;
     time = t;
     wear_ += wear[k] + "\n";
   }
-  for (int k = 1; run.fields() && k <= n_records; ++k) {
+  for (int k = first_record_; run.fields() && k <= n_records; ++k) {
     char name[64];
     std::snprintf(name, sizeof name, "/fields/record_%04d.h5", k);
     const Hdf5Reader h5(directory_ + name);

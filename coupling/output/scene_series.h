@@ -29,11 +29,12 @@ public:
   /// to another machine without them (cases/reference-study/keep_running.sh) starts them
   /// again at its next record.
   enum class EarlierRows { read, absent };
-  /// Continues the records of a resumed run: the tables as they stood after its first
-  /// `n_records` records (later rows, written after the checkpoint, are dropped) and the
-  /// fields files up to that record. Throws naming a table that holds fewer. With
-  /// EarlierRows::absent the tables start with their header and record n_records + 1.
-  SceneSeries(std::string directory, const dem::SceneRun& run, int n_records,
+  /// Continues the records of a resumed run: the tables, whose first row is record
+  /// `first_record`, as they stood after record `n_records` (later rows, written after the
+  /// checkpoint, are dropped) and the fields files from first_record to n_records. Throws
+  /// naming a table that holds fewer. With EarlierRows::absent the tables start with their
+  /// header and record n_records + 1.
+  SceneSeries(std::string directory, const dem::SceneRun& run, int n_records, int first_record,
               EarlierRows earlier = EarlierRows::read);
   /// The next record, of window w, with the run as it stands at the window's end and its
   /// `particles` then (the scene's own, or over ranks every rank's gathered) and the bodies
@@ -42,11 +43,14 @@ public:
   void add(const dem::SceneWindow& w, const dem::SceneRun& run, const dem::Particles& particles,
            const dem::Clumps* clumps, bool snapshot);
   int n_records() const { return n_records_; }
+  /// The record the tables' first row holds.
+  int first_record() const { return first_record_; }
 
 private:
   std::string directory_;
   std::string series_, wear_; ///< the tables so far
   int n_records_ = 0;
+  int first_record_ = 1;
   std::vector<bool> changing_;                        ///< per wall: written at every record
   std::vector<std::pair<int, double>> field_records_; ///< record and time of each fields file
 

@@ -42,23 +42,43 @@ double stage_value(const std::vector<std::vector<std::string>>& rows, int stage,
   return std::stod(rows.at(std::size_t(stage)).at(std::size_t(at - header.begin())));
 }
 
+// The small tester case in folder `dir` with two dem-only and two staged stages, run until
+// `stages` are done: its case file's name, and its checkpoint then.
+std::pair<std::string, Checkpoint> run_until(const std::string& dir, int stages,
+                                             std::ostream& log) {
+  fs::remove_all(dir);
+  const std::string case_file = dir + ".prm";
+  std::ofstream(case_file) << small_tester_case_file(dir, "2 dem-only, 2 staged");
+  RunOptions stop;
+  stop.stop_after = stages;
+  REQUIRE(run_case(case_file, stop, log) == 0);
+  Checkpoint c = read_checkpoint(dir + "/checkpoint.h5");
+  REQUIRE(c.stages_done == stages);
+  return {case_file, c};
+}
+
+// The checkpoint as keep_running.sh keeps it: no bed, the sample without its volume mesh.
+void strip_bed(Checkpoint& c) {
+  c.has_bed = false;
+  c.dem = {};
+  auto& sample = c.scene.parts.at(0).sample;
+  sample.vertices.clear();
+  sample.tetrahedra.clear();
+  sample.boundary_faces.clear();
+  sample.boundary_ids.clear();
+}
+
 } // namespace
 
 TEST_CASE("wearsim run: a checkpoint kept without its particle bed continues with the bed "
           "filled anew",
           "[coupling][run][stop][refill]") {
   const std::string dir = "refill_run", kept = dir + ".kept", full = dir + ".full";
-  for (const auto& d : {dir, kept, full})
+  for (const auto& d : {kept, full})
     fs::remove_all(d);
-  const std::string case_file = dir + ".prm";
-  std::ofstream(case_file) << small_tester_case_file(dir, "2 dem-only, 2 staged");
   std::ostringstream log;
-  RunOptions three_stages;
-  three_stages.stop_after = 3;
-  REQUIRE(run_case(case_file, three_stages, log) == 0);
+  auto [case_file, c] = run_until(dir, 3, log);
   const std::string checkpoint = dir + "/checkpoint.h5";
-  Checkpoint c = read_checkpoint(checkpoint);
-  REQUIRE(c.stages_done == 3);
   REQUIRE(c.scene.parts.at(0).open.duration == 0);
   fs::copy(dir, kept, fs::copy_options::recursive);
 
@@ -70,14 +90,8 @@ TEST_CASE("wearsim run: a checkpoint kept without its particle bed continues wit
 
   // The same run continued from the checkpoint without its bed.
   fs::rename(kept, dir);
-  c.has_bed = false;
-  c.dem = {};
-  auto& sample = c.scene.parts.at(0).sample; // kept without its volume mesh too
-  const double volume_kept = wear::meshes::enclosed_volume(sample.surface);
-  sample.vertices.clear();
-  sample.tetrahedra.clear();
-  sample.boundary_faces.clear();
-  sample.boundary_ids.clear();
+  const double volume_kept = wear::meshes::enclosed_volume(c.scene.parts.at(0).sample.surface);
+  strip_bed(c); // kept without its volume mesh too
   write_checkpoint(checkpoint, c);
   fs::remove(dir + "/checkpoint.previous.h5"); // the write kept the one with the bed
   CHECK_FALSE(read_checkpoint(checkpoint).has_bed);
@@ -125,4 +139,51 @@ TEST_CASE("wearsim run: a checkpoint kept without its particle bed continues wit
   CHECK_THROWS_WITH(run_case(case_file, resume, log),
                     Catch::Contains(checkpoint) && Catch::Contains("holds no particle bed") &&
                         Catch::Contains("inside stage 4"));
+}
+
+TEST_CASE("wearsim run: a run continued without its scene tables resumes again from its full "
+          "checkpoint",
+          "[coupling][run][stop][refill]") {
+  // keep_running.sh carries a checkpoint without its bed and without the scene tables; the
+  // continued run starts them again at its next record. Stopped again after a stage, its full
+  // checkpoint says which record the tables start at, and --resume reads them from there:
+  // counted from record 1 they held fewer rows than the checkpoint's records, and the run was
+  // refused ("scene_series.csv holds 51 records, the checkpoint 111").
+  const std::string dir = "refill_tables";
+  std::ostringstream log;
+  auto [case_file, c] = run_until(dir, 2, log);
+  const std::string checkpoint = dir + "/checkpoint.h5";
+  const int kept_records = c.scene.n_records;
+  REQUIRE(kept_records > 0);
+  CHECK(c.scene.first_table_record == 1);
+  // As keep_running.sh keeps it: no bed, no volume mesh, no scene tables.
+  strip_bed(c);
+  write_checkpoint(checkpoint, c);
+  for (const auto* f : {"/checkpoint.previous.h5", "/scene_series.csv", "/scene_wear.csv"})
+    fs::remove(dir + f);
+
+  RunOptions resume_one;
+  resume_one.resume = true;
+  resume_one.stop_after = 1;
+  std::ostringstream continued;
+  REQUIRE(run_case(case_file, resume_one, continued) == 0);
+  INFO(continued.str());
+  REQUIRE_THAT(continued.str(), Catch::Contains("tables start again at record " +
+                                                std::to_string(kept_records + 1)) &&
+                                    Catch::Contains("stopped after stage 3 as asked"));
+  const Checkpoint after_three = read_checkpoint(checkpoint);
+  CHECK(after_three.scene.first_table_record == kept_records + 1);
+
+  RunOptions resume;
+  resume.resume = true;
+  std::ostringstream resumed;
+  REQUIRE(run_case(case_file, resume, resumed) == 0);
+  INFO(resumed.str());
+  CHECK_THAT(resumed.str(), Catch::Contains("stage 4 staged done"));
+  const Checkpoint end = read_checkpoint(checkpoint);
+  CHECK(end.stages_done == 4);
+  CHECK(end.scene.first_table_record == kept_records + 1);
+  // One row per record from the first the tables hold.
+  CHECK(int(physical_columns(dir + "/scene_series.csv").size()) - 1 ==
+        end.scene.n_records - kept_records);
 }
