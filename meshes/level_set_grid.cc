@@ -219,13 +219,24 @@ Closest closest_with_weights(const Vec3& a, const Vec3& b, const Vec3& c, const 
 struct FrontPoint {
   double distance, value;
 };
+// The point of face f closest to x, with its barycentric weights.
+Closest closest_on_face(const SurfaceMesh& s, std::size_t f, const Vec3& x) {
+  const auto& t = s.triangles[f];
+  return closest_with_weights(s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]], x);
+}
+
+// A per-vertex value (a depth, a normal) of face f interpolated at the closest point c.
+template <class T>
+T at_closest(const SurfaceMesh& s, std::size_t f, const Closest& c, const std::vector<T>& value) {
+  const auto& t = s.triangles[f];
+  return value[t[0]] * c.w[0] + value[t[1]] * c.w[1] + value[t[2]] * c.w[2];
+}
+
 FrontPoint front_point(const SurfaceMesh& s, const std::vector<double>& vertex_depth, std::size_t f,
                        const Vec3& x) {
-  const auto& t = s.triangles[f];
-  const Closest c = closest_with_weights(s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]], x);
+  const Closest c = closest_on_face(s, f, x);
   const double d = norm(x - c.point);
-  return {d, d - (c.w[0] * vertex_depth[t[0]] + c.w[1] * vertex_depth[t[1]] +
-                  c.w[2] * vertex_depth[t[2]])};
+  return {d, d - at_closest(s, f, c, vertex_depth)};
 }
 } // namespace
 
@@ -236,14 +247,9 @@ double front_value(const SurfaceMesh& s, const std::vector<double>& vertex_depth
 
 Vec3 inward_front_point(const SurfaceMesh& s, const std::vector<double>& vertex_depth,
                         const std::vector<Vec3>& vertex_normal, std::size_t f, const Vec3& x) {
-  const auto& t = s.triangles[f];
-  const Closest c = closest_with_weights(s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]], x);
-  Vec3 n{0, 0, 0};
-  double depth = 0;
-  for (int k = 0; k < 3; ++k) {
-    n += vertex_normal[t[std::size_t(k)]] * c.w[k];
-    depth += vertex_depth[t[std::size_t(k)]] * c.w[k];
-  }
+  const Closest c = closest_on_face(s, f, x);
+  const Vec3 n = at_closest(s, f, c, vertex_normal);
+  const double depth = at_closest(s, f, c, vertex_depth);
   const Vec3 r = x - c.point;
   const double distance = norm(r);
   // Nearer to y than a millionth of its depth: x lies on the old surface, and the front
