@@ -22,6 +22,7 @@ required; every other run missing is listed as not run. Wear is read from the fi
 revolution on (the schedule's 3 dem-only revolutions bring the bed to steady flow), 28 h a
 revolution: 56 h are 2 revolutions, 184 h 6.57.
 """
+import math
 import os
 import sys
 
@@ -29,7 +30,7 @@ import matplotlib
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from reference_study_report import (BOTTOM_LAYER, T56, T184, at, calibrated_alpha, fail, fmt,  # noqa: E402
+from reference_study_report import (BOTTOM_LAYER, T56, T184, T_95, at, calibrated_alpha, fail, fmt,  # noqa: E402
                                     interval, load_runs, mark_hours, parse_args, runs_table, seed_table,
                                     write_atomic)
 
@@ -156,16 +157,43 @@ def advantage_section(clumps, spheres):
 def seeds_section(clumps, spheres):
     w = ["## Spread over insertion seeds (56 h)\n",
          "| grains | sample | seed 1 | seed 2 | seed 3 | mean +- 95 % |", "|---|---|---|---|---|---|"]
-    lines = []
+    lines, per_grains = [], []
     for grains, runs in (("clumps, s = 4", clumps), ("spheres, s = 3", spheres)):
         rows, ratios = seed_table(runs)
         w += [f"| {grains} | {k} | " + " | ".join(cells) + " |" for k, cells in rows]
+        per_grains.append(ratios)
         if ratios:
             m, h = interval(ratios)
             lines.append(f"- {grains}: convex / plain per seed {', '.join(f'{x:.3f}' for x in ratios)}; "
                          f"mean **{m:.3f} +- {fmt(h, 3)}** (95 %, Student t, {len(ratios)} seed"
                          f"{'s' if len(ratios) > 1 else ''}).")
+    lines += difference_lines(*per_grains, ratio_at(spheres, "plain-s4", "convex-s4", T56)[2])
     return w + [""] + lines + [""]
+
+
+def difference_lines(clumps, spheres, spheres_s4):
+    """What the seeds tell of shape: the clumps' mean ratio minus the spheres' at s = 3, with a 95 %
+    interval from Welch's standard error and the conservative min(n) - 1 degrees of freedom (no
+    equal variances assumed), and where the spheres' one run at s = 4 lies against the clumps'
+    interval."""
+    if len(clumps) < 2:
+        return []
+    mc, hc = interval(clumps)
+    out = []
+    if len(spheres) >= 2:
+        ms = float(np.mean(spheres))
+        se = math.sqrt(np.var(clumps, ddof=1) / len(clumps) + np.var(spheres, ddof=1) / len(spheres))
+        dof = min(len(clumps), len(spheres)) - 1
+        d, h = mc - ms, T_95[dof] * se
+        verdict = "differ" if abs(d) > h else "cannot be told apart"
+        out.append(f"- clumps (s = 4) minus spheres (s = 3): **{d:+.3f} +- {h:.3f}** (95 %, Welch's standard "
+                   f"error, {dof} degree{'s' if dof > 1 else ''} of freedom, the smaller seed count less one): "
+                   f"at 95 % the two {verdict}.")
+    if spheres_s4:
+        where = "outside" if abs(spheres_s4 - mc) > hc else "inside"
+        out.append(f"- spheres at s = 4 (one seed): {spheres_s4:.3f}, {where} the clumps' interval "
+                   f"{mc - hc:.3f} to {mc + hc:.3f} at the same scale.")
+    return out
 
 
 def columns_section(clumps, spheres):

@@ -4,10 +4,13 @@
 # checked on stand-in clumps' summaries with known figures: a plain sample wearing 100 mm^3 and
 # a convex one 40 mm^3 a revolution give convex / plain 0.400 at 56 h; seeds of ratios 0.400
 # and 0.360 give 0.380 +- 0.254 (Student t, 1 degree of freedom: 12.706 x 0.02 / sqrt 2 x
-# sqrt 2); columns of 10 to 30 mm^3 and forces of 1 to 5 N give 5 / 1 = 3.00 and 5.00, and an
-# element C51 of 6 mm^3 in a column of 12 leaves its base strip 6. It refuses clumps' runs
-# that ran spheres, a clumps' run of another engine version, and a calibration whose
-# coefficient the runs do not use.
+# sqrt 2), and against the repository's spheres at s = 3 (mean 0.447, variance 3.74e-5) a
+# difference of -0.067 +- 0.258 (Welch: 12.706 x sqrt(0.0008 / 2 + 3.74e-5 / 3), 1 degree of
+# freedom), which cannot tell the two apart, and the spheres' 0.519 at s = 4 lies inside the
+# clumps' interval 0.126 to 0.634; columns of 10 to 30 mm^3 and forces of 1 to 5 N give
+# 5 / 1 = 3.00 and 5.00, and an element C51 of 6 mm^3 in a column of 12 leaves its base strip
+# 6. It refuses clumps' runs that ran spheres, a clumps' run of another engine version, and a
+# calibration whose coefficient the runs do not use.
 set -uo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 report="$root/docs/results/shape_study_report.py"
@@ -75,6 +78,10 @@ grep -q "^| 184 h (6.57 revolutions) | n/a | n/a | not reached | not run | 0.446
   fail "184 h is not told as not reached: $(grep '^| 184 h' "$md")"
 grep -q "clumps, s = 4: convex / plain per seed 0.400, 0.360; mean \*\*0.380 +- 0.254\*\*" "$md" ||
   fail "the seeds' interval is not 0.380 +- 0.254: $(grep '^- clumps' "$md")"
+grep -q "clumps (s = 4) minus spheres (s = 3): \*\*-0.067 +- 0.258\*\* .*1 degree of freedom.*cannot be told apart" "$md" ||
+  fail "the clumps' difference to the spheres is not -0.067 +- 0.258: $(grep 'minus spheres' "$md")"
+grep -q "spheres at s = 4 (one seed): 0.519, inside the clumps' interval 0.126 to 0.634" "$md" ||
+  fail "the spheres at s = 4 are not placed inside the clumps' interval: $(grep 'one seed' "$md")"
 grep -q "^| plain | clumps | wear \[mm^3\] | 10.00 | 15.00 | 20.00 | 25.00 | 30.00 | 3.00 |" "$md" &&
   grep -q "^| plain | clumps | normal force \[N\] | 1.00 | 2.00 | 3.00 | 4.00 | 5.00 | 5.00 |" "$md" ||
   fail "the plain columns are not 10 to 30 mm^3 and 1 to 5 N: $(grep '^| plain | clumps' "$md")"
